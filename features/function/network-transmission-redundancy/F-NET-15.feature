@@ -1,0 +1,29 @@
+@item:F-NET-15 @profile:crh2
+Feature: F-NET-15 Block data: 236-byte blocks on request and grant, at least 10 ms apart
+  Requirements: PRO-06 (primary).
+  A node asks for a block transfer in its status data; the master node announces the granted node in its
+  status data; the blocks follow at least 10 ms apart.
+
+  Background:
+    Given an 8-car CRH2 train set
+    And the driver has inserted the key in cab 1
+    And the train has been powered up for 1000 ms
+
+  @req:PRO-06
+  Scenario: F-NET-15 A 1000-byte record travels as five 236-byte blocks after the grant
+    When "car3.LCU" asks to send a 1000-byte record as block data
+    And 1000 ms pass
+    Then "car1.CCU.sys1" grants "car3.LCU" the block transfer in its status data
+    And "car3.LCU" sends no block before it is granted
+    And "car1.CCU.sys1" receives the record of "car3.LCU" in 5 blocks of 236 bytes, each at least 10 ms after the one before
+    And "car1.CCU.sys1" holds the 1000-byte record of "car3.LCU"
+
+  @req:PRO-06
+  Scenario: F-NET-15 Two requesting nodes are granted one after the other
+    When "car6.LCU" asks to send a 500-byte record as block data
+    And "car2.LCU" asks to send a 300-byte record as block data
+    And 2 s pass
+    Then "car1.CCU.sys1" grants "car6.LCU" the block transfer in its status data
+    And "car1.CCU.sys1" grants "car2.LCU" the block transfer in its status data
+    And "car1.CCU.sys1" holds the 500-byte record of "car6.LCU"
+    And "car1.CCU.sys1" holds the 300-byte record of "car2.LCU"

@@ -1,0 +1,14 @@
+"""The step library: domain sentences -> TrainDriver calls.
+
+Every module listed here is loaded as a pytest plugin by the root conftest, so its step
+definitions and fixtures are visible to every feature file.
+"""
+
+STEP_MODULES = [
+    "steps.fixtures",
+    "steps.train",
+    "steps.desk",
+    "steps.faults",
+    "steps.commands",
+    "steps.network",
+]

@@ -1,0 +1,72 @@
+"""Reading the SUT's trace the way a test engineer reads analyser logs. No pytest, no SUT internals."""
+from __future__ import annotations
+
+from dataclasses import dataclass
+from typing import Iterable
+
+from sut.driver import TrainDriver
+from sut.trace import Trace, TraceEvent
+
+
+@dataclass(frozen=True)
+class Delivery:
+    node: str            # receiving LCU
+    seq: int
+    system: int
+    sent: int            # us, command left the commanding CCU's MDM8
+    received: int        # us, at the LCU's MDM8
+    hops: int
+    direction: str
+
+    @property
+    def latency(self) -> int:
+        return self.received - self.sent
+
+
+def command_deliveries(trace: Trace, since: int = 0, until: int | None = None) -> list[Delivery]:
+    """Join every `cmd.rx` at an LCU with the `cmd.tx` it came from (same system and sequence number,
+    latest transmission before the reception: sequence numbers wrap every 256 commands)."""
+    sent: dict[tuple[int, int], list[int]] = {}
+    for ev in trace.select(kind="cmd.tx"):
+        sent.setdefault((ev["system"], ev["seq"]), []).append(ev.t)
+    out = []
+    for ev in trace.select(kind="cmd.rx", source="*.LCU.MDM8", since=since, until=until):
+        times = [t for t in sent.get((ev["system"], ev["seq"]), []) if t <= ev.t]
+        if not times:
+            continue
+        out.append(Delivery(ev.source.rsplit(".", 1)[0], ev["seq"], ev["system"], times[-1], ev.t, ev["hops"],
+                            ev["dir"]))
+    return out
+
+
+def intervals(times: Iterable[int]) -> list[int]:
+    times = list(times)
+    return [b - a for a, b in zip(times, times[1:])]
+
+
+def cars(sut: TrainDriver) -> list[int]:
+    return sorted(int(n[3:].split(".")[0]) for n in sut.ring_nodes() if n.endswith(".LCU"))
+
+
+def lcus(sut: TrainDriver) -> list[str]:
+    return [n for n in sut.ring_nodes() if n.endswith(".LCU")]
+
+
+def command_devices(sut: TrainDriver, car: int | None = None) -> list[str]:
+    chosen = cars(sut) if car is None else [car]
+    return [d for c in chosen for d in sut.devices(c) if d.endswith((".CI", ".BCU"))]
+
+
+def record(size: int) -> bytes:
+    """The test record a node is asked to send as block data: recognisable, not all zero."""
+    return bytes((i * 7 + 3) & 0xFF for i in range(size))
+
+
+def ms(us: int) -> str:
+    return f"{us / 1000:.3f} ms"
+
+
+def describe(events: list[TraceEvent], limit: int = 6) -> str:
+    shown = "; ".join(f"{e.t_ms:.3f} ms {e.source} {e.kind} {dict(e.fields)}" for e in events[:limit])
+    more = f" ... ({len(events)} in all)" if len(events) > limit else ""
+    return shown + more

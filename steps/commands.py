@@ -1,0 +1,220 @@
+"""What happens to control commands: on the ring (PRO-01), at CI and BCU (CMD-02..04), at takeover (RED-02)."""
+from __future__ import annotations
+
+from pytest_bdd import parsers, then
+
+from sut.driver import TrainDriver
+from steps import analysis
+from steps.analysis import ms
+
+
+def _us(ms_value: float) -> int:
+    return round(ms_value * 1000)
+
+
+# -- on the ring ------------------------------------------------------------------------------------
+@then(parsers.parse("every LCU receives every command within {bound:g} ms of its transmission"))
+def _(sut: TrainDriver, t_action: int, bound: float) -> None:
+    trace, limit = sut.trace, _us(bound)
+    sent = trace.select(kind="cmd.tx", since=t_action, until=sut.now_us - limit)
+    assert sent, f"no command left a CCU between {ms(t_action)} and {ms(sut.now_us - limit)}"
+    got = {(d.node, d.system, d.sent): d for d in analysis.command_deliveries(trace, since=t_action)}
+    for tx in sent:
+        for lcu in analysis.lcus(sut):
+            d = got.get((lcu, tx["system"], tx.t))
+            assert d is not None, f"command seq {tx['seq']} sent at {ms(tx.t)} never reached {lcu}"
+            assert d.latency <= limit, (f"command seq {tx['seq']} reached {lcu} after {ms(d.latency)}, "
+                                        f"more than {bound} ms")
+
+
+@then(parsers.parse("each node on the way adds at most {bound:g} ms to a command"))
+def _(sut: TrainDriver, t_action: int, bound: float) -> None:
+    deliveries = analysis.command_deliveries(sut.trace, since=t_action)
+    assert deliveries, "no command deliveries to examine"
+    worst = max(deliveries, key=lambda d: d.latency / d.hops)
+    assert worst.latency <= worst.hops * _us(bound), (
+        f"command seq {worst.seq} took {ms(worst.latency)} over {worst.hops} nodes to {worst.node}: "
+        f"{ms(worst.latency // worst.hops)} per node, more than {bound} ms")
+
+
+@then(parsers.parse("commands leave the CCU at intervals of at least {bound:g} ms"))
+def _(sut: TrainDriver, t_action: int, bound: float) -> None:
+    by_node: dict[str, list[int]] = {}
+    for ev in sut.trace.select(kind="cmd.tx", since=t_action):
+        by_node.setdefault(ev.source, []).append(ev.t)
+    assert by_node, "no commands were transmitted"
+    for node, times in by_node.items():
+        gaps = analysis.intervals(times)
+        assert len(gaps) >= 5, f"{node} sent only {len(times)} commands"
+        assert min(gaps) >= _us(bound), f"{node} sent two commands {ms(min(gaps))} apart, less than {bound} ms"
+
+
+@then(parsers.parse('only "{node}" puts commands on the ring'))
+def _(sut: TrainDriver, t_action: int, node: str) -> None:
+    senders = {ev.source.rsplit(".", 1)[0] for ev in sut.trace.select(kind="cmd.tx", since=t_action)}
+    assert senders == {node}, f"commands came from {sorted(senders) or 'nobody'}, expected only {node}"
+
+
+@then(parsers.parse('"{node}" puts no commands on the ring'))
+def _(sut: TrainDriver, t_action: int, node: str) -> None:
+    found = sut.trace.select(kind="cmd.tx", source=f"{node}.MDM8", since=t_action)
+    assert not found, f"{node} sent commands: {analysis.describe(found)}"
+
+
+@then(parsers.parse('"{txc}" puts nothing on the ring or the self-diagnostic line from {after:g} ms on'))
+def _(sut: TrainDriver, t_action: int, txc: str, after: float) -> None:
+    system = txc.rsplit(".", 1)[0]
+    since = t_action + _us(after)
+    ring = sut.trace.select(kind="cmd.tx", source=f"{system}.MDM8", since=since)
+    line = sut.trace.select(kind="sd.rx", since=since, frm=txc)
+    assert not ring and not line, f"{txc} kept transmitting: {analysis.describe(ring + line)}"
+
+
+@then(parsers.parse("from {after:g} ms on every command carries traction notch {notch:d} and brake step {step:d}"))
+def _(sut: TrainDriver, t_action: int, after: float, notch: int, step: int) -> None:
+    sent = sut.trace.select(kind="cmd.tx", since=t_action + _us(after))
+    assert sent, "no command was transmitted"
+    wrong = [ev for ev in sent if (ev["traction"], ev["brake"]) != (notch, step)]
+    assert not wrong, f"commands with other values: {analysis.describe(wrong)}"
+
+
+# -- at CI and BCU ----------------------------------------------------------------------------------
+def _first_take(sut: TrainDriver, device: str, since: int, until: int, **want) -> int | None:
+    ev = sut.trace.first(kind="cmd.in", source=device, since=since, until=until, **want)
+    return None if ev is None else ev.t
+
+
+def _check_devices(sut: TrainDriver, devices: list[str], t_action: int, bound: float, what: str, **want) -> None:
+    assert devices, "no CI or BCU to check"
+    for device in devices:
+        t = _first_take(sut, device, t_action, t_action + _us(bound), **want)
+        if t is None:
+            last = sut.trace.last(kind="cmd.in", source=device, until=t_action + _us(bound))
+            seen = f"last took {dict(last.fields)} at {ms(last.t)}" if last else "took no command at all"
+            raise AssertionError(f"{device} did not receive {what} within {bound} ms; it {seen}")
+
+
+@then(parsers.parse("every CI and BCU receives traction notch {notch:d} over path 1 within {bound:g} ms"))
+def _(sut: TrainDriver, t_action: int, notch: int, bound: float) -> None:
+    _check_devices(sut, analysis.command_devices(sut), t_action, bound, f"notch {notch} over path 1",
+                   path=1, traction=notch)
+
+
+@then(parsers.parse("the CI and BCU of car {car:d} receive traction notch {notch:d} over path 1 within {bound:g} ms"))
+def _(sut: TrainDriver, t_action: int, car: int, notch: int, bound: float) -> None:
+    _check_devices(sut, analysis.command_devices(sut, car), t_action, bound, f"notch {notch} over path 1",
+                   path=1, traction=notch)
+
+
+@then(parsers.parse("every BCU receives brake step {step:d} over path 1 within {bound:g} ms"))
+def _(sut: TrainDriver, t_action: int, step: int, bound: float) -> None:
+    bcus = [d for d in analysis.command_devices(sut) if d.endswith(".BCU")]
+    _check_devices(sut, bcus, t_action, bound, f"brake step {step} over path 1", path=1, brake=step)
+
+
+@then(parsers.parse('every BCU receives brake step "{step}" over path {path:d} within {bound:g} ms'))
+def _(sut: TrainDriver, t_action: int, step: str, path: int, bound: float) -> None:
+    bcus = [d for d in analysis.command_devices(sut) if d.endswith(".BCU")]
+    _check_devices(sut, bcus, t_action, bound, f"brake step {step} over path {path}", path=path,
+                   brake_step=step)
+
+
+@then(parsers.parse('every CI and BCU receives traction step "{step}" over path {path:d} within {bound:g} ms'))
+def _(sut: TrainDriver, t_action: int, step: str, path: int, bound: float) -> None:
+    _check_devices(sut, analysis.command_devices(sut), t_action, bound, f"traction step {step} over path {path}",
+                   path=path, traction_step=step)
+
+
+@then(parsers.parse('the CI and BCU of car {car:d} receive traction step "{step}" over path {path:d} within {bound:g} ms'))
+def _(sut: TrainDriver, t_action: int, car: int, step: str, path: int, bound: float) -> None:
+    _check_devices(sut, analysis.command_devices(sut, car), t_action, bound,
+                   f"traction step {step} over path {path}", path=path, traction_step=step)
+
+
+@then(parsers.parse('the BCU of car {car:d} receives brake step "{step}" over path {path:d} within {bound:g} ms'))
+def _(sut: TrainDriver, t_action: int, car: int, step: str, path: int, bound: float) -> None:
+    _check_devices(sut, [f"car{car}.BCU"], t_action, bound, f"brake step {step} over path {path}", path=path,
+                   brake_step=step)
+
+
+@then(parsers.parse("from {after:g} ms on every CI and BCU outside car {car:d} receives traction notch {notch:d} "
+                    "over path 1"))
+def _(sut: TrainDriver, t_action: int, after: float, car: int, notch: int) -> None:
+    others = [d for d in analysis.command_devices(sut) if not d.startswith(f"car{car}.")]
+    for device in others:
+        takes = sut.trace.select(kind="cmd.in", source=device, since=t_action + _us(after))
+        assert takes, f"{device} received nothing after {ms(t_action)}"
+        odd = [ev for ev in takes if ev["path"] != 1 or ev["traction"] != notch]
+        assert not odd, f"{device} left path 1 / notch {notch}: {analysis.describe(odd)}"
+
+
+@then(parsers.parse("the {device:w} of car {car:d} receives nothing over path {path:d}"))
+def _(sut: TrainDriver, t_action: int, device: str, car: int, path: int) -> None:
+    got = sut.trace.select(kind="cmd.in", source=f"car{car}.{device}", since=t_action, path=path)
+    assert not got, f"car{car}.{device} received commands over path {path}: {analysis.describe(got)}"
+
+
+@then("commands over paths 2 and 3 carry only the traction and brake steps A and B")
+def _(sut: TrainDriver, t_action: int) -> None:
+    takes = [ev for ev in sut.trace.select(kind="cmd.in", since=t_action) if ev["path"] in (2, 3)]
+    assert takes, "no command travelled over path 2 or 3"
+    odd = [ev for ev in takes if ev["traction"] is not None or ev["brake"] is not None
+           or ev["traction_step"] not in ("-", "A", "B") or ev["brake_step"] not in ("-", "A", "B")]
+    assert not odd, f"paths 2/3 carried more than the A/B steps: {analysis.describe(odd)}"
+
+
+@then(parsers.parse("no CI or BCU receives a traction notch other than {notch:d}"))
+def _(sut: TrainDriver, t_action: int, notch: int) -> None:
+    odd = [ev for ev in sut.trace.select(kind="cmd.in", since=t_action, path=1) if ev["traction"] != notch]
+    assert not odd, f"devices received other notches: {analysis.describe(odd)}"
+
+
+@then(parsers.parse("no CI or BCU goes without a command for more than {bound:g} ms"))
+def _(sut: TrainDriver, t_action: int, bound: float) -> None:
+    for device in analysis.command_devices(sut):
+        times = [t_action] + [ev.t for ev in sut.trace.select(kind="cmd.in", source=device, since=t_action)]
+        times.append(sut.now_us)
+        worst = max(analysis.intervals(times))
+        assert worst <= _us(bound), f"{device} went {ms(worst)} without a command (limit {bound} ms)"
+
+
+# -- RED-02: takeover --------------------------------------------------------------------------------
+@then(parsers.parse("at every LCU the first command of system {new:d} follows the last command of "
+                    "system {old:d} by {lo:g} to {hi:g} ms"))
+def _(sut: TrainDriver, t_action: int, new: int, old: int, lo: float, hi: float) -> None:
+    deliveries = analysis.command_deliveries(sut.trace, since=t_action - 100_000)
+    for lcu in analysis.lcus(sut):
+        mine = [d for d in deliveries if d.node == lcu]
+        last_old = max((d.received for d in mine if d.system == old), default=None)
+        first_new = min((d.received for d in mine if d.system == new and d.received >= t_action), default=None)
+        assert last_old is not None, f"{lcu} received no command from system {old} before the fault"
+        assert first_new is not None, f"{lcu} never received a command from system {new}"
+        gap = first_new - last_old
+        assert _us(lo) <= gap <= _us(hi), (f"at {lcu} system {new} followed system {old} after {ms(gap)}, "
+                                           f"outside {lo}..{hi} ms")
+
+
+@then(parsers.parse('while system 1 is healthy only system 1 of the car {cab:d} CCU sends commands'))
+def _(sut: TrainDriver, t_action: int, cab: int) -> None:
+    sent = sut.trace.select(kind="cmd.tx", since=t_action)
+    assert sent, "no commands were sent"
+    odd = [ev for ev in sent if ev.source != f"car{cab}.CCU.sys1.MDM8"]
+    assert not odd, f"other senders while system 1 was healthy: {analysis.describe(odd)}"
+
+
+# -- RED-03: cab lamps -------------------------------------------------------------------------------
+@then(parsers.parse('the "{lamp}" lamp of cab {cab:d} is lit'))
+def _(sut: TrainDriver, lamp: str, cab: int) -> None:
+    assert sut.lamp(cab, lamp), f"the {lamp} lamp of cab {cab} is dark"
+
+
+@then(parsers.parse('the "{lamp}" lamp of cab {cab:d} is dark'))
+def _(sut: TrainDriver, lamp: str, cab: int) -> None:
+    assert not sut.lamp(cab, lamp), f"the {lamp} lamp of cab {cab} is lit"
+
+
+@then(parsers.parse('the "{lamp}" lamp of cab {cab:d} never went dark'))
+def _(sut: TrainDriver, t_action: int, lamp: str, cab: int) -> None:
+    offs = sut.trace.select(kind="lamp.off", source=f"car{cab}.cab", since=t_action, lamp=lamp)
+    assert not offs, f"the {lamp} lamp of cab {cab} went dark: {analysis.describe(offs)}"
+    assert sut.lamp(cab, lamp), f"the {lamp} lamp of cab {cab} is dark now"

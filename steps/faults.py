@@ -1,0 +1,79 @@
+"""Faults injected at named points: ring spans, boards, power supplies, frames; and traffic loads."""
+from __future__ import annotations
+
+from pytest_bdd import given, parsers, when
+
+from sut.driver import TrainDriver
+from steps import analysis
+
+
+@given(parsers.parse('the ring link between "{a}" and "{b}" is cut'))
+@when(parsers.parse('the ring link between "{a}" and "{b}" is cut'), target_fixture="t_action")
+def _(sut: TrainDriver, a: str, b: str) -> int:
+    sut.cut_link(a, b)
+    return sut.now_us
+
+
+@when(parsers.parse('the ring link between "{a}" and "{b}" is restored'), target_fixture="t_action")
+def _(sut: TrainDriver, a: str, b: str) -> int:
+    sut.restore_link(a, b)
+    return sut.now_us
+
+
+@given("every ring link is cut")
+@when("every ring link is cut", target_fixture="t_action")
+def _(sut: TrainDriver) -> int:
+    sut.cut_ring()
+    return sut.now_us
+
+
+@when(parsers.parse('the next {kind} frame from "{a}" to "{b}" is corrupted'),
+      target_fixture="t_action")
+def _(sut: TrainDriver, kind: str, a: str, b: str) -> int:
+    sut.corrupt_frames(a, b, kind, 1)
+    return sut.now_us
+
+
+@given(parsers.parse('board "{board}" has failed'))
+@when(parsers.parse('board "{board}" fails'), target_fixture="t_action")
+def _(sut: TrainDriver, board: str) -> int:
+    sut.fail(board)
+    return sut.now_us
+
+
+@when(parsers.parse('board "{board}" is repaired'), target_fixture="t_action")
+def _(sut: TrainDriver, board: str) -> int:
+    sut.repair(board)
+    return sut.now_us
+
+
+@given(parsers.parse("the {board:w} board of every LCU has failed"))
+@when(parsers.parse("the {board:w} board of every LCU fails"), target_fixture="t_action")
+def _(sut: TrainDriver, board: str) -> int:
+    for lcu in analysis.lcus(sut):
+        sut.fail(f"{lcu}.{board}")
+    return sut.now_us
+
+
+@given(parsers.parse('the supply "{supply}" is off'))
+@when(parsers.parse('the supply "{supply}" is switched off'), target_fixture="t_action")
+def _(sut: TrainDriver, supply: str) -> int:
+    sut.power_off(supply)
+    return sut.now_us
+
+
+@when(parsers.parse('the supply "{supply}" is switched on again'), target_fixture="t_action")
+def _(sut: TrainDriver, supply: str) -> int:
+    sut.restore_power(supply)
+    return sut.now_us
+
+
+@when(parsers.parse('"{node}" asks to send a {size:d}-byte record as block data'), target_fixture="t_action")
+def _(sut: TrainDriver, node: str, size: int) -> int:
+    sut.request_block_transfer(node, analysis.record(size))
+    return sut.now_us
+
+
+@given(parsers.parse('an analyser is attached to the ring link between "{a}" and "{b}"'))
+def _(sut: TrainDriver, a: str, b: str) -> None:
+    sut.tap_link(a, b)

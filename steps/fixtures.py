@@ -1,0 +1,43 @@
+"""The one `sut` fixture every step drives, and the `--sut` option that picks its backend.
+
+After each scenario the SUT's trace is attached to the report (CSV, times in ms) with a timing diagram,
+and the SUT is shut down; a backend that raised inside its simulation fails the scenario.
+"""
+from __future__ import annotations
+
+import pytest
+
+from sut.backends import BACKENDS, ENV_VAR, resolve
+from sut.driver import TrainDriver
+from steps import report
+
+
+def pytest_addoption(parser: pytest.Parser) -> None:
+    group = parser.getgroup("crh2", "CRH2 conformance suite")
+    group.addoption("--sut", default=None, metavar="NAME",
+                    help=f"SUT backend: one of {', '.join(BACKENDS)} or package.module:Class "
+                         f"(default: ${ENV_VAR} or 'reference')")
+
+
+@pytest.fixture(scope="session")
+def sut_class(request: pytest.FixtureRequest) -> type[TrainDriver]:
+    try:
+        return resolve(request.config.getoption("--sut"))
+    except Exception as exc:
+        raise pytest.UsageError(str(exc)) from None
+
+
+@pytest.fixture
+def sut(sut_class: type[TrainDriver], request: pytest.FixtureRequest):
+    driver = sut_class()
+    yield driver
+    try:
+        report.attach_run(driver, request)
+    finally:
+        driver.shutdown()
+
+
+@pytest.fixture
+def t_action() -> int:
+    """Time of the last action, in us: steps that act return it as `t_action`; 0 (power-up) if none did."""
+    return 0

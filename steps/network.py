@@ -1,0 +1,277 @@
+"""The token protocol (PRO-03..05), status and block data (PRO-02, PRO-06), the ring itself (NET-03..09)."""
+from __future__ import annotations
+
+from pytest_bdd import parsers, then
+
+from sut.driver import TrainDriver
+from steps import analysis
+from steps.analysis import ms
+
+
+def _us(ms_value: float) -> int:
+    return round(ms_value * 1000)
+
+
+def _node(source: str) -> str:
+    return source.rsplit(".", 1)[0]
+
+
+# -- token ------------------------------------------------------------------------------------------
+@then(parsers.parse("every node sends a token initialisation {lo:g} to {hi:g} ms after power-up"))
+def _(sut: TrainDriver, lo: float, hi: float) -> None:
+    inits = {}
+    for ev in sut.trace.select(kind="token.init"):
+        inits.setdefault(_node(ev.source), ev.t)
+    for node in sut.ring_nodes():
+        assert node in inits, f"{node} never sent a token initialisation"
+        assert _us(lo) <= inits[node] <= _us(hi), f"{node} sent it at {ms(inits[node])}, outside {lo}..{hi} ms"
+
+
+@then(parsers.parse('the token is formed by "{node}" {lo:g} to {hi:g} ms after the first token initialisation'))
+def _(sut: TrainDriver, t_action: int, node: str, lo: float, hi: float) -> None:
+    init = sut.trace.first(kind="token.init", since=t_action)
+    assert init is not None, "nobody sent a token initialisation"
+    forms = sut.trace.select(kind="token.form", since=init.t)
+    assert forms, "no token was formed"
+    first = forms[0]
+    assert _node(first.source) == node, f"the token was formed by {_node(first.source)}, expected {node}"
+    delay = first.t - init.t
+    assert _us(lo) <= delay <= _us(hi), f"formed {ms(delay)} after the initialisation, outside {lo}..{hi} ms"
+    others = [ev for ev in forms[1:] if _node(ev.source) != node]
+    assert not others, f"other nodes formed tokens too: {analysis.describe(others)}"
+
+
+@then(parsers.parse("the token arrives at each next node {lo:g} to {hi:g} ms after the one before"))
+def _(sut: TrainDriver, t_action: int, lo: float, hi: float) -> None:
+    arrivals = sut.trace.select(kind="token.rx", since=t_action)
+    assert len(arrivals) >= len(sut.ring_nodes()), f"only {len(arrivals)} token arrivals since {ms(t_action)}"
+    for a, b in zip(arrivals, arrivals[1:]):
+        gap = b.t - a.t
+        assert _us(lo) <= gap <= _us(hi), (f"{_node(a.source)} held the token {ms(gap)} before "
+                                           f"{_node(b.source)} had it, outside {lo}..{hi} ms")
+
+
+@then("the token visits the nodes in ring order")
+def _(sut: TrainDriver, t_action: int) -> None:
+    nodes = sut.ring_nodes()
+    visits = [_node(ev.source) for ev in sut.trace.select(kind="token.rx", since=t_action)]
+    assert len(visits) > len(nodes), f"only {len(visits)} token visits"
+    for a, b in zip(visits, visits[1:]):
+        ia = nodes.index(a)
+        assert nodes[(ia + 1) % len(nodes)] == b, f"the token went from {a} to {b}, not to the next node"
+
+
+@then(parsers.parse('"{node}" sends the token back the way it came {lo:g} to {hi:g} ms after receiving it'))
+def _(sut: TrainDriver, t_action: int, node: str, lo: float, hi: float) -> None:
+    trace = sut.trace
+    rx = trace.select(kind="token.rx", source=f"{node}.MDM8", since=t_action)
+    assert rx, f"{node} never received the token after {ms(t_action)}"
+    for arrival in rx[:-1]:
+        sent = trace.first(kind="token.pass", source=f"{node}.MDM8", since=arrival.t)
+        assert sent is not None, f"{node} never passed on the token it got at {ms(arrival.t)}"
+        assert sent["reversed"], f"{node} passed the token on {sent['dir']} into the fault, not back"
+        arrived = trace.first(kind="token.rx", source=f"{sent['to']}.MDM8", since=sent.t)
+        assert arrived is not None, f"the token {node} sent back never reached {sent['to']}"
+        held = arrived.t - arrival.t
+        assert _us(lo) <= held <= _us(hi), (f"{node} held the token {ms(held)} before {sent['to']} had it, "
+                                            f"outside {lo}..{hi} ms")
+
+
+@then(parsers.parse("every node receives the token at least every {bound:g} ms"))
+def _(sut: TrainDriver, t_action: int, bound: float) -> None:
+    for node in sut.ring_nodes():
+        times = [t_action] + [ev.t for ev in sut.trace.select(kind="token.rx", source=f"{node}.MDM8",
+                                                                since=t_action)] + [sut.now_us]
+        worst = max(analysis.intervals(times))
+        assert worst <= _us(bound), f"{node} went {ms(worst)} without the token (limit {bound} ms)"
+
+
+@then("no node sends a token initialisation")
+def _(sut: TrainDriver, t_action: int) -> None:
+    inits = sut.trace.select(kind="token.init", since=t_action)
+    assert not inits, f"token initialisations: {analysis.describe(inits)}"
+
+
+@then(parsers.parse("a token initialisation follows the last token pass by {lo:g} to {hi:g} ms"))
+def _(sut: TrainDriver, t_action: int, lo: float, hi: float) -> None:
+    trace = sut.trace
+    init = trace.first(kind="token.init", since=t_action)
+    assert init is not None, "no node sent a token initialisation"
+    seen = trace.last(kind="token.rx", until=init.t)
+    assert seen is not None, "no token was ever seen"
+    gap = init.t - seen.t
+    assert _us(lo) <= gap <= _us(hi), f"token initialisation {ms(gap)} after the token was last seen, outside {lo}..{hi} ms"
+
+
+@then(parsers.parse("within {bound:g} ms one token circulates again through every node"))
+def _(sut: TrainDriver, t_action: int, bound: float) -> None:
+    trace = sut.trace
+    form = trace.first(kind="token.form", since=t_action)
+    assert form is not None, "no token was formed again"
+    nodes = sut.ring_nodes()
+    for node in nodes:
+        got = trace.first(kind="token.rx", source=f"{node}.MDM8", since=form.t)
+        assert got is not None and got.t <= t_action + _us(bound), f"{node} had no token within {bound} ms"
+    assert len(sut.token_holder()) <= 1, f"several tokens: {sut.token_holder()}"
+
+
+# -- status data ------------------------------------------------------------------------------------
+def _monitor_rx(sut: TrainDriver, cab: int, since: int) -> dict[str, list[int]]:
+    by_node: dict[str, list[int]] = {}
+    for ev in sut.trace.select(kind="status.rx", source=f"car{cab}.monitor", since=since):
+        by_node.setdefault(ev["frm"], []).append(ev.t)
+    return by_node
+
+
+@then(parsers.parse("the cab {cab:d} monitor receives status data from every other node every {lo:g} to {hi:g} ms"))
+def _(sut: TrainDriver, t_action: int, cab: int, lo: float, hi: float) -> None:
+    by_node = _monitor_rx(sut, cab, t_action)
+    fed_by = sut.monitor(cab)["fed_by"]
+    for node in sut.ring_nodes():
+        if node == fed_by:
+            continue
+        times = by_node.get(node, [])
+        assert len(times) >= 3, f"the cab {cab} monitor got {len(times)} status frames from {node}"
+        gaps = analysis.intervals(times)
+        assert _us(lo) <= min(gaps) and max(gaps) <= _us(hi), (
+            f"status data from {node} came every {ms(min(gaps))}..{ms(max(gaps))}, outside {lo}..{hi} ms")
+
+
+@then(parsers.parse("the cab {cab:d} monitor receives status data from every other node at least every {bound:g} ms"))
+def _(sut: TrainDriver, t_action: int, cab: int, bound: float) -> None:
+    by_node = _monitor_rx(sut, cab, t_action)
+    fed_by = sut.monitor(cab)["fed_by"]
+    for node in sut.ring_nodes():
+        if node == fed_by:
+            continue
+        times = [t_action] + by_node.get(node, []) + [sut.now_us]
+        worst = max(analysis.intervals(times))
+        assert worst <= _us(bound), f"no status data from {node} for {ms(worst)} (limit {bound} ms)"
+
+
+@then(parsers.parse("the cab {cab:d} monitor receives no status data from other nodes after {after:g} ms"))
+def _(sut: TrainDriver, t_action: int, cab: int, after: float) -> None:
+    got = sut.trace.select(kind="status.rx", source=f"car{cab}.monitor", since=t_action + _us(after))
+    assert not got, f"status data still arrived: {analysis.describe(got)}"
+
+
+@then(parsers.parse('the cab {cab:d} monitor shows "{text}"'))
+def _(sut: TrainDriver, cab: int, text: str) -> None:
+    faults = sut.monitor(cab)["faults"]
+    assert text in faults, f"the cab {cab} monitor shows {faults or 'no faults'}, not {text!r}"
+
+
+@then(parsers.parse("the cab {cab:d} monitor shows no faults"))
+def _(sut: TrainDriver, cab: int) -> None:
+    faults = sut.monitor(cab)["faults"]
+    assert not faults, f"the cab {cab} monitor shows {faults}"
+
+
+@then(parsers.parse('"{node}" has status data from "{other}" no older than {bound:g} ms'))
+def _(sut: TrainDriver, node: str, other: str, bound: float) -> None:
+    age = sut.status_table(node)[other]
+    assert age is not None and age <= _us(bound), (
+        f"{node} last heard {other} {'never' if age is None else ms(age) + ' ago'} (limit {bound} ms)")
+
+
+@then(parsers.parse('"{node}" has had no status data from "{other}" for at least {bound:g} ms'))
+def _(sut: TrainDriver, node: str, other: str, bound: float) -> None:
+    age = sut.status_table(node)[other]
+    assert age is None or age >= _us(bound), f"{node} heard {other} only {ms(age)} ago"
+
+
+# -- frames on an analysed link ---------------------------------------------------------------------
+def _tapped(sut: TrainDriver, t_action: int, frame: str | None = None):
+    found = sut.trace.select(kind="link.tx", since=t_action)
+    if frame is not None:
+        found = [ev for ev in found if ev["frame"] == frame]
+    assert found, f"the analyser saw no {frame or ''} frames"
+    return found
+
+
+@then(parsers.parse("every {frame} frame on the analysed link carries {size:d} bytes of data"))
+def _(sut: TrainDriver, t_action: int, frame: str, size: int) -> None:
+    odd = [ev for ev in _tapped(sut, t_action, frame) if ev["data_bytes"] != size]
+    assert not odd, f"{frame} frames of another size: {analysis.describe(odd)}"
+
+
+@then(parsers.parse("the analysed link carries {rate:g} Mbit/s within {tol:g} %"))
+def _(sut: TrainDriver, t_action: int, rate: float, tol: float) -> None:
+    for ev in _tapped(sut, t_action):
+        bits = ev["bytes"] * 11 + 6        # ARCNET: 11-bit symbol per byte, 6-bit alert burst
+        want_us = bits / rate              # Mbit/s = bits per us
+        took_us = ev["end_us"] - ev["start_us"]
+        slack = max(1.0, want_us * tol / 100)   # the trace has whole microseconds
+        assert abs(took_us - want_us) <= slack, (f"a {ev['bytes']}-byte {ev['frame']} frame took {took_us} us, "
+                                                 f"{want_us:.1f} us at {rate} Mbit/s")
+
+
+@then(parsers.parse("the analysed link is {medium}"))
+def _(sut: TrainDriver, t_action: int, medium: str) -> None:
+    media = {ev["medium"] for ev in _tapped(sut, t_action)}
+    assert media == {medium}, f"the analysed link is {sorted(media)}, expected {medium}"
+
+
+@then(parsers.parse('"{node}" discards the corrupted {frame} frame'))
+def _(sut: TrainDriver, t_action: int, node: str, frame: str) -> None:
+    found = sut.trace.select(kind="frame.discard", source=f"{node}.MDM8", since=t_action, frame=frame)
+    assert found, f"{node} discarded no {frame} frame"
+
+
+# -- block data -------------------------------------------------------------------------------------
+@then(parsers.parse('"{master}" grants "{node}" the block transfer in its status data'))
+def _(sut: TrainDriver, t_action: int, master: str, node: str) -> None:
+    grant = sut.trace.first(kind="block.grant", source=f"{master}.CPU3", since=t_action, node=node)
+    assert grant is not None, f"{master} never granted {node} a block transfer"
+    announced = sut.trace.first(kind="status.tx", source=f"{master}.CPU3", since=grant.t)
+    assert announced is not None and announced["grant"] > 0, f"{master}'s status data did not carry the grant"
+
+
+@then(parsers.parse('"{node}" sends no block before it is granted'))
+def _(sut: TrainDriver, t_action: int, node: str) -> None:
+    first = sut.trace.first(kind="block.tx", source=f"{node}.CPU3", since=t_action)
+    assert first is not None, f"{node} sent no block"
+    grant = sut.trace.first(kind="block.grant", since=t_action, node=node, until=first.t)
+    assert grant is not None, f"{node} sent block 0 at {ms(first.t)} without a grant"
+
+
+@then(parsers.parse('"{master}" receives the record of "{node}" in {count:d} blocks of {size:d} bytes, '
+                    'each at least {gap:g} ms after the one before'))
+def _(sut: TrainDriver, t_action: int, master: str, node: str, count: int, size: int, gap: float) -> None:
+    rx = sut.trace.select(kind="block.rx", source=f"{master}.CPU3", since=t_action, owner=node)
+    assert [ev["index"] for ev in rx] == list(range(count)), f"blocks received: {[ev['index'] for ev in rx]}"
+    assert all(ev["bytes"] == size for ev in rx), f"block sizes {[ev['bytes'] for ev in rx]}"
+    sent = [ev.t for ev in sut.trace.select(kind="block.tx", source=f"{node}.CPU3", since=t_action)]
+    gaps = analysis.intervals(sent)
+    assert gaps and min(gaps) >= _us(gap), f"blocks sent {ms(min(gaps))} apart, less than {gap} ms"
+
+
+@then(parsers.parse('"{master}" holds the {size:d}-byte record of "{node}"'))
+def _(sut: TrainDriver, master: str, size: int, node: str) -> None:
+    got = sut.block_store(master).get(node, b"")
+    assert got[:size] == analysis.record(size), f"{master} holds {len(got)} bytes of {node}'s record, not the record"
+
+
+@then(parsers.parse('"{master}" holds no record of "{node}"'))
+def _(sut: TrainDriver, master: str, node: str) -> None:
+    got = sut.block_store(master).get(node, b"")
+    assert not got, f"{master} holds {len(got)} bytes of block data from {node}"
+
+
+# -- vehicle level ----------------------------------------------------------------------------------
+@then(parsers.parse('"{device}" is polled every {lo:g} to {hi:g} ms'))
+def _(sut: TrainDriver, t_action: int, device: str, lo: float, hi: float) -> None:
+    kind = "cmd.in" if device.endswith((".CI", ".BCU")) else "loop.poll"
+    times = [ev.t for ev in sut.trace.select(kind=kind, source=device, since=t_action)]
+    assert len(times) >= 3, f"{device} was polled {len(times)} times"
+    gaps = analysis.intervals(times)
+    assert _us(lo) <= min(gaps) and max(gaps) <= _us(hi), (
+        f"{device} polled every {ms(min(gaps))}..{ms(max(gaps))}, outside {lo}..{hi} ms")
+
+
+@then(parsers.parse('"{device}" is connected one way and never answers'))
+def _(sut: TrainDriver, t_action: int, device: str) -> None:
+    events = sut.trace.select(kind="loop.*", source=device, since=t_action)
+    assert events, f"nothing went over {device}'s current loop"
+    answered = [ev for ev in events if ev["reply"] or ev.kind == "loop.poll"]
+    assert not answered, f"{device} is polled or answers: {analysis.describe(answered)}"

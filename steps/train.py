@@ -1,0 +1,67 @@
+"""Composition, power-up and the passing of train time."""
+from __future__ import annotations
+
+from pytest_bdd import given, parsers, then, when
+
+from sut.driver import TrainDriver
+from steps import analysis
+
+
+@given(parsers.re(r"an? (?P<cars>\d+)-car CRH2 train set"), converters={"cars": int})
+def _(sut: TrainDriver, cars: int) -> None:
+    sut.configure(sets=1, cars_per_set=cars)
+
+
+@given(parsers.parse("two {cars:d}-car CRH2 train sets coupled together"))
+def _(sut: TrainDriver, cars: int) -> None:
+    sut.configure(sets=2, cars_per_set=cars)
+
+
+@given("the train is powered up")
+def _(sut: TrainDriver) -> None:
+    sut.power_on()
+
+
+@given(parsers.parse("the train has been powered up for {ms:d} ms"), target_fixture="t_action")
+def _(sut: TrainDriver, ms: int) -> int:
+    sut.power_on()
+    sut.advance_ms(ms)
+    return sut.now_us
+
+
+@when(parsers.parse("{ms:d} ms pass"))
+def _(sut: TrainDriver, ms: int) -> None:
+    sut.advance_ms(ms)
+
+
+@when(parsers.parse("{s:d} s pass"))
+def _(sut: TrainDriver, s: int) -> None:
+    sut.advance_ms(s * 1000)
+
+
+@then(parsers.parse("every car has an LCU on the ring and every cab car a CCU with systems 1 and 2"))
+def _(sut: TrainDriver) -> None:
+    nodes = sut.ring_nodes()
+    for car in analysis.cars(sut):
+        assert f"car{car}.LCU" in nodes, f"car {car} has no LCU on the ring: {nodes}"
+    cabs = sorted({int(n[3:].split(".")[0]) for n in nodes if ".CCU." in n})
+    assert cabs, f"no CCU on the ring: {nodes}"
+    for cab in cabs:
+        for system in (1, 2):
+            assert f"car{cab}.CCU.sys{system}" in nodes, f"cab car {cab} lacks CCU system {system}: {nodes}"
+    first, last = analysis.cars(sut)[0], analysis.cars(sut)[-1]
+    assert first in cabs and last in cabs, f"the end cars {first} and {last} must be cab cars; cabs: {cabs}"
+
+
+@then(parsers.parse('the boards of "{unit}" are {boards}'))
+def _(sut: TrainDriver, unit: str, boards: str) -> None:
+    want = sorted(b.strip() for b in boards.replace(" and ", ",").split(",") if b.strip())
+    got = sorted(sut.boards(unit))
+    assert got == want, f"{unit} has boards {got}, expected {want}"
+
+
+@then(parsers.parse('car {car:d} has the devices {devices}'))
+def _(sut: TrainDriver, car: int, devices: str) -> None:
+    want = {f"car{car}.{d.strip()}" for d in devices.replace(" and ", ",").split(",") if d.strip()}
+    got = set(sut.devices(car))
+    assert want <= got, f"car {car} lacks {sorted(want - got)}; it has {sorted(got)}"

@@ -1,0 +1,192 @@
+"""The one interface every SUT backend implements (python-can's `BusABC`, for a train).
+
+Policy lives here (argument checking, time conversion, shutdown, context manager); backends give small
+primitives. Steps talk to a `TrainDriver` and nothing else. What a backend does not model raises
+`NotSupported`; it never pretends.
+
+Names used at this interface (a rig adapter maps them onto its wiring):
+- ring nodes: `car1.CCU.sys1`, `car1.CCU.sys2`, `car3.LCU`, ...
+- boards: `<node>.CPU3`, `<node>.MDM8`, `car1.CCU.sys1.TXC`, `car3.LCU.MDM9`, `car3.LCU.RXC`,
+  CPU groups `...TXC.group2`, `...RXC.group2`; the line `selfdiag`
+- power supplies: `car1.CCU.sys1` (CPU side of a CCU system), `car1.CCU.sys1.TXC`, `car3.LCU` (CPU side),
+  `car3.LCU.RXC`, `car1.desk` (driver-desk input supply)
+- devices: `car3.CI`, `car3.BCU`, `car3.ACS`, `car3.PID`, `car2.APU`, `car1.DD`, `car3.SDD`
+"""
+from __future__ import annotations
+
+import abc
+from typing import Any
+
+from sut.errors import NotPoweredUp, OutOfRange
+from sut.trace import Trace
+
+DIRECTIONS = ("neutral", "forward", "reverse")
+
+
+class TrainDriver(abc.ABC):
+    """A train under test: inputs, faults, time, observations."""
+
+    backend_name = "abstract"
+
+    def __init__(self) -> None:
+        self._powered = False
+        self._shut_down = False
+
+    # -- composition and life cycle ------------------------------------------------------------
+    @abc.abstractmethod
+    def configure(self, *, sets: int = 1, cars_per_set: int = 8) -> None:
+        """Choose the composition before power-up (NET-08: two sets coupled)."""
+
+    @property
+    def powered(self) -> bool:
+        return self._powered
+
+    def power_on(self) -> None:
+        if self._powered:
+            return
+        self._power_on()
+        self._powered = True
+
+    @abc.abstractmethod
+    def _power_on(self) -> None: ...
+
+    def shutdown(self) -> None:
+        """Idempotent; a backend releases what it holds."""
+        if not self._shut_down:
+            self._shut_down = True
+            self._shutdown()
+
+    def _shutdown(self) -> None:
+        pass
+
+    def __enter__(self) -> "TrainDriver":
+        return self
+
+    def __exit__(self, *exc: Any) -> None:
+        self.shutdown()
+
+    def _require_power(self) -> None:
+        if not self._powered:
+            raise NotPoweredUp("the train is not powered up yet (a Given step must power it up first)")
+
+    # -- virtual time --------------------------------------------------------------------------
+    @property
+    @abc.abstractmethod
+    def now_us(self) -> int: ...
+
+    def advance(self, us: int) -> None:
+        """Let `us` microseconds of train time pass."""
+        if not isinstance(us, int) or us < 0:
+            raise OutOfRange("time step", us, "a whole number of microseconds >= 0")
+        self._require_power()
+        self._advance(us)
+
+    def advance_ms(self, ms: float) -> None:
+        us = round(ms * 1000)
+        if abs(us - ms * 1000) > 1e-6:
+            raise OutOfRange("time step", ms, "whole microseconds")
+        self.advance(us)
+
+    @abc.abstractmethod
+    def _advance(self, us: int) -> None: ...
+
+    # -- driver desk (CMD-05) ------------------------------------------------------------------
+    @abc.abstractmethod
+    def insert_key(self, cab: int) -> None: ...
+
+    @abc.abstractmethod
+    def remove_key(self, cab: int) -> None: ...
+
+    @abc.abstractmethod
+    def set_direction(self, cab: int, direction: str) -> None: ...
+
+    @abc.abstractmethod
+    def set_traction(self, cab: int, notch: int) -> None: ...
+
+    @abc.abstractmethod
+    def set_brake(self, cab: int, step: int) -> None: ...
+
+    # -- faults --------------------------------------------------------------------------------
+    @abc.abstractmethod
+    def cut_link(self, a: str, b: str) -> None:
+        """Cut the ring span between adjacent nodes a and b (both fibres)."""
+
+    @abc.abstractmethod
+    def restore_link(self, a: str, b: str) -> None: ...
+
+    def cut_ring(self) -> None:
+        """Cut every span of the ring (NET-04: the whole ring down)."""
+        nodes = self.ring_nodes()
+        for a, b in zip(nodes, nodes[1:] + nodes[:1]):
+            self.cut_link(a, b)
+
+    @abc.abstractmethod
+    def corrupt_frames(self, a: str, b: str, kind: str, count: int = 1) -> None:
+        """Corrupt the next `count` frames of `kind` going from node a to node b (one bit flipped)."""
+
+    @abc.abstractmethod
+    def fail(self, board: str) -> None: ...
+
+    @abc.abstractmethod
+    def repair(self, board: str) -> None: ...
+
+    @abc.abstractmethod
+    def power_off(self, supply: str) -> None: ...
+
+    @abc.abstractmethod
+    def restore_power(self, supply: str) -> None: ...
+
+    # -- traffic -------------------------------------------------------------------------------
+    @abc.abstractmethod
+    def request_block_transfer(self, node: str, data: bytes) -> None:
+        """Give `node` a record to send as block data (PRO-06)."""
+
+    @abc.abstractmethod
+    def tap_link(self, a: str, b: str) -> None:
+        """Attach an analyser to span a-b: frames crossing it appear in the trace as `link.tx`."""
+
+    # -- observations --------------------------------------------------------------------------
+    @property
+    @abc.abstractmethod
+    def trace(self) -> Trace: ...
+
+    @abc.abstractmethod
+    def ring_nodes(self) -> list[str]:
+        """Node names in ring order (node number = position + 1)."""
+
+    @abc.abstractmethod
+    def boards(self, unit: str) -> list[str]:
+        """Board names of a unit, e.g. boards('car3.LCU') -> ['CPU3', 'MDM8', 'MDM9', 'RXC']."""
+
+    @abc.abstractmethod
+    def devices(self, car: int) -> list[str]: ...
+
+    @abc.abstractmethod
+    def token_holder(self) -> list[str]:
+        """Nodes holding a token now (one per connected segment in a healthy protocol)."""
+
+    @abc.abstractmethod
+    def monitor(self, cab: int) -> dict[str, Any]:
+        """The cab monitor: {'status': {node: age_us or None}, 'faults': [text, ...]}."""
+
+    @abc.abstractmethod
+    def status_table(self, node: str) -> dict[str, int | None]:
+        """Age in us of the last status data `node` received from every other node (None: never)."""
+
+    @abc.abstractmethod
+    def lamp(self, cab: int, name: str) -> bool: ...
+
+    @abc.abstractmethod
+    def block_store(self, node: str) -> dict[str, bytes]:
+        """Records received as block data at `node`, by sending node."""
+
+    @abc.abstractmethod
+    def describe(self) -> dict[str, str]:
+        """Parameters shown as the report's environment."""
+
+    # -- shared argument checks ----------------------------------------------------------------
+    @staticmethod
+    def check_direction(direction: str) -> str:
+        if direction not in DIRECTIONS:
+            raise OutOfRange("direction", direction, ", ".join(DIRECTIONS))
+        return direction

@@ -1,0 +1,30 @@
+"""Errors a SUT driver raises for bad input: each names the value and what would have been allowed."""
+from __future__ import annotations
+
+from typing import Any, Iterable
+
+
+class SutError(Exception):
+    """Base of every error the driver interface raises on purpose."""
+
+
+class UnknownName(SutError):
+    def __init__(self, what: str, name: str, known: Iterable[str]):
+        known = sorted(known)
+        shown = ", ".join(known[:24]) + (f", ... ({len(known)} in all)" if len(known) > 24 else "")
+        super().__init__(f"no {what} named {name!r}; known: {shown}")
+        self.what, self.name, self.known = what, name, known
+
+
+class OutOfRange(SutError):
+    def __init__(self, what: str, value: Any, allowed: str):
+        super().__init__(f"{what} {value!r} is out of range; allowed: {allowed}")
+        self.what, self.value, self.allowed = what, value, allowed
+
+
+class NotPoweredUp(SutError):
+    pass
+
+
+class NotSupported(SutError):
+    """The backend does not model this (python-can style: optional features raise, never fake)."""

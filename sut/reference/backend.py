@@ -1,0 +1,251 @@
+"""`reference`: the embedded virtual-time CRH2 train, as one `TrainDriver` backend.
+
+What it does not model (python-can's VirtualBus states its limits, so does this):
+- electrical signal levels, light budgets and bit errors other than the injected ones;
+- ARCNET reconfiguration bursts and node-ID arbitration (the CRH2 token protocol of S4 runs above them);
+- the content of status data beyond what the monitor shows (health, link state, block requests);
+- vehicle dynamics, interlocks and the brake system (issue 4).
+
+Faulty variants subclass it and set `TIMING` / `BEHAVIOUR` overrides; the model itself is never edited.
+"""
+from __future__ import annotations
+
+from typing import Any, ClassVar
+
+from sut.driver import TrainDriver
+from sut.errors import OutOfRange, SutError, UnknownName
+from sut.reference.boards import Board, PowerSupply
+from sut.reference.config import BRAKE_STEPS, EMERGENCY, TRACTION_NOTCHES, TrainConfig
+from sut.reference.frames import KIND_NAMES
+from sut.reference.node import RingNode
+from sut.reference.ring import Span
+from sut.reference.train import Train
+from sut.trace import Trace
+
+FRAME_KINDS = {name: code for code, name in KIND_NAMES.items()}
+
+
+class ReferenceTrain(TrainDriver):
+    backend_name = "reference"
+    TIMING: ClassVar[dict[str, Any]] = {}
+    BEHAVIOUR: ClassVar[dict[str, Any]] = {}
+
+    def __init__(self) -> None:
+        super().__init__()
+        self._cfg = TrainConfig().with_timing(**self.TIMING).with_behaviour(**self.BEHAVIOUR)
+        self._train: Train | None = None
+
+    # -- composition and life cycle ------------------------------------------------------------
+    def configure(self, *, sets: int = 1, cars_per_set: int = 8) -> None:
+        if self._train is not None:
+            raise SutError("configure the composition before anything else is done to the train")
+        self._cfg = TrainConfig(sets=sets, cars_per_set=cars_per_set, timing=self._cfg.timing,
+                                behaviour=self._cfg.behaviour)
+
+    @property
+    def train(self) -> Train:
+        if self._train is None:
+            self._train = Train(self._cfg)
+        return self._train
+
+    def _power_on(self) -> None:
+        self.train.start()
+
+    @property
+    def now_us(self) -> int:
+        return self.train.kernel.now
+
+    def _advance(self, us: int) -> None:
+        kernel = self.train.kernel
+        kernel.run(kernel.now + us)
+
+    # -- names ---------------------------------------------------------------------------------
+    def _node(self, name: str) -> RingNode:
+        for node in self.train.ring.nodes:
+            if node.name == name:
+                return node
+        raise UnknownName("ring node", name, self.ring_nodes())
+
+    def _all_boards(self) -> dict[str, Board]:
+        t = self.train
+        boards: dict[str, Board] = {"selfdiag": t.selfdiag.board}
+        for node in t.ring.nodes:
+            for short in ("CPU3", "MDM8", "MDM9", "TXC", "RXC"):
+                b = node.board(short)
+                if b is not None:
+                    boards[f"{node.name}.{short}"] = b
+            for part in (getattr(node, "txc", None), getattr(node, "rxc", None)):
+                if part is not None:
+                    boards[f"{part.name}.group1"] = part.group1
+                    boards[f"{part.name}.group2"] = part.group2
+        return boards
+
+    def _board(self, name: str) -> Board:
+        boards = self._all_boards()
+        if name not in boards:
+            raise UnknownName("board", name, boards)
+        return boards[name]
+
+    def _supply(self, name: str) -> PowerSupply:
+        if name not in self.train.supplies:
+            raise UnknownName("power supply", name, self.train.supplies)
+        return self.train.supplies[name]
+
+    def _span(self, a: str, b: str) -> Span:
+        na, nb = self._node(a), self._node(b)
+        span = self.train.ring.span_between(na, nb)
+        if span is None:
+            pairs = [f"{s.a.name}~{s.b.name}" for s in self.train.ring.spans]
+            raise UnknownName("ring span", f"{a}~{b}", pairs)
+        return span
+
+    def _cab(self, cab: int):
+        ccu = self.train.ccus.get(cab)
+        if ccu is None:
+            raise OutOfRange("cab car", cab, ", ".join(str(c) for c in sorted(self.train.ccus)))
+        return ccu
+
+    def _mark(self, source: str, kind: str, **fields: Any) -> None:
+        self.train.emit(source, kind, **fields)
+
+    # -- driver desk ---------------------------------------------------------------------------
+    def insert_key(self, cab: int) -> None:
+        ccu = self._cab(cab)
+        ccu.desk.key = True
+        others_up = any(c.desk.mcr for c in self.train.ccus.values() if c is not ccu)
+        self._mark(f"car{cab}.desk", "desk.key", inserted=True)
+        if not others_up:           # ILK-07: only one cab's MCR can pick up
+            ccu.desk.mcr = True
+            self._mark(f"car{cab}.desk", "mcr.up")
+        ccu.mcr_changed()
+
+    def remove_key(self, cab: int) -> None:
+        ccu = self._cab(cab)
+        ccu.desk.key = False
+        if ccu.desk.mcr:
+            ccu.desk.mcr = False
+            self._mark(f"car{cab}.desk", "mcr.down")
+        self._mark(f"car{cab}.desk", "desk.key", inserted=False)
+        ccu.mcr_changed()
+
+    def set_direction(self, cab: int, direction: str) -> None:
+        self._cab(cab).desk.direction = self.check_direction(direction)
+        self._mark(f"car{cab}.desk", "desk.direction", direction=direction)
+
+    def set_traction(self, cab: int, notch: int) -> None:
+        if not (isinstance(notch, int) and 0 <= notch <= TRACTION_NOTCHES):
+            raise OutOfRange("traction notch", notch, f"0..{TRACTION_NOTCHES}")
+        self._cab(cab).desk.traction = notch
+        self._mark(f"car{cab}.desk", "desk.traction", notch=notch)
+
+    def set_brake(self, cab: int, step: int) -> None:
+        if not (isinstance(step, int) and 0 <= step <= EMERGENCY):
+            raise OutOfRange("brake step", step, f"0..{BRAKE_STEPS} service, {EMERGENCY} emergency")
+        self._cab(cab).desk.brake = step
+        self._mark(f"car{cab}.desk", "desk.brake", step=step)
+
+    # -- faults --------------------------------------------------------------------------------
+    def _set_span(self, span: Span, cut: bool) -> None:
+        span.cut = cut
+        self._mark(f"link.{span.name}", "fault.link", cut=cut)
+        self.train.span_changed(span)
+
+    def cut_link(self, a: str, b: str) -> None:
+        self._set_span(self._span(a, b), True)
+
+    def restore_link(self, a: str, b: str) -> None:
+        self._set_span(self._span(a, b), False)
+
+    def corrupt_frames(self, a: str, b: str, kind: str, count: int = 1) -> None:
+        if kind not in FRAME_KINDS:
+            raise UnknownName("frame kind", kind, FRAME_KINDS)
+        if not isinstance(count, int) or count < 1:
+            raise OutOfRange("frame count", count, ">= 1")
+        span = self._span(a, b)
+        key = (a, FRAME_KINDS[kind])
+        span.corrupt[key] = span.corrupt.get(key, 0) + count
+        self._mark(f"link.{span.name}", "fault.corrupt", frame=kind, count=count)
+
+    def fail(self, board: str) -> None:
+        b = self._board(board)
+        self._mark(board, "fault.board", failed=True)
+        b.set_failed(True)
+
+    def repair(self, board: str) -> None:
+        b = self._board(board)
+        self._mark(board, "fault.board", failed=False)
+        b.set_failed(False)
+
+    def power_off(self, supply: str) -> None:
+        s = self._supply(supply)
+        self._mark(supply, "fault.power", on=False)
+        s.set(False)
+
+    def restore_power(self, supply: str) -> None:
+        s = self._supply(supply)
+        self._mark(supply, "fault.power", on=True)
+        s.set(True)
+
+    # -- traffic -------------------------------------------------------------------------------
+    def request_block_transfer(self, node: str, data: bytes) -> None:
+        if not data:
+            raise OutOfRange("block record size", 0, ">= 1 byte")
+        self._node(node).queue_record(bytes(data))
+
+    def tap_link(self, a: str, b: str) -> None:
+        self._span(a, b).tapped = True
+
+    # -- observations --------------------------------------------------------------------------
+    @property
+    def trace(self) -> Trace:
+        return Trace(self.train.events)
+
+    def ring_nodes(self) -> list[str]:
+        return [n.name for n in self.train.ring.nodes]
+
+    def boards(self, unit: str) -> list[str]:
+        node = self._node(unit)
+        return [short for short in ("CPU3", "MDM8", "MDM9", "TXC", "RXC") if node.board(short) is not None]
+
+    def devices(self, car: int) -> list[str]:
+        for lcu in self.train.lcus:
+            if lcu.car == car:
+                return sorted([d.name for d in lcu.command_devices] + [d.name for d in lcu.loop_devices])
+        raise OutOfRange("car", car, f"1..{self._cfg.cars}")
+
+    def token_holder(self) -> list[str]:
+        return [n.name for n in self.train.ring.nodes if n.has_token]
+
+    def monitor(self, cab: int) -> dict[str, Any]:
+        return self._cab(cab).monitor_view(stale_us=self._cfg.timing.token_loss_us)
+
+    def status_table(self, node: str) -> dict[str, int | None]:
+        me = self._node(node)
+        now = self.now_us
+        return {n.name: (None if n.number not in me.heard else now - me.heard[n.number])
+                for n in self.train.ring.nodes if n is not me}
+
+    def lamp(self, cab: int, name: str) -> bool:
+        lamps = self._cab(cab).lamps
+        if name not in lamps:
+            raise UnknownName("cab lamp", name, lamps)
+        return lamps[name]
+
+    def block_store(self, node: str) -> dict[str, bytes]:
+        me = self._node(node)
+        if me is not self.train.block_master():
+            return {}
+        out = {}
+        for owner, blocks in self.train.block_records.items():
+            data, i = b"", 0
+            while i in blocks:
+                data += blocks[i]
+                i += 1
+            out[self.train.node_by_number(owner).name] = data
+        return out
+
+    def describe(self) -> dict[str, str]:
+        out = {"SUT backend": self.backend_name, "SUT class": f"{type(self).__module__}.{type(self).__qualname__}",
+               "profile": "crh2", "ring nodes": str(len(self.train.ring.nodes))}
+        out.update(self._cfg.describe())
+        return out

@@ -1,0 +1,102 @@
+"""Parameters of the reference train: the composition and every timing figure, in one place.
+
+Faulty variants for the suite's own tests are built by changing these (or by small subclasses), never
+by editing the model at run time. Each figure names the requirement or decision it comes from.
+"""
+from __future__ import annotations
+
+from dataclasses import asdict, dataclass, field, replace
+
+from sut.errors import OutOfRange
+
+MS = 1000  # microseconds per millisecond
+
+
+@dataclass(frozen=True)
+class Timing:
+    bitrate: int = 2_500_000             # NET-07 ARCNET over fibre
+    pass_through_us: int = 250           # PRO-01 per-node pass-through
+    command_interval_us: int = 10 * MS   # PRO-01 minimum interval (the reference sends at the minimum)
+    token_hold_us: int = 10 * MS         # PRO-04 token arrival to token arrival at the next node
+    init_silence_us: int = 500 * MS      # PRO-03 no status data after power-up
+    token_loss_us: int = 500 * MS        # PRO-05 no token seen
+    formation_step_us: int = 20 * MS     # PRO-03 token formed at node number x 20 ms
+    takeover_us: int = 50 * MS           # RED-02 system 2 silence watchdog
+    block_spacing_us: int = 10 * MS      # PRO-06 consecutive block transfers
+    poll_us: int = 10 * MS               # NET-09 CI/BCU polling cycle
+    txc_loop_us: int = 500               # DECISIONS: TXC -> MDM8 20 mA loop transfer
+    rxc_loop_us: int = 500               # DECISIONS: LCU MDM8 -> RXC 20 mA loop transfer
+    rxc_fallback_us: int = 50 * MS       # DECISIONS: RXC trusts the self-diagnostic line after this silence
+    selfdiag_bitrate: int = 38_400       # NET-10 secondary sources: HDLC at 38.4 kbit/s
+    current_loop_periods_us: tuple[tuple[str, int], ...] = (("ACS", 100 * MS), ("PID", 200 * MS), ("APU", 50 * MS))
+
+
+@dataclass(frozen=True)
+class Behaviour:
+    """Switches that only faulty variants turn off; the reference keeps every one on."""
+
+    reverse_routing: bool = True          # NET-03 broadcast both ways round the ring
+    frame_check: bool = True              # NET-05 discard bad frames
+    priorities: bool = True               # NET-06 queue by priority, not arrival
+    token_reversal: bool = True           # PRO-04 return the token at a fault
+    txc_compare: bool = True              # FS-02 both CPU groups must agree
+    txc_inverted_inputs: bool = True      # FS-03 dead input reads as the safe state
+    do_steps_only: bool = True            # CMD-03/04 digital outputs carry A/B steps only
+    selfdiag_commands_only: bool = True   # NET-04 no status data on the self-diagnostic line
+    lamps_parallel: bool = True           # RED-03 both TXCs drive the cab lamps
+    cmd_bypass_cpu3: bool = True          # CMD-01 commands do not pass through CPU3
+    standby_transmits: bool = False       # RED-02 system 2 only monitors while system 1 is healthy
+    block_grant_required: bool = True     # PRO-06 no block transfer before the grant
+
+
+MOTOR_CARS_8 = (2, 3, 6, 7)       # CRH2A 4M4T: CI (main converter) in these cars of each set
+APU_CARS_8 = (2, 4, 6)            # DECISIONS: cars with an auxiliary power unit on a 30 mA loop
+
+TRACTION_NOTCHES = 10
+BRAKE_STEPS = 7
+EMERGENCY = 8
+
+
+@dataclass(frozen=True)
+class TrainConfig:
+    sets: int = 1
+    cars_per_set: int = 8
+    timing: Timing = field(default_factory=Timing)
+    behaviour: Behaviour = field(default_factory=Behaviour)
+
+    def __post_init__(self) -> None:
+        if self.sets not in (1, 2):
+            raise OutOfRange("train sets", self.sets, "1..2 (NET-08 couples two sets)")
+        if not 2 <= self.cars_per_set <= 16:
+            raise OutOfRange("cars per set", self.cars_per_set, "2..16")
+
+    @property
+    def cars(self) -> int:
+        return self.sets * self.cars_per_set
+
+    def motor_cars(self) -> list[int]:
+        per = self.cars_per_set
+        local = MOTOR_CARS_8 if per == 8 else tuple(c for c in range(2, per) if c % 2 == 0)
+        return [s * per + c for s in range(self.sets) for c in local]
+
+    def apu_cars(self) -> list[int]:
+        per = self.cars_per_set
+        local = APU_CARS_8 if per == 8 else (2,)
+        return [s * per + c for s in range(self.sets) for c in local if c <= per]
+
+    def cab_cars(self) -> list[int]:
+        per = self.cars_per_set
+        return [c for s in range(self.sets) for c in (s * per + 1, s * per + per)]
+
+    def with_timing(self, **changes) -> "TrainConfig":
+        return replace(self, timing=replace(self.timing, **changes))
+
+    def with_behaviour(self, **changes) -> "TrainConfig":
+        return replace(self, behaviour=replace(self.behaviour, **changes))
+
+    def describe(self) -> dict[str, str]:
+        out = {"sets": str(self.sets), "cars per set": str(self.cars_per_set)}
+        out.update({f"timing.{k}": str(v) for k, v in asdict(self.timing).items()})
+        changed = {k: v for k, v in asdict(self.behaviour).items() if v != getattr(Behaviour(), k)}
+        out["behaviour"] = ", ".join(f"{k}={v}" for k, v in changed.items()) or "reference"
+        return out

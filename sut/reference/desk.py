@@ -1,0 +1,48 @@
+"""The driver desk of one cab (CMD-05): key and master control relay, direction, traction and brake."""
+from __future__ import annotations
+
+from dataclasses import asdict, dataclass
+from typing import TYPE_CHECKING
+
+from sut.reference.boards import PowerSupply
+from sut.reference.config import BRAKE_STEPS
+
+if TYPE_CHECKING:
+    from sut.reference.train import Train
+
+DIRECTION_CODES = {"neutral": 0, "forward": 1, "reverse": 2}
+
+
+@dataclass(frozen=True)
+class Sample:
+    direction: str
+    traction: int
+    brake: int
+    mcr: bool
+
+    def as_dict(self) -> dict:
+        return asdict(self)
+
+    def wire_fields(self) -> dict:
+        return dict(direction=DIRECTION_CODES[self.direction], traction=self.traction, brake=self.brake,
+                    flags=1 if self.mcr else 0)
+
+
+class Desk:
+    def __init__(self, train: "Train", car: int, supply: PowerSupply):
+        self.train = train
+        self.car = car
+        self.supply = supply          # the desk's digital-input supply as the TXC sees it
+        self.key = False
+        self.mcr = False
+        self.direction = "neutral"
+        self.traction = 0
+        self.brake = 0
+
+    def sample(self, inverted: bool, misread: bool = False) -> Sample:
+        if not self.supply.on:
+            # FS-03: with inverted logic a dead input reads as the restrictive state: full service brake,
+            # no traction. Without it, dead inputs would read as "nothing asked": released brake.
+            return Sample("neutral", 0, BRAKE_STEPS if inverted else 0, self.mcr)
+        brake = (self.brake + 1) % (BRAKE_STEPS + 2) if misread else self.brake
+        return Sample(self.direction, self.traction, brake, self.mcr)

@@ -1,0 +1,61 @@
+"""Vehicle-level devices (NET-09): CI and BCU take commands; current-loop devices are polled or fed one-way."""
+from __future__ import annotations
+
+from typing import TYPE_CHECKING
+
+if TYPE_CHECKING:
+    from sut.reference.boards import Board
+    from sut.reference.train import Train
+
+# DECISIONS.md, "A/B steps": the lower half of the range drives step A, the upper half step B.
+TRACTION_B_FROM = 6
+BRAKE_B_FROM = 5
+
+
+def to_steps(value: int, what: str) -> str:
+    if value <= 0:
+        return "-"
+    threshold = TRACTION_B_FROM if what == "traction" else BRAKE_B_FROM
+    return "B" if value >= threshold else "A"
+
+
+class CommandDevice:
+    """Main converter (CI) or brake control unit (BCU): records what it was commanded, and how."""
+
+    def __init__(self, train: "Train", name: str):
+        self.train = train
+        self.name = name
+        self.last: dict | None = None
+
+    def take(self, path: int, *, traction: int | None, brake: int | None, traction_step: str | None,
+             brake_step: str | None, seq: int | None) -> None:
+        self.last = dict(path=path, traction=traction, brake=brake, traction_step=traction_step,
+                         brake_step=brake_step, t=self.train.kernel.now)
+        self.train.emit(self.name, "cmd.in", path=path, traction=traction, brake=brake,
+                        traction_step=traction_step, brake_step=brake_step, seq=seq)
+
+
+class LoopDevice:
+    """A device on a 20 mA or 30 mA current loop of its car's LCU (CPU3 runs the loop).
+
+    `polled` devices answer each poll; one-way devices only receive (side destination display) or only
+    send (distance detector)."""
+
+    def __init__(self, train: "Train", name: str, cpu3: "Board", loop: str, period_us: int, mode: str):
+        assert mode in ("polled", "to-device", "from-device")
+        self.train, self.name, self.cpu3 = train, name, cpu3
+        self.loop, self.period_us, self.mode = loop, period_us, mode
+
+    def start(self) -> None:
+        self.train.kernel.every(self.period_us, self._cycle, phase=self.period_us // 2)
+
+    def _cycle(self) -> None:
+        if not self.cpu3.alive:
+            return
+        if self.mode == "polled":
+            self.train.emit(self.name, "loop.poll", loop=self.loop, reply=True)
+        elif self.mode == "to-device":
+            self.train.emit(self.name, "loop.send", loop=self.loop, reply=False)
+        else:
+            self.train.emit(self.name, "loop.report", loop=self.loop, reply=False)
+

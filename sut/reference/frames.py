@@ -1,0 +1,239 @@
+"""Wire formats of the ring (ARCNET, ATA 878.1) and of the CRH2 payloads above it.
+
+Layouts are `construct` structs so that the byte image is the specification. The CRC-16 of an ARCNET
+packet (generator x^16+x^15+x^2+1, reflected, zero start: CRC-16/ARC) is computed by `crc16_arc`; the
+`crc` package computes the same value but ~40x slower (bench/crc_bench.py), and every frame on the
+ring is checked, so the table version is used and tests/test_frames.py holds it equal to the library.
+"""
+from __future__ import annotations
+
+import itertools
+from dataclasses import dataclass
+from typing import Any
+
+from construct import (Byte, Bytes, Const, ConstructError, Int16ub, Int16ul, Int32ub, Padding,
+                       Struct, this)
+
+# -- check sequences ------------------------------------------------------------------------------
+
+def _table(poly_reflected: int) -> list[int]:
+    table = []
+    for byte in range(256):
+        reg = byte
+        for _ in range(8):
+            reg = (reg >> 1) ^ poly_reflected if reg & 1 else reg >> 1
+        table.append(reg)
+    return table
+
+
+_ARC = _table(0xA001)     # x^16+x^15+x^2+1 reflected
+_X25 = _table(0x8408)     # x^16+x^12+x^5+1 reflected (HDLC FCS)
+
+
+def crc16_arc(data: bytes) -> int:
+    reg = 0
+    table = _ARC
+    for b in data:
+        reg = (reg >> 8) ^ table[(reg ^ b) & 0xFF]
+    return reg
+
+
+def crc16_x25(data: bytes) -> int:
+    """HDLC frame check sequence (CRC-16/X-25), used on the self-diagnostic line and MDM9 links."""
+    reg = 0xFFFF
+    table = _X25
+    for b in data:
+        reg = (reg >> 8) ^ table[(reg ^ b) & 0xFF]
+    return reg ^ 0xFFFF
+
+
+# -- ARCNET frames --------------------------------------------------------------------------------
+SOH, EOT = 0x01, 0x04
+BROADCAST = 0x00
+MAX_DATA = 508
+
+PAC_SHORT = Struct(
+    "soh" / Const(SOH, Byte),
+    "sid" / Byte,
+    "did" / Byte,
+    "did2" / Byte,
+    "il" / Byte,                      # 256 - data length (short packet, <= 253 data bytes)
+    "data" / Bytes(256 - this.il),
+    "crc" / Int16ul,
+)
+PAC_LONG = Struct(
+    "soh" / Const(SOH, Byte),
+    "sid" / Byte,
+    "did" / Byte,
+    "did2" / Byte,
+    "zero" / Const(0, Byte),
+    "il" / Byte,                      # 512 - data length (long packet, 257..508 data bytes)
+    "data" / Bytes(512 - this.il),
+    "crc" / Int16ul,
+)
+ITT = Struct("eot" / Const(EOT, Byte), "did" / Byte, "did2" / Byte)
+
+# ARCNET sends every byte as an 11-bit information symbol unit at 2.5 Mbit/s, plus a 6-bit alert burst.
+BITS_PER_BYTE = 11
+ALERT_BITS = 6
+
+
+class FrameError(ValueError):
+    """A byte image that is not a valid frame; says what is wrong and where."""
+
+
+def encode_pac(sid: int, did: int, data: bytes) -> bytes:
+    n = len(data)
+    if not 1 <= n <= MAX_DATA or 254 <= n <= 256:
+        raise FrameError(f"ARCNET packet data length {n} not allowed (1..253 or 257..508 bytes)")
+    if n <= 253:
+        body = PAC_SHORT.build(dict(sid=sid, did=did, did2=did, il=256 - n, data=data, crc=0))
+    else:
+        body = PAC_LONG.build(dict(sid=sid, did=did, did2=did, il=512 - n, data=data, crc=0))
+    return body[:-2] + crc16_arc(body[1:-2]).to_bytes(2, "little")
+
+
+def decode_pac(wire: bytes) -> tuple[int, int, bytes]:
+    """(sid, did, data) of a packet; FrameError on a bad layout or check sequence."""
+    if len(wire) < 8 or wire[0] != SOH:
+        raise FrameError(f"not an ARCNET packet: {len(wire)} bytes starting {wire[:1].hex() or 'nothing'}")
+    try:
+        pac = (PAC_LONG if wire[4] == 0 else PAC_SHORT).parse(wire)
+    except ConstructError as exc:
+        raise FrameError(f"ARCNET packet layout: {exc}") from None
+    if pac.did != pac.did2:
+        raise FrameError(f"ARCNET packet destination bytes disagree: {pac.did:#04x} != {pac.did2:#04x}")
+    want = crc16_arc(wire[1:-2])
+    if pac.crc != want:
+        raise FrameError(f"ARCNET packet CRC {pac.crc:#06x}, computed {want:#06x}")
+    return pac.sid, pac.did, pac.data
+
+
+def check_ok(wire: bytes) -> bool:
+    """The node's frame check: layout and CRC (what NET-05 discards on)."""
+    if wire[0] == EOT:
+        return len(wire) == 3 and wire[1] == wire[2]
+    try:
+        decode_pac(wire)
+    except FrameError:
+        return False
+    return True
+
+
+# -- CRH2 payloads --------------------------------------------------------------------------------
+K_COMMAND, K_STATUS, K_TOKEN_INIT, K_TOKEN_SEND, K_BLOCK = 0x11, 0x22, 0x31, 0x32, 0x41
+
+COMMAND = Struct(                     # PRO-01: 12 bytes
+    "kind" / Const(K_COMMAND, Byte),
+    "seq" / Byte,
+    "cab" / Byte,                     # car number of the commanding cab
+    "system" / Byte,                  # CCU system (1 or 2) that put it on the ring
+    "direction" / Byte,               # 0 neutral, 1 forward, 2 reverse
+    "traction" / Byte,                # notch 0..10
+    "brake" / Byte,                   # step 0..7, 8 = emergency
+    "flags" / Byte,                   # bit0 MCR up
+    "clock_ms" / Int32ub,             # clock correction: ms since power-up
+)
+assert COMMAND.sizeof() == 12
+
+STATUS_SIZE = 240
+STATUS = Struct(                      # PRO-02: 240 bytes
+    "kind" / Const(K_STATUS, Byte),
+    "node" / Byte,
+    "car" / Byte,
+    "unit" / Byte,                    # 1 CCU system, 2 LCU
+    "health" / Byte,                  # bit per board, set = healthy (see HEALTH_BITS)
+    "ports" / Byte,                   # bit0 left link up, bit1 right link up
+    "block_request" / Byte,           # blocks waiting to be sent, 0 = no request
+    "grant" / Byte,                   # master only: node number granted a block transfer, 0 = none
+    "seq" / Int16ub,
+    Padding(STATUS_SIZE - 10),
+)
+assert STATUS.sizeof() == STATUS_SIZE
+HEALTH_BITS = ("CPU3", "MDM8", "MDM9", "RXC", "TXC")
+
+TOKEN_CTL = Struct("kind" / Byte, "node" / Byte)
+
+BLOCK_SIZE = 236
+BLOCK = Struct(                       # PRO-06: 236-byte blocks
+    "kind" / Const(K_BLOCK, Byte),
+    "owner" / Byte,
+    "index" / Int16ub,
+    "total" / Int16ub,
+    "data" / Bytes(BLOCK_SIZE),
+)
+
+_PAYLOADS = {K_COMMAND: COMMAND, K_STATUS: STATUS, K_TOKEN_INIT: TOKEN_CTL, K_TOKEN_SEND: TOKEN_CTL,
+             K_BLOCK: BLOCK}
+KIND_NAMES = {K_COMMAND: "command", K_STATUS: "status", K_TOKEN_INIT: "token-init",
+              K_TOKEN_SEND: "token-send", K_BLOCK: "block", EOT: "token"}
+
+# Priorities (NET-06): 0 is the token itself, which carries no data.
+P_TOKEN, P_COMMAND, P_STATUS, P_BLOCK = 0, 1, 2, 3
+
+_uids = itertools.count(1)
+
+
+@dataclass(eq=False, slots=True)
+class Frame:
+    """One frame on the ring: the wire bytes plus the decoded view the sender built them from."""
+
+    kind: int
+    src: int
+    dst: int
+    prio: int
+    wire: bytes
+    fields: dict[str, Any]
+    uid: int = 0
+    _ok: bool | None = None
+
+    @property
+    def ok(self) -> bool:
+        if self._ok is None:
+            self._ok = check_ok(self.wire)
+        return self._ok
+
+    @property
+    def data_bytes(self) -> int:
+        """Payload length (what PRO-01/02 call the data length), from the packet's length byte."""
+        if self.kind == EOT:
+            return 0
+        return 256 - self.wire[4] if self.wire[4] else 512 - self.wire[5]
+
+    @property
+    def name(self) -> str:
+        return KIND_NAMES.get(self.kind, hex(self.kind))
+
+    def corrupted(self, bit: int = 13) -> "Frame":
+        """The same frame with one bit flipped on the way (it keeps its uid: it is the same transmission)."""
+        wire = bytearray(self.wire)
+        wire[(bit // 8) % len(wire)] ^= 1 << (bit % 8)
+        return Frame(self.kind, self.src, self.dst, self.prio, bytes(wire), self.fields, self.uid)
+
+
+def data_frame(kind: int, src: int, dst: int, prio: int, **fields: Any) -> Frame:
+    data = _PAYLOADS[kind].build(dict(fields, kind=kind))
+    return Frame(kind, src, dst, prio, encode_pac(src, dst, data), fields, next(_uids))
+
+
+def token_frame(src: int, dst: int) -> Frame:
+    return Frame(EOT, src, dst, P_TOKEN, ITT.build(dict(did=dst, did2=dst)), {}, next(_uids))
+
+
+def decode_payload(data: bytes) -> dict[str, Any]:
+    if not data:
+        raise FrameError("empty payload")
+    layout = _PAYLOADS.get(data[0])
+    if layout is None:
+        raise FrameError(f"unknown payload kind {data[0]:#04x}")
+    try:
+        parsed = layout.parse(data)
+    except ConstructError as exc:
+        raise FrameError(f"{KIND_NAMES[data[0]]} payload: {exc}") from None
+    return {k: v for k, v in parsed.items() if not k.startswith("_")}
+
+
+def tx_time_us(frame_bytes: int, bitrate: int) -> int:
+    """Time one frame occupies a link, rounded up to whole microseconds."""
+    bits = frame_bytes * BITS_PER_BYTE + ALERT_BITS
+    return -(-bits * 1_000_000 // bitrate)

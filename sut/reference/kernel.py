@@ -1,0 +1,220 @@
+"""A small discrete-event kernel in integer microseconds (SimPy-shaped, no wall clock).
+
+Why our own and not SimPy: the reference mostly reacts to frame arrivals with plain callbacks, and
+`bench/kernel_bench.py` shows a callback heap is several times faster than SimPy's event objects for
+that load (figures in DECISIONS.md). Processes that read like behaviour (TXC sampling, watchdogs) are
+still written as generators: they `yield` a delay in microseconds or a `Signal` to wait for.
+
+Ordering: entries are (time, priority, sequence). The sequence counter makes ties deterministic, so two
+runs with the same inputs give the same trace.
+
+Bulk advance (needed later for 72 h runs): every steady periodic activity is registered as a `Cyclic`
+(`Kernel.every`) rather than as a self-rescheduling callback, and may give a `skip(n)` that leaves its owner
+in the state n ticks would. A bulk run can then jump over whole periods between state-changing events;
+the hooks are here, the jump itself is not implemented yet (see DECISIONS.md, "Kernel").
+"""
+from __future__ import annotations
+
+import heapq
+from dataclasses import dataclass
+from typing import Any, Callable, Generator, Iterable
+
+URGENT = 0
+NORMAL = 1
+LATE = 2
+
+
+class SimulationError(RuntimeError):
+    """A process of the simulated train raised: the scenario must fail, never pass silently."""
+
+
+class Interrupt(Exception):
+    """Thrown into a process generator, carrying its cause (power loss, link cut, ...)."""
+
+    @property
+    def cause(self) -> Any:
+        return self.args[0] if self.args else None
+
+
+class Timer:
+    """A scheduled callback that can be cancelled before it fires."""
+
+    __slots__ = ("at", "fn", "args")
+
+    def __init__(self, at: int, fn: Callable, args: tuple):
+        self.at = at
+        self.fn = fn
+        self.args = args
+
+    def cancel(self) -> None:
+        self.fn = None
+
+    @property
+    def pending(self) -> bool:
+        return self.fn is not None
+
+
+class Signal:
+    """Something processes can wait for; `fire(value)` resumes every waiter at the current time."""
+
+    __slots__ = ("kernel", "_waiters")
+
+    def __init__(self, kernel: "Kernel"):
+        self.kernel = kernel
+        self._waiters: list[Process] = []
+
+    def fire(self, value: Any = None) -> None:
+        waiters, self._waiters = self._waiters, []
+        for proc in waiters:
+            self.kernel.call_later(0, proc._resume, value, prio=URGENT)
+
+
+ProcessGen = Generator[Any, Any, Any]
+
+
+class Process:
+    """A generator driven by the kernel: `yield <int us>` sleeps, `yield <Signal>` waits."""
+
+    __slots__ = ("kernel", "name", "_gen", "_timer", "alive")
+
+    def __init__(self, kernel: "Kernel", gen: ProcessGen, name: str):
+        self.kernel = kernel
+        self.name = name
+        self._gen = gen
+        self._timer: Timer | None = None
+        self.alive = True
+        kernel.call_later(0, self._resume, None, prio=URGENT)
+
+    def _resume(self, value: Any = None, throw: BaseException | None = None) -> None:
+        if not self.alive:
+            return
+        self._timer = None
+        try:
+            target = self._gen.throw(throw) if throw is not None else self._gen.send(value)
+        except StopIteration:
+            self.alive = False
+            return
+        except Interrupt:
+            # An interrupt the process did not handle ends it, like a board losing power.
+            self.alive = False
+            return
+        except Exception as exc:
+            self.alive = False
+            raise SimulationError(f"process {self.name} failed at t={self.kernel.now} us: {exc!r}") from exc
+        if isinstance(target, int):
+            if target < 0:
+                raise SimulationError(f"process {self.name} asked for a negative delay {target} us")
+            self._timer = self.kernel.call_later(target, self._resume, None)
+        elif isinstance(target, Signal):
+            target._waiters.append(self)
+        else:
+            raise SimulationError(f"process {self.name} yielded {target!r}; expected int us or Signal")
+
+    def interrupt(self, cause: Any = None) -> None:
+        """Throw `Interrupt(cause)` into the process at the current time."""
+        if not self.alive:
+            return
+        if self._timer is not None:
+            self._timer.cancel()
+            self._timer = None
+        self.kernel.call_later(0, self._resume, None, Interrupt(cause), prio=URGENT)
+
+    def kill(self) -> None:
+        if self._timer is not None:
+            self._timer.cancel()
+        self.alive = False
+        self._gen.close()
+
+
+@dataclass
+class Cyclic:
+    """A steady periodic activity: `tick()` every `period` us from `phase`.
+
+    `skip(n)` must leave the owner in the state `n` ticks would have left it in; `Kernel.run(bulk=True)`
+    calls it instead of `n` ticks when nothing else is due in between.
+    """
+
+    period: int
+    tick: Callable[[], None]
+    skip: Callable[[int], None] | None = None
+    next_at: int = 0
+    timer: Timer | None = None
+
+
+class Kernel:
+    __slots__ = ("now", "_heap", "_seq", "events", "_cyclics")
+
+    def __init__(self) -> None:
+        self.now = 0
+        self._heap: list[tuple[int, int, int, Timer]] = []
+        self._seq = 0
+        self.events = 0  # callbacks run, for benchmarks
+        self._cyclics: list[Cyclic] = []
+
+    # -- scheduling -----------------------------------------------------------------------------
+    def call_at(self, at: int, fn: Callable, *args: Any, prio: int = NORMAL) -> Timer:
+        if at < self.now:
+            raise SimulationError(f"cannot schedule in the past: {at} us < now {self.now} us")
+        timer = Timer(at, fn, args)
+        self._seq += 1
+        heapq.heappush(self._heap, (at, prio, self._seq, timer))
+        return timer
+
+    def call_later(self, delay: int, fn: Callable, *args: Any, prio: int = NORMAL) -> Timer:
+        return self.call_at(self.now + delay, fn, *args, prio=prio)
+
+    def process(self, gen: ProcessGen, name: str = "process") -> Process:
+        return Process(self, gen, name)
+
+    def signal(self) -> Signal:
+        return Signal(self)
+
+    def every(self, period: int, tick: Callable[[], None], phase: int = 0,
+              skip: Callable[[int], None] | None = None) -> Cyclic:
+        """Run `tick` every `period` us starting at now + phase."""
+        if period <= 0:
+            raise SimulationError(f"period must be positive, got {period} us")
+        cyc = Cyclic(period, tick, skip, self.now + phase)
+        self._cyclics.append(cyc)
+        cyc.timer = self.call_at(cyc.next_at, self._cyclic_tick, cyc)
+        return cyc
+
+    def stop_cyclic(self, cyc: Cyclic) -> None:
+        if cyc.timer is not None:
+            cyc.timer.cancel()
+            cyc.timer = None
+        if cyc in self._cyclics:
+            self._cyclics.remove(cyc)
+
+    def _cyclic_tick(self, cyc: Cyclic) -> None:
+        cyc.next_at += cyc.period
+        cyc.timer = self.call_at(cyc.next_at, self._cyclic_tick, cyc)
+        cyc.tick()
+
+    # -- running --------------------------------------------------------------------------------
+    def peek(self) -> int | None:
+        """Time of the next pending callback, or None."""
+        heap = self._heap
+        while heap and heap[0][3].fn is None:
+            heapq.heappop(heap)
+        return heap[0][0] if heap else None
+
+    def run(self, until: int) -> None:
+        """Run every callback due at or before `until`, then set now = until. Resumable."""
+        if until < self.now:
+            raise SimulationError(f"cannot run back in time to {until} us (now {self.now} us)")
+        heap = self._heap
+        pop = heapq.heappop
+        while heap and heap[0][0] <= until:
+            at, _prio, _seq, timer = pop(heap)
+            fn = timer.fn
+            if fn is None:
+                continue
+            timer.fn = None
+            self.now = at
+            self.events += 1
+            fn(*timer.args)
+        self.now = until
+
+    def pending(self) -> Iterable[Timer]:
+        return (entry[3] for entry in self._heap if entry[3].fn is not None)

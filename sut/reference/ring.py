@@ -1,0 +1,145 @@
+"""The bidirectional optical ring (NET-03, NET-05, NET-06, NET-07, PRO-01).
+
+Nodes sit in ring order; span i joins node i to node i+1 (the last span closes the ring). Each span has a
+fibre each way; a `Link` is one direction of one span with its own transmit queue. A frame crossing a link
+reaches the next node one pass-through time (0.25 ms) after it starts, and occupies the link for its
+transmission time at 2.5 Mbit/s; a waiting frame goes first by priority (NET-06), never preempting one
+already on the fibre.
+
+Broadcasts go out both ways (reverse routing). Each copy is dropped at a node that already has the frame:
+every node that copy would reach next was already reached by the other one, so on an intact ring each node
+receives a broadcast once, and with one span cut everyone still receives it (NET-03).
+"""
+from __future__ import annotations
+
+import heapq
+import itertools
+from typing import TYPE_CHECKING
+
+from sut.reference.frames import BROADCAST, Frame, tx_time_us
+
+if TYPE_CHECKING:
+    from sut.reference.node import RingNode
+    from sut.reference.train import Train
+
+R, L = "R", "L"     # R: increasing node number, L: decreasing
+OPPOSITE = {R: L, L: R}
+
+
+class Span:
+    def __init__(self, a: "RingNode", b: "RingNode", medium: str):
+        self.a, self.b = a, b
+        self.medium = medium
+        self.cut = False
+        self.corrupt: dict[tuple[str, int], int] = {}   # (sending node, frame kind) -> frames to corrupt
+        self.tapped = False
+
+    @property
+    def name(self) -> str:
+        return f"{self.a.name}~{self.b.name}"
+
+    @property
+    def usable(self) -> bool:
+        return not self.cut and self.a.optics_alive and self.b.optics_alive
+
+
+class Link:
+    __slots__ = ("span", "src", "dst", "direction", "busy_until", "queue", "timer")
+
+    def __init__(self, span: Span, src: "RingNode", dst: "RingNode", direction: str):
+        self.span, self.src, self.dst, self.direction = span, src, dst, direction
+        self.busy_until = 0
+        self.queue: list = []
+        self.timer = None
+
+
+class Ring:
+    def __init__(self, train: "Train", nodes: list["RingNode"], media: list[str]):
+        self.train = train
+        self.kernel = train.kernel
+        self.nodes = nodes
+        self.size = len(nodes)
+        self.spans = [Span(nodes[i], nodes[(i + 1) % self.size], media[i]) for i in range(self.size)]
+        for i, node in enumerate(nodes):
+            node.ports = {R: self.spans[i], L: self.spans[i - 1]}
+            node.out = {R: Link(self.spans[i], node, nodes[(i + 1) % self.size], R),
+                        L: Link(self.spans[i - 1], node, nodes[i - 1], L)}
+        self._order = itertools.count()
+        timing, behaviour = train.cfg.timing, train.cfg.behaviour
+        self.pass_through = timing.pass_through_us
+        self.bitrate = timing.bitrate
+        self.by_priority = behaviour.priorities
+        self.check = behaviour.frame_check
+        self.both_ways = behaviour.reverse_routing
+
+    def span_between(self, a: "RingNode", b: "RingNode") -> Span | None:
+        for span in self.spans:
+            if {span.a, span.b} == {a, b}:
+                return span
+        return None
+
+    # -- sending --------------------------------------------------------------------------------
+    def broadcast(self, node: "RingNode", frame: Frame) -> None:
+        node.seen_add(frame.uid)
+        for direction in ((R, L) if self.both_ways else (R,)):
+            if node.port_ok(direction):
+                self._enqueue(node.out[direction], frame, 1)
+
+    def send(self, node: "RingNode", frame: Frame, direction: str) -> None:
+        """Unicast toward frame.dst in one direction (the token goes to a neighbour this way)."""
+        node.seen_add(frame.uid)
+        if node.port_ok(direction):
+            self._enqueue(node.out[direction], frame, 1)
+
+    def _enqueue(self, link: Link, frame: Frame, hops: int) -> None:
+        now = self.kernel.now
+        if not link.queue and link.busy_until <= now:
+            self._start(link, frame, hops)
+            return
+        key = frame.prio if self.by_priority else 0
+        heapq.heappush(link.queue, (key, next(self._order), frame, hops))
+        if link.timer is None:
+            link.timer = self.kernel.call_at(max(link.busy_until, now), self._link_free, link)
+
+    def _link_free(self, link: Link) -> None:
+        link.timer = None
+        if link.queue:
+            _key, _order, frame, hops = heapq.heappop(link.queue)
+            self._start(link, frame, hops)
+        if link.queue:
+            link.timer = self.kernel.call_at(link.busy_until, self._link_free, link)
+
+    def _start(self, link: Link, frame: Frame, hops: int) -> None:
+        span = link.span
+        if not span.usable:
+            return                                        # light is gone: the frame is lost
+        now = self.kernel.now
+        duration = tx_time_us(len(frame.wire), self.bitrate)
+        link.busy_until = now + duration
+        key = (link.src.name, frame.kind)
+        left = span.corrupt.get(key)
+        if left:
+            span.corrupt[key] = left - 1
+            frame = frame.corrupted()
+        if span.tapped:
+            self.train.emit(f"link.{span.name}", "link.tx", frm=link.src.name, to=link.dst.name,
+                            frame=frame.name, bytes=len(frame.wire),
+                            data_bytes=frame.data_bytes, start_us=now, end_us=now + duration,
+                            medium=span.medium)
+        self.kernel.call_later(self.pass_through, self._arrive, link, frame, hops)
+
+    # -- receiving ------------------------------------------------------------------------------
+    def _arrive(self, link: Link, frame: Frame, hops: int) -> None:
+        node = link.dst
+        if not link.span.usable:
+            return
+        if self.check and not frame.ok:
+            node.emit("frame.discard", frame=frame.name, frm=link.src.name, hops=hops)
+            return
+        if frame.uid in node.seen:
+            return                                        # the other copy got here first
+        node.seen_add(frame.uid)
+        if frame.dst == BROADCAST or frame.dst == node.number:
+            node.receive(frame, link.direction, hops)
+        if frame.dst != node.number and hops < self.size - 1 and node.port_ok(link.direction):
+            self._enqueue(node.out[link.direction], frame, hops + 1)

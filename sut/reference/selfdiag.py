@@ -1,0 +1,67 @@
+"""The self-diagnostic transmission line (NET-01, NET-04, CMD-04): HDLC on a twisted-pair bus.
+
+It joins every CCU and LCU (and both sets when coupled, NET-08). The master TXC puts each command on it;
+every RXC receives it at the end of the frame. It carries control commands only.
+"""
+from __future__ import annotations
+
+from collections import deque
+from typing import TYPE_CHECKING
+
+from sut.reference.boards import Board, PowerSupply
+from sut.reference.frames import COMMAND, crc16_x25
+
+if TYPE_CHECKING:
+    from sut.reference.train import Train
+
+HDLC_OVERHEAD = 6          # flag, address, control, FCS x2, closing flag
+
+
+class SelfDiagLine:
+    def __init__(self, train: "Train"):
+        self.train = train
+        self.board = Board("selfdiag", PowerSupply("selfdiag.supply"))
+        self.busy_until = 0
+        self.queue: deque = deque()
+        self._timer = None
+
+    def _duration(self, payload: int) -> int:
+        bits = (payload + HDLC_OVERHEAD) * 8
+        return -(-bits * 1_000_000 // self.train.cfg.timing.selfdiag_bitrate)
+
+    def send_command(self, sender: str, fields: dict) -> None:
+        if not self.board.alive:
+            return
+        data = COMMAND.build(dict(fields, kind=0x11))
+        self._queue(("command", sender, fields, data + crc16_x25(data).to_bytes(2, "little")))
+
+    def send_status(self, sender: str, src: int, fields: dict) -> None:
+        """Only a faulty variant calls this (NET-04 says the line carries commands only)."""
+        if self.board.alive:
+            self._queue(("status", sender, dict(fields, src=src), bytes(240)))
+
+    def _queue(self, item: tuple) -> None:
+        self.queue.append(item)
+        if self._timer is None:
+            self._next()
+
+    def _next(self) -> None:
+        self._timer = None
+        if not self.queue:
+            return
+        kernel = self.train.kernel
+        kind, sender, fields, wire = self.queue.popleft()
+        start = max(kernel.now, self.busy_until)
+        self.busy_until = start + self._duration(len(wire))
+        kernel.call_at(self.busy_until, self._deliver, kind, sender, fields)
+        self._timer = kernel.call_at(self.busy_until, self._next)
+
+    def _deliver(self, kind: str, sender: str, fields: dict) -> None:
+        if not self.board.alive:
+            return
+        self.train.emit("selfdiag", "sd.rx", frame=kind, frm=sender, seq=fields.get("seq"))
+        if kind == "command":
+            for lcu in self.train.lcus:
+                lcu.rxc.from_selfdiag(fields)
+        else:
+            self.train.selfdiag_status_delivered(fields)

@@ -1,0 +1,157 @@
+"""Assembles one train: ring order, supplies, units, devices, the self-diagnostic line.
+
+Ring order of one 8-car set (node number = position + 1, DECISIONS.md "Ring order"):
+  car1.CCU.sys1, car1.CCU.sys2, car1.LCU .. car8.LCU, car8.CCU.sys2, car8.CCU.sys1
+Two coupled sets (NET-08) make one ring of both, joined at the coupler by twisted pair.
+"""
+from __future__ import annotations
+
+from typing import Any
+
+from sut.reference.boards import PowerSupply
+from sut.reference.ccu import Ccu, CcuSystem
+from sut.reference.config import TrainConfig
+from sut.reference.devices import LoopDevice
+from sut.reference.kernel import Kernel
+from sut.reference.lcu import Lcu
+from sut.reference.node import RingNode
+from sut.reference.ring import Ring, Span
+from sut.reference.selfdiag import SelfDiagLine
+from sut.trace import TraceEvent
+
+
+class Train:
+    def __init__(self, cfg: TrainConfig):
+        self.cfg = cfg
+        self.kernel = Kernel()
+        self.events: list[TraceEvent] = []
+        self.supplies: dict[str, PowerSupply] = {}
+        self.ccus: dict[int, Ccu] = {}
+        self.lcus: list[Lcu] = []
+        nodes: list[RingNode] = []
+        media: list[str] = []
+        per = cfg.cars_per_set
+        for s in range(cfg.sets):
+            first, last = s * per + 1, s * per + per
+            for car in (first, last):
+                for name in (f"car{car}.CCU.sys1", f"car{car}.CCU.sys2", f"car{car}.CCU.sys1.TXC",
+                             f"car{car}.CCU.sys2.TXC", f"car{car}.desk"):
+                    self.supplies[name] = PowerSupply(name)
+                self.ccus[car] = Ccu(self, car, self.supplies)
+            set_nodes: list[RingNode] = list(self.ccus[first].systems)
+            for car in range(first, last + 1):
+                self.supplies[f"car{car}.LCU"] = PowerSupply(f"car{car}.LCU")
+                self.supplies[f"car{car}.LCU.RXC"] = PowerSupply(f"car{car}.LCU.RXC")
+                lcu = Lcu(self, car, self.supplies[f"car{car}.LCU"], self.supplies[f"car{car}.LCU.RXC"])
+                self._add_loop_devices(lcu)
+                self.lcus.append(lcu)
+                set_nodes.append(lcu)
+            set_nodes.extend(reversed(self.ccus[last].systems))
+            if media:
+                media[-1] = "twisted-pair"          # the span into this set crosses the coupler
+            media.extend(["fibre"] * len(set_nodes))
+            nodes.extend(set_nodes)
+        for i, node in enumerate(nodes):
+            node.number = i + 1
+        self.ring = Ring(self, nodes, media)
+        self._span_state = {id(span): span.usable for span in self.ring.spans}
+        self.selfdiag = SelfDiagLine(self)
+        # PRO-06 block transfer bookkeeping at the master node
+        self.block_queue: list[int] = []
+        self.block_granted = 0
+        self.block_records: dict[int, dict[int, bytes]] = {}
+
+    def _add_loop_devices(self, lcu: Lcu) -> None:
+        periods = dict(self.cfg.timing.current_loop_periods_us)
+        car = lcu.car
+        lcu.loop_devices.append(LoopDevice(self, f"car{car}.ACS", lcu.cpu3, "20mA", periods["ACS"], "polled"))
+        lcu.loop_devices.append(LoopDevice(self, f"car{car}.PID", lcu.cpu3, "20mA", periods["PID"], "polled"))
+        if car in self.cfg.apu_cars():
+            lcu.loop_devices.append(LoopDevice(self, f"car{car}.APU", lcu.cpu3, "30mA", periods["APU"],
+                                               "polled"))
+        lcu.loop_devices.append(LoopDevice(self, f"car{car}.SDD", lcu.cpu3, "20mA", 1_000_000, "to-device"))
+        if car in self.cfg.cab_cars():
+            lcu.loop_devices.append(LoopDevice(self, f"car{car}.DD", lcu.cpu3, "20mA", 100_000, "from-device"))
+
+    # -- plumbing -------------------------------------------------------------------------------
+    def emit(self, source: str, kind: str, /, **fields: Any) -> None:
+        self.events.append(TraceEvent(self.kernel.now, source, kind, fields))
+
+    def start(self) -> None:
+        self.emit("train", "power.on", cars=self.cfg.cars, nodes=self.ring.size)
+        for node in self.ring.nodes:
+            node.start()
+        for ccu in self.ccus.values():
+            ccu.start()
+
+    def node_by_number(self, number: int) -> RingNode:
+        return self.ring.nodes[number - 1]
+
+    def span_changed(self, span: Span) -> None:
+        """Called when light on a span may have come or gone; the end nodes notice at once."""
+        now_usable = span.usable
+        if self._span_state.get(id(span)) == now_usable:
+            return
+        self._span_state[id(span)] = now_usable
+        for node, side in ((span.a, "R"), (span.b, "L")):
+            node.port_changed(side, now_usable)
+
+    def commanding_ccu(self) -> Ccu | None:
+        for ccu in self.ccus.values():
+            if ccu.commanding:
+                return ccu
+        return None
+
+    def commanding_source_ok(self, fields: dict) -> bool:
+        ccu = self.ccus.get(fields["cab"])
+        return ccu is not None and ccu.commanding
+
+    # -- PRO-06: block data -----------------------------------------------------------------------
+    def block_master(self) -> CcuSystem | None:
+        ccu = self.commanding_ccu() or self.ccus[min(self.ccus)]
+        system = ccu.systems[ccu.master - 1]
+        return system if system.cpu3.alive and system.mdm8.alive else None
+
+    def block_grant_for(self, node: RingNode) -> int:
+        if node is not self.block_master():
+            return 0
+        if self.block_granted == 0 and self.block_queue:
+            self.block_granted = self.block_queue.pop(0)
+            self.emit(f"{node.name}.CPU3", "block.grant", node=self.node_by_number(self.block_granted).name)
+        if self.block_granted == node.number and node.pending_blocks:
+            node.start_blocks()
+        return self.block_granted
+
+    def block_master_saw_status(self, node: RingNode, fields: dict, src: int) -> None:
+        if fields["grant"] == node.number and node.pending_blocks:
+            node.start_blocks()
+        if node is not self.block_master():
+            return
+        if fields["block_request"] and src != self.block_granted and src not in self.block_queue:
+            self.block_queue.append(src)
+            self.emit(f"{node.name}.CPU3", "block.request", node=self.node_by_number(src).name,
+                      blocks=fields["block_request"])
+        elif src == self.block_granted and not fields["block_request"]:
+            self.block_granted = 0
+
+    def block_received(self, node: RingNode, fields: dict, src: int) -> None:
+        if node is not self.block_master():
+            return
+        owner = fields["owner"]
+        self.block_records.setdefault(owner, {})[fields["index"]] = fields["data"]
+        self.emit(f"{node.name}.CPU3", "block.rx", owner=self.node_by_number(owner).name, index=fields["index"],
+                  total=fields["total"], bytes=len(fields["data"]))
+
+    # -- NET-04: the self-diagnostic line carries commands only ----------------------------------
+    def selfdiag_status_leak(self, node: RingNode, frame: Any) -> None:
+        if self.cfg.behaviour.selfdiag_commands_only:
+            return
+        if not (node.port_ok("L") or node.port_ok("R")):
+            self.selfdiag.send_status(node.name, node.number, frame.fields)
+
+    def selfdiag_status_delivered(self, fields: dict) -> None:
+        src = fields["src"]
+        for node in self.ring.nodes:
+            if node.number != src and node.cpu3.alive:
+                node.heard[src] = self.kernel.now
+                node.on_status(fields, src)

@@ -1,0 +1,102 @@
+"""The SUT's trace: every observable happening as (time us, source, kind, fields).
+
+A rig would produce the same from bus analysers and data loggers; Then steps read only this and the
+driver's snapshot observations. Sources are dotted names (`car3.LCU.MDM8`, `car1.CCU.sys2`), kinds are
+dotted verbs (`cmd.rx`, `token.pass`, `frame.discard`).
+"""
+from __future__ import annotations
+
+import csv
+import fnmatch
+import io
+import json
+from dataclasses import dataclass
+from typing import Any, Callable, Iterable, Iterator, Mapping
+
+
+@dataclass(frozen=True, slots=True)
+class TraceEvent:
+    t: int                       # microseconds since power-up
+    source: str
+    kind: str
+    fields: Mapping[str, Any]
+
+    @property
+    def t_ms(self) -> float:
+        return self.t / 1000
+
+    def __getitem__(self, key: str) -> Any:
+        return self.fields[key]
+
+    def get(self, key: str, default: Any = None) -> Any:
+        return self.fields.get(key, default)
+
+
+def _source_matcher(pattern: str | None) -> Callable[[str], bool]:
+    if pattern is None:
+        return lambda s: True
+    if any(ch in pattern for ch in "*?["):
+        return lambda s: fnmatch.fnmatchcase(s, pattern)
+    return lambda s: s == pattern or s.startswith(pattern + ".")
+
+
+class Trace:
+    """A read-only, growing view of a SUT's events, in time order."""
+
+    def __init__(self, events: list[TraceEvent]):
+        self._events = events
+
+    def __len__(self) -> int:
+        return len(self._events)
+
+    def __iter__(self) -> Iterator[TraceEvent]:
+        return iter(self._events)
+
+    def select(self, kind: str | None = None, source: str | None = None, since: int | None = None,
+               until: int | None = None, **where: Any) -> list[TraceEvent]:
+        """Events matching all given criteria. `kind` may end in `.*`; `source` is exact, a dotted prefix
+        or a glob; `since`/`until` are inclusive times in us; `where` compares fields for equality."""
+        match_src = _source_matcher(source)
+        prefix = kind[:-1] if kind and kind.endswith("*") else None
+        out = []
+        for ev in self._since(since):
+            if until is not None and ev.t > until:
+                break
+            if kind is not None and (ev.kind != kind if prefix is None else not ev.kind.startswith(prefix)):
+                continue
+            if not match_src(ev.source):
+                continue
+            if any(ev.fields.get(k) != v for k, v in where.items()):
+                continue
+            out.append(ev)
+        return out
+
+    def _since(self, since: int | None) -> Iterable[TraceEvent]:
+        events = self._events
+        if not since:
+            return events
+        lo, hi = 0, len(events)
+        while lo < hi:                      # events are appended in time order: bisect on t
+            mid = (lo + hi) // 2
+            if events[mid].t < since:
+                lo = mid + 1
+            else:
+                hi = mid
+        return events[lo:]
+
+    def first(self, **criteria: Any) -> TraceEvent | None:
+        found = self.select(**criteria)
+        return found[0] if found else None
+
+    def last(self, **criteria: Any) -> TraceEvent | None:
+        found = self.select(**criteria)
+        return found[-1] if found else None
+
+    def to_csv(self) -> str:
+        buf = io.StringIO()
+        writer = csv.writer(buf, lineterminator="\n")
+        writer.writerow(["t_ms", "source", "kind", "fields"])
+        for ev in self._events:
+            writer.writerow([f"{ev.t / 1000:.3f}", ev.source, ev.kind,
+                             json.dumps(dict(ev.fields), separators=(",", ":"), default=str)])
+        return buf.getvalue()
