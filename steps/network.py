@@ -212,6 +212,25 @@ def _(sut: TrainDriver, t_action: int, medium: str) -> None:
     assert media == {medium}, f"the analysed link is {sorted(media)}, expected {medium}"
 
 
+@then(parsers.parse('on the analysed link no status or block frame of "{node}" goes ahead of a waiting command'))
+def _(sut: TrainDriver, t_action: int, node: str) -> None:
+    """NET-06 at the first hop: between a command's hand-over to the CCU's MDM8 (`cmd.tx`) and the moment
+    it starts on the fibre, no lower-priority frame of that node may start (one already on the fibre
+    finishes: frames are not pre-empted)."""
+    sent = _tapped(sut, t_action)
+    mine = [ev for ev in sent if ev["frm"] == node]
+    commands = [ev for ev in mine if ev["frame"] == "command"]
+    lower = [ev for ev in mine if ev["frame"] in ("status", "block")]
+    assert commands and lower, f"the analyser saw {len(commands)} commands and {len(lower)} status/block frames of {node}"
+    for handed in sut.trace.select(kind="cmd.tx", source=f"{node}.MDM8", since=t_action):
+        start = next((ev["start_us"] for ev in commands if ev["start_us"] >= handed.t), None)
+        if start is None:
+            continue
+        ahead = [ev for ev in lower if handed.t < ev["start_us"] < start]
+        assert not ahead, (f"command seq {handed['seq']} handed over at {ms(handed.t)} waited until {ms(start)} "
+                           f"behind {analysis.describe(ahead)}")
+
+
 @then(parsers.parse('"{node}" discards the corrupted {frame} frame'))
 def _(sut: TrainDriver, t_action: int, node: str, frame: str) -> None:
     found = sut.trace.select(kind="frame.discard", source=f"{node}.MDM8", since=t_action, frame=frame)

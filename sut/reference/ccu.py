@@ -150,7 +150,8 @@ class Ccu:
         if not self.commanding:
             return
         standby = self.systems[2 - self.master]    # the other one
-        if not (standby.mdm8.alive and standby.txc.alive and not standby.txc.failsafe):
+        hears_ring = standby.port_ok("L") or standby.port_ok("R")
+        if not (hears_ring and standby.txc.alive and not standby.txc.failsafe):
             self._arm_watch()                      # nobody able to take over; keep watching
             return
         old = self.master

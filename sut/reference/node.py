@@ -45,6 +45,7 @@ class RingNode:
         # token protocol state
         self.has_token = False
         self.ever_held = False
+        self._isolated = False
         self.token_dir = R
         self._hold: "Timer | None" = None
         self._watch: "Timer | None" = None
@@ -179,11 +180,15 @@ class RingNode:
         if not self.port_ok(direction) and self.train.cfg.behaviour.token_reversal:
             direction, reversed_ = OPPOSITE[direction], True
         if not self.port_ok(direction) and reversed_:
-            # Cut off on both sides: keep the token and hold again.
-            self.emit("token.keep")
-            self.has_token = False
-            self._take_token(self.token_dir, frm=self.name)
+            # Cut off on both sides: keep the token, holding it again and again; say so once.
+            if not self._isolated:
+                self._isolated = True
+                self.emit("token.keep")
+            self._arm_watch(self.train.cfg.timing.token_loss_us)
+            self.hold_token()
+            self._hold = self.kernel.call_later(self.train.cfg.timing.token_hold_us, self._pass_token)
             return
+        self._isolated = False
         self.has_token = False
         nxt = self.neighbour(direction)
         self.emit("token.pass", to=nxt.name, dir=direction, reversed=reversed_)
@@ -264,6 +269,10 @@ class RingNode:
         self.block_total = len(blocks)
         self.block_sent = 0
         self.emit("block.queued", at=f"{self.name}.CPU3", blocks=len(blocks), bytes=len(data))
+
+    @property
+    def block_busy(self) -> bool:
+        return self._block_timer is not None
 
     def start_blocks(self) -> None:
         if self._block_timer is None and self.pending_blocks:

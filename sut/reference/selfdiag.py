@@ -36,8 +36,9 @@ class SelfDiagLine:
         self._queue(("command", sender, fields, data + crc16_x25(data).to_bytes(2, "little")))
 
     def send_status(self, sender: str, src: int, fields: dict) -> None:
-        """Only a faulty variant calls this (NET-04 says the line carries commands only)."""
-        if self.board.alive:
+        """Only a faulty variant calls this (NET-04 says the line carries commands only); it talks
+        politely, only on an idle line."""
+        if self.board.alive and not self.queue and self.busy_until <= self.train.kernel.now:
             self._queue(("status", sender, dict(fields, src=src), bytes(240)))
 
     def _queue(self, item: tuple) -> None:

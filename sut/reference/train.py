@@ -115,6 +115,10 @@ class Train:
     def block_grant_for(self, node: RingNode) -> int:
         if node is not self.block_master():
             return 0
+        if node.pending_blocks and node.number != self.block_granted and node.number not in self.block_queue:
+            self.block_queue.append(node.number)          # the master's own records queue like any other
+        if self.block_granted == node.number and not node.pending_blocks and not node.block_busy:
+            self.block_granted = 0
         if self.block_granted == 0 and self.block_queue:
             self.block_granted = self.block_queue.pop(0)
             self.emit(f"{node.name}.CPU3", "block.grant", node=self.node_by_number(self.block_granted).name)

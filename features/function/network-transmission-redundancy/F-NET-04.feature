@@ -22,6 +22,7 @@ Feature: F-NET-04 Whole ring down: the self-diagnostic line carries control comm
     When every ring link is cut
     And 2 s pass
     Then the cab 1 monitor receives no status data from other nodes after 5 ms
+    And the cab 8 monitor receives no status data from other nodes after 5 ms
 
   @req:NET-04
   Scenario: F-NET-04 No block data is transferred without the ring

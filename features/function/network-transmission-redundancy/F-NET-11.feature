@@ -8,5 +8,5 @@ Feature: F-NET-11 Status data: every car broadcasts 240 bytes once per 120 ms cy
     And an analyser is attached to the ring link between "car1.LCU" and "car2.LCU"
     And the train has been powered up for 1000 ms
     When 2 s pass
-    Then the cab 1 monitor receives status data from every other node every 117 to 123 ms
+    Then the cab 1 monitor receives status data from every other node every 115 to 125 ms
     And every status frame on the analysed link carries 240 bytes of data

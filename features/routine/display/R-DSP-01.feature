@@ -11,8 +11,8 @@ Feature: R-DSP-01 Status data of every car shown on the cab monitor
   @req:PRO-02 @req:TST-03
   Scenario: R-DSP-01 The cab monitor receives every node's status data once per 120 ms cycle
     When 2 s pass
-    Then the cab 1 monitor receives status data from every other node every 117 to 123 ms
-    And the cab 8 monitor receives status data from every other node every 117 to 123 ms
+    Then the cab 1 monitor receives status data from every other node every 115 to 125 ms
+    And the cab 8 monitor receives status data from every other node every 115 to 125 ms
     And the cab 1 monitor shows no faults
 
   @req:PRO-02 @req:TST-03

@@ -1,0 +1,179 @@
+"""Variants of the reference train for the suite's own tests (DEVELOPERS.md: "that pair is how we know a
+feature specifies the right thing").
+
+Faulty variants break exactly one requirement each; the features must reject them. In-band variants differ
+from the reference only where the requirements leave room; the features must accept them. Each is a
+subclass that changes parameters: the reference's code is never edited at run time.
+"""
+from __future__ import annotations
+
+from sut.reference.backend import ReferenceTrain
+
+MS = 1000
+
+
+# -- faulty: (requirement broken, test item that must catch it) -------------------------------------
+class SlowTakeover(ReferenceTrain):
+    """RED-02: system 2 waits 100 ms, not 50 ms, before it takes over."""
+    TIMING = {"takeover_us": 100 * MS}
+
+
+class StandbyTransmits(ReferenceTrain):
+    """RED-02: system 2 transmits although system 1 is healthy."""
+    BEHAVIOUR = {"standby_transmits": True}
+
+
+class LongTokenHold(ReferenceTrain):
+    """PRO-04: each node holds the token 20 ms."""
+    TIMING = {"token_hold_us": 20 * MS}
+
+
+class NoTokenReversal(ReferenceTrain):
+    """PRO-04: the node at a fault passes the token into the fault instead of sending it back."""
+    BEHAVIOUR = {"token_reversal": False}
+
+
+class FullNotchesOnDigitalOutputs(ReferenceTrain):
+    """CMD-03: the RXC's digital outputs carry full notches on paths 2 and 3."""
+    BEHAVIOUR = {"do_steps_only": False}
+
+
+class NoReverseRouting(ReferenceTrain):
+    """NET-03: broadcasts go one way round the ring only, so one cut strands the nodes behind it."""
+    BEHAVIOUR = {"reverse_routing": False}
+
+
+class TxcWithoutCompare(ReferenceTrain):
+    """FS-02: the TXC transmits although its CPU groups disagree."""
+    BEHAVIOUR = {"txc_compare": False}
+
+
+class StatusOnSelfDiagnosticLine(ReferenceTrain):
+    """NET-04: nodes cut off from the ring send their status data on the self-diagnostic line."""
+    BEHAVIOUR = {"selfdiag_commands_only": False}
+
+
+class NoFrameCheck(ReferenceTrain):
+    """NET-05: nodes forward and use frames with a bad check sequence."""
+    BEHAVIOUR = {"frame_check": False}
+
+
+class FifoQueues(ReferenceTrain):
+    """NET-06: frames leave a node in arrival order, commands queue behind status and block data."""
+    BEHAVIOUR = {"priorities": False}
+
+
+class DeadInputReleasesBrake(ReferenceTrain):
+    """FS-03: TXC inputs in plain logic: a dead desk input reads as 'no brake'."""
+    BEHAVIOUR = {"txc_inverted_inputs": False}
+
+
+class LampsFromOneTxc(ReferenceTrain):
+    """RED-03: only system 1's TXC drives the cab lamps."""
+    BEHAVIOUR = {"lamps_parallel": False}
+
+
+class CommandsThroughCpu3(ReferenceTrain):
+    """CMD-01: the LCU hands commands on through CPU3, so a dead CPU3 stops them."""
+    BEHAVIOUR = {"cmd_bypass_cpu3": False}
+
+
+class BlocksWithoutGrant(ReferenceTrain):
+    """PRO-06: a node sends its blocks as soon as it has them, without waiting for the grant."""
+    BEHAVIOUR = {"block_grant_required": False}
+
+
+class CrowdedBlocks(ReferenceTrain):
+    """PRO-06: consecutive blocks 5 ms apart."""
+    TIMING = {"block_spacing_us": 5 * MS}
+
+
+class LateTokenInit(ReferenceTrain):
+    """PRO-03: nodes wait 1 s of silence after power-up before the token initialisation."""
+    TIMING = {"init_silence_us": 1000 * MS}
+
+
+class SlowFormation(ReferenceTrain):
+    """PRO-03: token formed at node number x 40 ms."""
+    TIMING = {"formation_step_us": 40 * MS}
+
+
+class LateRegeneration(ReferenceTrain):
+    """PRO-05: a node waits 1 s without a token before it re-initialises."""
+    TIMING = {"token_loss_us": 1000 * MS}
+
+
+class SlowPassThrough(ReferenceTrain):
+    """PRO-01: each node holds a frame 0.5 ms on its way."""
+    TIMING = {"pass_through_us": 500}
+
+
+class HurriedCommands(ReferenceTrain):
+    """PRO-01: commands every 5 ms, below the 10 ms minimum interval."""
+    TIMING = {"command_interval_us": 5 * MS}
+
+
+class SlowPolling(ReferenceTrain):
+    """NET-09: CI and BCU polled every 20 ms."""
+    TIMING = {"poll_us": 20 * MS}
+
+
+class HalfRateRing(ReferenceTrain):
+    """NET-07: the ring runs at 1.25 Mbit/s."""
+    TIMING = {"bitrate": 1_250_000}
+
+
+class NoSelfDiagnosticFallback(ReferenceTrain):
+    """CMD-04: the RXC never trusts the self-diagnostic line (its fallback never comes in a run)."""
+    TIMING = {"rxc_fallback_us": 3_600_000 * MS}
+
+
+# -- in band: differ only where the requirements leave room ------------------------------------------
+class HoldCountedToSend(ReferenceTrain):
+    """Holds 10 ms from receiving the token to sending it: the neighbour has it 10.25 ms later."""
+    TIMING = {"token_hold_us": 10 * MS + 250}
+
+
+class FasterNodes(ReferenceTrain):
+    """Pass-through 0.2 ms and a 0.2 ms TXC loop: faster than the articles require."""
+    TIMING = {"pass_through_us": 200, "txc_loop_us": 200, "rxc_loop_us": 200}
+
+
+class CommandsEvery12ms(ReferenceTrain):
+    """Commands every 12 ms: above the 10 ms minimum; the takeover band follows the interval."""
+    TIMING = {"command_interval_us": 12 * MS}
+
+
+class EarlierFallback(ReferenceTrain):
+    """The RXC trusts the self-diagnostic line after 40 ms without ring commands (a project decision)."""
+    TIMING = {"rxc_fallback_us": 40 * MS}
+
+
+FAULTY = [
+    # (variant, requirement it breaks, test item that must reject it)
+    (SlowTakeover, "RED-02", "F-NET-17"),
+    (StandbyTransmits, "RED-02", "F-NET-17"),
+    (LongTokenHold, "PRO-04", "F-NET-13"),
+    (NoTokenReversal, "PRO-04", "F-NET-13"),
+    (FullNotchesOnDigitalOutputs, "CMD-03", "F-NET-16"),
+    (NoReverseRouting, "NET-03", "F-NET-02"),
+    (TxcWithoutCompare, "FS-02", "F-NET-19"),
+    (StatusOnSelfDiagnosticLine, "NET-04", "F-NET-04"),
+    (NoFrameCheck, "NET-05", "F-NET-05"),
+    (FifoQueues, "NET-06", "F-NET-06"),
+    (DeadInputReleasesBrake, "FS-03", "F-NET-19"),
+    (LampsFromOneTxc, "RED-03", "F-NET-18"),
+    (CommandsThroughCpu3, "CMD-01", "F-NET-16"),
+    (BlocksWithoutGrant, "PRO-06", "F-NET-15"),
+    (CrowdedBlocks, "PRO-06", "F-NET-15"),
+    (LateTokenInit, "PRO-03", "F-NET-12"),
+    (SlowFormation, "PRO-03", "F-NET-12"),
+    (LateRegeneration, "PRO-05", "F-NET-14"),
+    (SlowPassThrough, "PRO-01", "F-NET-10"),
+    (HurriedCommands, "PRO-01", "F-NET-10"),
+    (SlowPolling, "NET-09", "F-NET-09"),
+    (HalfRateRing, "NET-07", "F-NET-07"),
+    (NoSelfDiagnosticFallback, "CMD-04", "F-NET-04"),
+]
+
+IN_BAND = [HoldCountedToSend, FasterNodes, CommandsEvery12ms, EarlierFallback]
