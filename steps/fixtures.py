@@ -19,12 +19,20 @@ def pytest_addoption(parser: pytest.Parser) -> None:
                          f"(default: ${ENV_VAR} or 'reference')")
 
 
+_SUT_CLASS = pytest.StashKey[type]()
+
+
+def pytest_configure(config: pytest.Config) -> None:
+    # Resolve the backend before collection, so a wrong --sut is a usage error (exit 4), not N failures.
+    try:
+        config.stash[_SUT_CLASS] = resolve(config.getoption("--sut"))
+    except Exception as exc:
+        raise pytest.UsageError(f"--sut: {exc}") from None
+
+
 @pytest.fixture(scope="session")
 def sut_class(request: pytest.FixtureRequest) -> type[TrainDriver]:
-    try:
-        return resolve(request.config.getoption("--sut"))
-    except Exception as exc:
-        raise pytest.UsageError(str(exc)) from None
+    return request.config.stash[_SUT_CLASS]
 
 
 @pytest.fixture

@@ -1,6 +1,7 @@
 """Errors a SUT driver raises for bad input: each names the value and what would have been allowed."""
 from __future__ import annotations
 
+import difflib
 from typing import Any, Iterable
 
 
@@ -11,8 +12,10 @@ class SutError(Exception):
 class UnknownName(SutError):
     def __init__(self, what: str, name: str, known: Iterable[str]):
         known = sorted(known)
+        close = difflib.get_close_matches(name, known, n=4, cutoff=0.6)
+        hint = f"; did you mean {', '.join(close)}?" if close else ""
         shown = ", ".join(known[:24]) + (f", ... ({len(known)} in all)" if len(known) > 24 else "")
-        super().__init__(f"no {what} named {name!r}; known: {shown}")
+        super().__init__(f"no {what} named {name!r}{hint}; known: {shown}")
         self.what, self.name, self.known = what, name, known
 
 

@@ -97,8 +97,12 @@ def decode_pac(wire: bytes) -> tuple[int, int, bytes]:
     """(sid, did, data) of a packet; FrameError on a bad layout or check sequence."""
     if len(wire) < 8 or wire[0] != SOH:
         raise FrameError(f"not an ARCNET packet: {len(wire)} bytes starting {wire[:1].hex() or 'nothing'}")
+    long = wire[4] == 0
+    declared = (512 - wire[5]) + 8 if long else (256 - wire[4]) + 7
+    if len(wire) != declared:
+        raise FrameError(f"ARCNET packet length byte says {declared} bytes, the frame has {len(wire)}")
     try:
-        pac = (PAC_LONG if wire[4] == 0 else PAC_SHORT).parse(wire)
+        pac = (PAC_LONG if long else PAC_SHORT).parse(wire)
     except ConstructError as exc:
         raise FrameError(f"ARCNET packet layout: {exc}") from None
     if pac.did != pac.did2:
@@ -111,6 +115,8 @@ def decode_pac(wire: bytes) -> tuple[int, int, bytes]:
 
 def check_ok(wire: bytes) -> bool:
     """The node's frame check: layout and CRC (what NET-05 discards on)."""
+    if not wire:
+        return False
     if wire[0] == EOT:
         return len(wire) == 3 and wire[1] == wire[2]
     try:

@@ -1,9 +1,10 @@
 """A small discrete-event kernel in integer microseconds (SimPy-shaped, no wall clock).
 
-Why our own and not SimPy: the reference mostly reacts to frame arrivals with plain callbacks, and
-`bench/kernel_bench.py` shows a callback heap is several times faster than SimPy's event objects for
-that load (figures in DECISIONS.md). Processes that read like behaviour (TXC sampling, watchdogs) are
-still written as generators: they `yield` a delay in microseconds or a `Signal` to wait for.
+Why our own and not SimPy: `bench/kernel_bench.py` runs the same ring load on both (figures in
+DECISIONS.md). SimPy is no faster, and ours keeps what the model needs that SimPy does not give directly:
+integer microseconds end to end, cancellable timers (token watchdogs are re-armed on every status frame),
+and one place to add bulk advance. Processes that read like behaviour can still be generators: they
+`yield` a delay in microseconds or a `Signal` to wait for.
 
 Ordering: entries are (time, priority, sequence). The sequence counter makes ties deterministic, so two
 runs with the same inputs give the same trace.
@@ -61,33 +62,38 @@ class Signal:
 
     def __init__(self, kernel: "Kernel"):
         self.kernel = kernel
-        self._waiters: list[Process] = []
+        self._waiters: list[tuple[Process, int]] = []
 
     def fire(self, value: Any = None) -> None:
         waiters, self._waiters = self._waiters, []
-        for proc in waiters:
-            self.kernel.call_later(0, proc._resume, value, prio=URGENT)
+        for proc, wait in waiters:
+            self.kernel.call_later(0, proc._resume, wait, value, prio=URGENT)
 
 
 ProcessGen = Generator[Any, Any, Any]
 
 
 class Process:
-    """A generator driven by the kernel: `yield <int us>` sleeps, `yield <Signal>` waits."""
+    """A generator driven by the kernel: `yield <int us>` sleeps, `yield <Signal>` waits.
 
-    __slots__ = ("kernel", "name", "_gen", "_timer", "alive")
+    Every wait gets a number; a wake-up carrying an older number (a timer or signal that an interrupt
+    overtook) is ignored, so a process is never resumed twice for one wait."""
+
+    __slots__ = ("kernel", "name", "_gen", "_timer", "_wait", "alive")
 
     def __init__(self, kernel: "Kernel", gen: ProcessGen, name: str):
         self.kernel = kernel
         self.name = name
         self._gen = gen
         self._timer: Timer | None = None
+        self._wait = 0
         self.alive = True
-        kernel.call_later(0, self._resume, None, prio=URGENT)
+        kernel.call_later(0, self._resume, 0, None, prio=URGENT)
 
-    def _resume(self, value: Any = None, throw: BaseException | None = None) -> None:
-        if not self.alive:
+    def _resume(self, wait: int, value: Any = None, throw: BaseException | None = None) -> None:
+        if not self.alive or wait != self._wait:
             return
+        self._wait += 1
         self._timer = None
         try:
             target = self._gen.throw(throw) if throw is not None else self._gen.send(value)
@@ -101,23 +107,30 @@ class Process:
         except Exception as exc:
             self.alive = False
             raise SimulationError(f"process {self.name} failed at t={self.kernel.now} us: {exc!r}") from exc
-        if isinstance(target, int):
+        if isinstance(target, int) and not isinstance(target, bool):
             if target < 0:
+                self.alive = False
                 raise SimulationError(f"process {self.name} asked for a negative delay {target} us")
-            self._timer = self.kernel.call_later(target, self._resume, None)
+            self._timer = self.kernel.call_later(target, self._resume, self._wait, None)
         elif isinstance(target, Signal):
-            target._waiters.append(self)
+            target._waiters.append((self, self._wait))
         else:
+            self.alive = False
             raise SimulationError(f"process {self.name} yielded {target!r}; expected int us or Signal")
 
     def interrupt(self, cause: Any = None) -> None:
-        """Throw `Interrupt(cause)` into the process at the current time."""
+        """Throw `Interrupt(cause)` into the process at the current time, after anything already due now
+        (so a process not started yet first runs to its first wait, as in SimPy)."""
+        self.kernel.call_later(0, self._interrupt_now, cause, prio=URGENT)
+
+    def _interrupt_now(self, cause: Any) -> None:
         if not self.alive:
             return
         if self._timer is not None:
             self._timer.cancel()
             self._timer = None
-        self.kernel.call_later(0, self._resume, None, Interrupt(cause), prio=URGENT)
+        self._wait += 1          # whatever it was waiting for no longer wakes it
+        self._resume(self._wait, None, Interrupt(cause))
 
     def kill(self) -> None:
         if self._timer is not None:
@@ -161,7 +174,14 @@ class Kernel:
         return timer
 
     def call_later(self, delay: int, fn: Callable, *args: Any, prio: int = NORMAL) -> Timer:
-        return self.call_at(self.now + delay, fn, *args, prio=prio)
+        # The hot path of the model: pushes itself rather than going through call_at (bench/kernel_bench.py).
+        if delay < 0:
+            raise SimulationError(f"cannot schedule in the past: delay {delay} us")
+        at = self.now + delay
+        timer = Timer(at, fn, args)
+        self._seq += 1
+        heapq.heappush(self._heap, (at, prio, self._seq, timer))
+        return timer
 
     def process(self, gen: ProcessGen, name: str = "process") -> Process:
         return Process(self, gen, name)

@@ -1,0 +1,100 @@
+"""Bad input stops with a message that names the value and what is allowed (issue: "Bad input")."""
+from __future__ import annotations
+
+import subprocess
+import sys
+from pathlib import Path
+
+import pytest
+
+from sut.backends import open_backend, resolve
+from sut.errors import NotPoweredUp, OutOfRange, SutError, UnknownName
+
+ROOT = Path(__file__).resolve().parents[1]
+
+
+@pytest.fixture
+def train():
+    driver = open_backend("reference")
+    yield driver
+    driver.shutdown()
+
+
+@pytest.mark.parametrize(("kwargs", "words"), [
+    ({"cars_per_set": 0}, ["cars per set 0", "2..16"]),
+    ({"cars_per_set": 40}, ["cars per set 40", "2..16"]),
+    ({"sets": 3}, ["train sets 3", "1..2"]),
+])
+def test_composition_out_of_range(train, kwargs, words) -> None:
+    with pytest.raises(OutOfRange) as err:
+        train.configure(**kwargs)
+    for word in words:
+        assert word in str(err.value)
+
+
+def test_unknown_board_lists_the_known_ones(train) -> None:
+    with pytest.raises(UnknownName) as err:
+        train.fail("car3.LCU.TXC")
+    text = str(err.value)
+    assert "no board named 'car3.LCU.TXC'" in text and "car3.LCU.RXC" in text
+
+
+@pytest.mark.parametrize(("call", "words"), [
+    (lambda t: t.set_traction(1, 11), ["traction notch 11", "0..10"]),
+    (lambda t: t.set_traction(1, -1), ["traction notch -1", "0..10"]),
+    (lambda t: t.set_brake(1, 9), ["brake step 9", "0..7"]),
+    (lambda t: t.set_direction(1, "sideways"), ["direction 'sideways'", "forward"]),
+    (lambda t: t.insert_key(3), ["cab car 3", "1, 8"]),
+    (lambda t: t.corrupt_frames("car1.LCU", "car2.LCU", "command", 0), ["frame count 0", ">= 1"]),
+    (lambda t: t.request_block_transfer("car2.LCU", b""), ["block record size 0"]),
+])
+def test_values_out_of_range(train, call, words) -> None:
+    with pytest.raises(OutOfRange) as err:
+        call(train)
+    for word in words:
+        assert word in str(err.value)
+
+
+@pytest.mark.parametrize(("call", "what"), [
+    (lambda t: t.cut_link("car1.LCU", "car3.LCU"), "ring span"),
+    (lambda t: t.cut_link("car1.LCU", "car9.LCU"), "ring node"),
+    (lambda t: t.power_off("car3.CCU.sys1"), "power supply"),
+    (lambda t: t.corrupt_frames("car1.LCU", "car2.LCU", "telegram"), "frame kind"),
+    (lambda t: t.lamp(1, "horn"), "cab lamp"),
+])
+def test_unknown_names(train, call, what) -> None:
+    with pytest.raises(UnknownName) as err:
+        call(train)
+    assert f"no {what} named" in str(err.value) and "known:" in str(err.value)
+
+
+def test_time_cannot_run_backwards(train) -> None:
+    train.power_on()
+    with pytest.raises(OutOfRange, match="time step -1"):
+        train.advance(-1)
+
+
+def test_time_needs_power(train) -> None:
+    with pytest.raises(NotPoweredUp):
+        train.advance(1000)
+
+
+def test_composition_is_fixed_once_the_train_exists(train) -> None:
+    train.fail("car2.LCU.CPU3")
+    with pytest.raises(SutError, match="configure the composition before"):
+        train.configure(sets=2)
+
+
+def test_unknown_backend() -> None:
+    with pytest.raises(UnknownName, match="no SUT backend named 'rig42'"):
+        resolve("rig42")
+    with pytest.raises(SutError, match="not a TrainDriver subclass"):
+        resolve("sut.errors:SutError")
+
+
+def test_unknown_backend_on_the_command_line_is_a_usage_error() -> None:
+    result = subprocess.run([sys.executable, "-m", "pytest", "features", "--sut", "rig42", "-q",
+                             "-p", "no:cacheprovider", "--item", "F-NET-07"],
+                            cwd=ROOT, capture_output=True, text=True, timeout=300)
+    assert result.returncode == 4, result.stdout[-2000:] + result.stderr[-2000:]
+    assert "no SUT backend named 'rig42'" in result.stdout + result.stderr

@@ -1,0 +1,385 @@
+"""The reference model's discrete-event kernel (sut/reference/kernel.py): ordering, cancellation, time,
+processes, signals, interrupts, failures, periodic activities, and whole-model determinism."""
+
+from __future__ import annotations
+
+import pytest
+from hypothesis import given, settings
+from hypothesis import strategies as st
+
+from sut.reference.kernel import LATE, NORMAL, URGENT, Interrupt, Kernel, SimulationError
+
+
+@pytest.fixture
+def k() -> Kernel:
+    return Kernel()
+
+
+# -- ordering -------------------------------------------------------------------------------------
+def test_equal_time_callbacks_run_in_scheduling_order(k):
+    log = []
+    for i in range(50):
+        k.call_at(100, log.append, i)
+    k.run(100)
+    assert log == list(range(50))
+
+
+def test_order_is_time_then_priority_then_sequence(k):
+    log = []
+    k.call_at(20, log.append, "t20-urgent", prio=URGENT)
+    k.call_at(10, log.append, "t10-late-1", prio=LATE)
+    k.call_at(10, log.append, "t10-normal-1")
+    k.call_at(10, log.append, "t10-urgent", prio=URGENT)
+    k.call_at(10, log.append, "t10-normal-2", prio=NORMAL)
+    k.call_at(10, log.append, "t10-late-2", prio=LATE)
+    k.call_at(5, log.append, "t5-late", prio=LATE)
+    k.run(100)
+    assert log == ["t5-late", "t10-urgent", "t10-normal-1", "t10-normal-2", "t10-late-1", "t10-late-2",
+                   "t20-urgent"]
+
+
+@settings(deadline=None)
+@given(st.lists(st.tuples(st.integers(0, 50), st.sampled_from([URGENT, NORMAL, LATE])), max_size=60))
+def test_ordering_property(entries):
+    k = Kernel()
+    log = []
+    for seq, (at, prio) in enumerate(entries):
+        k.call_at(at, lambda a=at, p=prio, s=seq: log.append((a, p, s)), prio=prio)
+    k.run(50)
+    assert log == sorted(log)
+    assert len(log) == len(entries)
+
+
+def test_callback_scheduled_for_now_runs_after_those_already_due(k):
+    log = []
+
+    def first():
+        log.append(("first", k.now))
+        k.call_later(0, lambda: log.append(("later0", k.now)))
+
+    k.call_at(10, first)
+    k.call_at(10, lambda: log.append(("second", k.now)))
+    k.run(10)
+    assert log == [("first", 10), ("second", 10), ("later0", 10)]
+
+
+# -- cancellation ---------------------------------------------------------------------------------
+def test_cancelled_timers_never_run(k):
+    log = []
+    keep = k.call_at(10, log.append, "keep")
+    drop = k.call_at(10, log.append, "drop")
+    assert drop.pending
+    drop.cancel()
+    assert not drop.pending and keep.pending
+    k.run(1_000)
+    assert log == ["keep"]
+    assert k.events == 1
+
+
+def test_cancel_from_an_earlier_callback_at_the_same_time(k):
+    log = []
+    victim = k.call_at(10, log.append, "victim")
+    k.call_at(10, victim.cancel, prio=URGENT)
+    k.run(10)
+    assert log == []
+
+
+def test_cancel_after_run_is_harmless_and_peek_skips_cancelled(k):
+    t1 = k.call_at(5, lambda: None)
+    t2 = k.call_at(7, lambda: None)
+    t1.cancel()
+    assert k.peek() == 7
+    assert list(k.pending()) == [t2]
+    k.run(10)
+    t2.cancel()
+    assert k.peek() is None
+
+
+# -- virtual time ---------------------------------------------------------------------------------
+def test_run_until_is_resumable_and_sets_now(k):
+    seen = []
+    for at in (0, 10, 20, 30):
+        k.call_at(at, lambda: seen.append(k.now))
+    k.run(15)
+    assert seen == [0, 10] and k.now == 15
+    k.run(15)                       # running to now again is a no-op
+    assert seen == [0, 10] and k.now == 15
+    k.run(20)                       # events at exactly `until` run
+    assert seen == [0, 10, 20] and k.now == 20
+    k.run(1_000_000)
+    assert seen == [0, 10, 20, 30] and k.now == 1_000_000
+
+
+def test_run_on_an_empty_kernel_still_advances(k):
+    k.run(12_345)
+    assert k.now == 12_345
+
+
+def test_cannot_run_back_in_time(k):
+    k.run(100)
+    with pytest.raises(SimulationError, match="back in time"):
+        k.run(99)
+
+
+def test_scheduling_in_the_past_raises(k):
+    k.run(100)
+    with pytest.raises(SimulationError, match="past"):
+        k.call_at(99, lambda: None)
+    with pytest.raises(SimulationError, match="past"):
+        k.call_later(-1, lambda: None)
+    k.call_at(100, lambda: None)    # now itself is fine
+
+
+# -- processes ------------------------------------------------------------------------------------
+def test_process_yielding_ints_sleeps_exactly(k):
+    wakes = []
+    delays = [0, 1, 250, 9_750, 10_000, 3, 1_000_000]
+
+    def proc():
+        for d in delays:
+            before = k.now
+            yield d
+            wakes.append(k.now - before)
+
+    p = k.process(proc(), "sleeper")
+    k.run(sum(delays) + 10)
+    assert wakes == delays
+    assert not p.alive
+
+
+def test_process_starts_at_creation_time(k):
+    started = []
+    k.run(500)
+
+    def proc():
+        started.append(k.now)
+        yield 1
+
+    k.process(proc(), "late-starter")
+    k.run(500)
+    assert started == [500]
+
+
+def test_process_waiting_on_a_signal_resumes_when_fired(k):
+    sig = k.signal()
+    got = []
+
+    def waiter(tag):
+        value = yield sig
+        got.append((tag, k.now, value))
+
+    k.process(waiter("a"), "a")
+    k.process(waiter("b"), "b")
+    k.call_at(1_234, sig.fire, "light")
+    k.run(1_233)
+    assert got == []
+    k.run(5_000)
+    assert got == [("a", 1_234, "light"), ("b", 1_234, "light")]
+
+
+def test_signal_is_not_latched_and_resumes_urgently(k):
+    sig = k.signal()
+    got = []
+
+    def waiter():
+        yield 8                     # not waiting yet when the first fire happens
+        while True:
+            value = yield sig
+            got.append((k.now, value))
+
+    k.process(waiter(), "w")
+    k.call_at(5, sig.fire, 0)       # nobody waiting: lost, a Signal is not a latch
+    k.call_at(10, sig.fire, 1)
+    # The resume is URGENT, so it runs before this NORMAL callback at the same instant and the waiter
+    # has re-armed in time to see the second fire too.
+    k.call_at(10, sig.fire, 2)
+    k.call_at(20, sig.fire, 3)
+    k.run(100)
+    assert got == [(10, 1), (10, 2), (20, 3)]
+
+
+def test_yielding_something_else_is_an_error(k):
+    def proc():
+        yield 1.5
+
+    k.process(proc(), "floaty")
+    with pytest.raises(SimulationError, match="floaty"):
+        k.run(10)
+
+
+def test_interrupt_carries_its_cause_and_can_be_caught(k):
+    log = []
+
+    def proc():
+        try:
+            yield 1_000
+            log.append("slept through")
+        except Interrupt as exc:
+            log.append(("interrupted", k.now, exc.cause))
+        yield 50
+        log.append(("after", k.now))
+
+    p = k.process(proc(), "watchdog")
+    k.call_at(300, p.interrupt, "power loss")
+    k.run(5_000)
+    assert log == [("interrupted", 300, "power loss"), ("after", 350)]
+    assert not p.alive
+
+
+def test_uncaught_interrupt_ends_the_process_quietly(k):
+    log = []
+
+    def proc():
+        yield 1_000
+        log.append("never")
+
+    p = k.process(proc(), "board")
+    k.call_at(10, p.interrupt, "cut")
+    k.run(5_000)
+    assert log == [] and not p.alive
+    p.interrupt("again")            # interrupting a dead process is a no-op
+    k.run(6_000)
+
+
+def test_interrupt_cause_defaults_to_none():
+    assert Interrupt().cause is None
+    assert Interrupt("x").cause == "x"
+
+
+def test_interrupt_while_waiting_on_a_signal(k):
+    sig = k.signal()
+    log = []
+
+    def proc():
+        try:
+            yield sig
+            log.append(("signal", k.now))
+        except Interrupt as exc:
+            log.append(("interrupted", k.now, exc.cause))
+        yield 100
+        log.append(("woke", k.now))
+        yield 1_000
+        log.append(("woke again", k.now))
+
+    p = k.process(proc(), "waiter")
+    k.call_at(10, p.interrupt, "power")
+    k.call_at(50, sig.fire, "late light")
+    k.run(5_000)
+    # got: [("interrupted", 10, "power"), ("woke", 50), ("woke again", 110)]
+    assert log == [("interrupted", 10, "power"), ("woke", 110), ("woke again", 1_110)]
+
+
+def test_interrupt_before_the_process_has_started(k):
+    log = []
+
+    def proc():
+        try:
+            yield 100
+            log.append(("slept", k.now))
+        except Interrupt as exc:
+            log.append(("interrupted", k.now, exc.cause))
+        yield 300
+        log.append(("woke", k.now))
+        yield 1_000
+        log.append(("woke again", k.now))
+
+    p = k.process(proc(), "early")
+    p.interrupt("at once")
+    k.run(5_000)
+    # got: [("interrupted", 0, "at once"), ("woke", 100), ("woke again", 300)]
+    assert log == [("interrupted", 0, "at once"), ("woke", 300), ("woke again", 1_300)]
+
+
+def test_kill_stops_a_sleeping_process(k):
+    log = []
+
+    def proc():
+        yield 100
+        log.append("ran")
+
+    p = k.process(proc(), "victim")
+    k.run(50)
+    p.kill()
+    k.run(500)
+    assert log == [] and not p.alive
+
+
+def test_exception_in_a_process_surfaces_naming_the_process(k):
+    def proc():
+        yield 5
+        raise KeyError("boom")
+
+    k.process(proc(), "car3.CCU.sys1.TXC.sampler")
+    with pytest.raises(SimulationError, match=r"car3\.CCU\.sys1\.TXC\.sampler.*t=5 us.*boom") as info:
+        k.run(100)
+    assert isinstance(info.value.__cause__, KeyError)
+
+
+def test_negative_delay_is_an_error_naming_the_process(k):
+    def proc():
+        yield -1
+
+    k.process(proc(), "backwards")
+    with pytest.raises(SimulationError, match="backwards.*negative"):
+        k.run(10)
+
+
+# -- periodic activities --------------------------------------------------------------------------
+def test_every_ticks_at_exact_multiples_over_many_ticks(k):
+    ticks = []
+    k.every(250, lambda: ticks.append(k.now), phase=17)
+    n = 100_000
+    k.run(17 + 250 * (n - 1))
+    assert len(ticks) == n
+    assert ticks == list(range(17, 17 + 250 * n, 250))
+    assert k.now == 17 + 250 * (n - 1)
+
+
+def test_every_starts_now_by_default_and_can_stop(k):
+    k.run(1_000)
+    ticks = []
+    cyc = k.every(10_000, lambda: ticks.append(k.now))
+    k.run(31_000)
+    assert ticks == [1_000, 11_000, 21_000, 31_000]
+    k.stop_cyclic(cyc)
+    k.run(100_000)
+    assert ticks == [1_000, 11_000, 21_000, 31_000]
+
+
+def test_every_can_stop_itself_from_its_tick(k):
+    ticks = []
+    cyc = None
+
+    def tick():
+        ticks.append(k.now)
+        if len(ticks) == 3:
+            k.stop_cyclic(cyc)
+
+    cyc = k.every(7, tick)
+    k.run(1_000)
+    assert ticks == [0, 7, 14]
+
+
+def test_every_rejects_non_positive_periods(k):
+    for period in (0, -10):
+        with pytest.raises(SimulationError, match="period"):
+            k.every(period, lambda: None)
+
+
+# -- the whole model ------------------------------------------------------------------------------
+def _reference_trace_csv(us: int) -> tuple[str, int]:
+    from sut.reference.backend import ReferenceTrain
+
+    driver = ReferenceTrain()
+    driver.insert_key(1)
+    driver.power_on()
+    driver.advance(us)
+    return driver.trace.to_csv(), driver.train.kernel.events
+
+
+def test_two_identical_reference_runs_give_identical_traces():
+    first, events1 = _reference_trace_csv(3_000_000)
+    second, events2 = _reference_trace_csv(3_000_000)
+    assert events1 == events2 and events1 > 1_000
+    assert first.count("\n") > 1_000, "the run should have produced a real trace"
+    assert first == second
