@@ -1,0 +1,62 @@
+# CRH2 conformance suite. `make` alone lists the targets.
+#   PYTEST_ARGS="..."  extra pytest arguments for the conformance run, e.g. PYTEST_ARGS="--item F-NET-03 -x"
+#   SUT=...            backend for --sut (reference, or package.module:Class); unset = the suite's default
+
+.DEFAULT_GOAL := help
+SHELL := bash
+
+PYTHON ?= python3
+VENV := .venv
+PY := $(VENV)/bin/python
+VENV_STAMP := $(VENV)/.installed
+NODE_STAMP := node_modules/.installed
+RESULTS := reports/allure-results
+HTML := reports/html
+
+PYTEST_ARGS ?=
+SUT ?=
+SUT_ARG := $(if $(SUT),--sut $(SUT))
+
+.PHONY: help report test check trace clean distclean
+
+help: ## list the targets
+	@echo "CRH2 conformance suite (PYTEST_ARGS=... and SUT=... pass through to pytest)"
+	@grep -E '^[a-z][a-z-]*:.*## ' $(MAKEFILE_LIST) | sed -E 's/^([a-z-]+):.*## (.*)/  make \1\t\2/' | expand -t 20
+
+report: $(VENV_STAMP) $(NODE_STAMP) ## run every feature, build reports/html/index.html, print a summary
+	@rm -rf $(RESULTS) $(HTML) && mkdir -p $(RESULTS)
+	@# Keep pytest's status, still build the report, exit with that status at the end.
+	@$(PY) -m pytest features --alluredir $(RESULTS) $(SUT_ARG) $(PYTEST_ARGS); status=$$?; \
+	npx --no-install allure generate $(RESULTS) --output $(HTML) >/dev/null || exit $$?; \
+	$(PY) -m outline.allure_html $(HTML)/index.html; \
+	echo "report: $(HTML)/index.html"; \
+	$(PY) -m outline.summary $(RESULTS); \
+	exit $$status
+
+test: $(VENV_STAMP) ## the project's own tests, then the whole conformance run; fails if either fails
+	@$(PY) -m pytest tests; t=$$?; \
+	$(PY) -m pytest features $(SUT_ARG) $(PYTEST_ARGS); f=$$?; \
+	echo "make test: tests exit $$t, conformance run exit $$f"; \
+	[ $$t -eq 0 ] && [ $$f -eq 0 ]
+
+check: $(VENV_STAMP) ## python -m outline check: registry, features, steps and requirements agree
+	$(PY) -m outline check
+
+trace: $(VENV_STAMP) ## python -m outline trace: requirement <-> item <-> scenario tables
+	$(PY) -m outline trace $(if $(wildcard $(RESULTS)),--results $(RESULTS))
+
+clean: ## remove reports and caches (keeps .venv and node_modules)
+	rm -rf $(RESULTS) $(HTML) .pytest_cache .hypothesis
+	find . -name __pycache__ -type d -not -path './$(VENV)/*' -not -path './node_modules/*' -prune -exec rm -rf {} +
+
+distclean: clean ## also remove .venv and node_modules
+	rm -rf $(VENV) node_modules *.egg-info
+
+$(VENV_STAMP): pyproject.toml
+	test -x $(PY) || $(PYTHON) -m venv $(VENV)
+	$(PY) -m pip install --quiet -e .
+	touch $@
+
+$(NODE_STAMP): package.json package-lock.json
+	npm ci --no-audit --no-fund --loglevel=error
+	touch $@

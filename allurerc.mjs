@@ -1,0 +1,16 @@
+// Allure 3 configuration, read by `npx allure generate` from the repository root (see `make report`).
+export default {
+  name: "CRH2 conformance",
+  output: "./reports/html",
+  plugins: {
+    awesome: {
+      options: {
+        reportName: "CRH2 conformance",
+        // One self-contained index.html: opened from disk (file://) it cannot fetch separate data files.
+        singleFile: true,
+        // Tree = test outline: class -> category -> item (labels set by outline/pytest_plugin.py).
+        groupBy: ["epic", "feature", "story"],
+      },
+    },
+  },
+};

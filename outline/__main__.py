@@ -1,0 +1,70 @@
+"""python -m outline {check,trace}: consistency and traceability of the test outline."""
+
+from __future__ import annotations
+
+import argparse
+import sys
+
+from .paths import REPO, Tree
+
+
+def _step_modules(tree: Tree, given: list[str] | None) -> list[str]:
+    if given:
+        return given
+    sys.path.insert(0, str(tree.root))
+    from steps import STEP_MODULES
+
+    return list(STEP_MODULES)
+
+
+def main(argv: list[str] | None = None) -> int:
+    parser = argparse.ArgumentParser(
+        prog="python -m outline",
+        description="Test-outline tools: the registry (features/registry.yaml), the feature files, the step "
+        "library and docs/requirements.md must agree.",
+    )
+    parser.add_argument("--root", default=str(REPO.root), help="repository root (default: %(default)s)")
+    sub = parser.add_subparsers(dest="command", required=True, metavar="{check,trace}")
+
+    check = sub.add_parser(
+        "check",
+        help="fail on any inconsistency, one 'file:line: problem' line each",
+        description="Fail (exit 1) when a feature file and the registry disagree (unlisted or missing files, "
+        "misplaced files, @item/@req tags vs registry, undefined requirement IDs, titles not starting "
+        "with the item ID, duplicate titles), when a step matches no step definition or several, or when "
+        "a required_coverage ID is carried by no scenario. Warns when docs/requirements.md differs from "
+        "the shared copy.",
+    )
+    check.add_argument(
+        "--step-module",
+        action="append",
+        metavar="MODULE",
+        help="step-definition module to load (repeatable; default: steps.STEP_MODULES)",
+    )
+    check.add_argument("--no-steps", action="store_true", help="skip matching steps to step definitions")
+
+    trace = sub.add_parser(
+        "trace",
+        help="print requirement -> items -> scenarios, item -> requirements, uncovered IDs",
+        description="Traceability tables, from the scenarios' @req tags and the registry's partly notes. "
+        "Rich tables on a terminal, tab-separated text otherwise.",
+    )
+    trace.add_argument("--results", metavar="DIR", help="allure results directory: show each scenario's last status")
+
+    args = parser.parse_args(argv)
+    tree = Tree.at(args.root)
+    if args.command == "check":
+        from .check import run
+
+        return run(tree, None if args.no_steps else _step_modules(tree, args.step_module))
+    from .trace import run
+
+    return run(tree, args.results)
+
+
+if __name__ == "__main__":
+    try:
+        sys.exit(main())
+    except BrokenPipeError:  # `python -m outline trace | head`: the reader left, nothing more to say
+        sys.stderr.close()
+        sys.exit(1)

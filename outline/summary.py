@@ -1,0 +1,104 @@
+"""One-line verdict of a run from its allure results: `python -m outline.summary reports/allure-results`.
+
+Reads the `*-result.json` files allure-pytest-bdd writes (one per scenario run), so `make report` can say
+what happened without opening the HTML.
+"""
+
+from __future__ import annotations
+
+import argparse
+import json
+import sys
+from collections import Counter
+from dataclasses import dataclass, field
+from pathlib import Path
+
+STATUSES = ("passed", "failed", "broken", "skipped")
+WORST_FIRST = ("broken", "failed", "unknown", "skipped", "passed")
+
+
+@dataclass
+class Summary:
+    counts: Counter = field(default_factory=Counter)
+    covered: set[str] = field(default_factory=set)  # requirement IDs of passing scenarios
+    touched: set[str] = field(default_factory=set)  # requirement IDs of every scenario that ran
+    not_passed: list[tuple[str, str]] = field(default_factory=list)  # (status, scenario name)
+
+    @property
+    def total(self) -> int:
+        return sum(self.counts.values())
+
+
+def load_results(results_dir: str | Path) -> list[dict]:
+    """Latest result per test (historyId), so a rerun into the same directory does not count twice."""
+    latest: dict[str, dict] = {}
+    for path in sorted(Path(results_dir).glob("*-result.json")):
+        try:
+            data = json.loads(path.read_text(encoding="utf-8"))
+        except (OSError, ValueError):
+            continue
+        key = data.get("historyId") or data.get("uuid") or path.name
+        if key not in latest or data.get("stop", 0) >= latest[key].get("stop", 0):
+            latest[key] = data
+    return list(latest.values())
+
+
+def labels(result: dict, name: str) -> list[str]:
+    return [lab["value"] for lab in result.get("labels", []) if lab.get("name") == name]
+
+
+def statuses_by_name(results: list[dict]) -> dict[str, str]:
+    """Scenario name -> status; scenario outlines (one result per example) report their worst example."""
+    out: dict[str, str] = {}
+    for result in results:
+        name, status = result.get("name", "?"), result.get("status", "unknown")
+        if name not in out or WORST_FIRST.index(status) < WORST_FIRST.index(out[name]):
+            out[name] = status
+    return out
+
+
+def summarize(results: list[dict]) -> Summary:
+    summary = Summary()
+    for result in results:
+        status = result.get("status", "unknown")
+        summary.counts[status] += 1
+        reqs = labels(result, "requirement")
+        summary.touched.update(reqs)
+        if status == "passed":
+            summary.covered.update(reqs)
+        else:
+            summary.not_passed.append((status, result.get("name", "?")))
+    return summary
+
+
+def format_summary(summary: Summary) -> str:
+    parts = [f"{summary.counts.get(s, 0)} {s}" for s in STATUSES]
+    extra = summary.total - sum(summary.counts.get(s, 0) for s in STATUSES)
+    if extra:
+        parts.append(f"{extra} unknown")
+    lines = [
+        f"{summary.total} scenarios: {', '.join(parts)}; "
+        f"{len(summary.covered)} requirement IDs covered by passing scenarios"
+        + (f" (of {len(summary.touched)} exercised)" if summary.touched != summary.covered else "")
+    ]
+    if summary.covered:
+        lines.append("covered: " + " ".join(sorted(summary.covered)))
+    for status, name in sorted(summary.not_passed):
+        if status != "skipped":
+            lines.append(f"{status}: {name}")
+    return "\n".join(lines)
+
+
+def main(argv: list[str] | None = None) -> int:
+    parser = argparse.ArgumentParser(prog="python -m outline.summary", description=__doc__.splitlines()[0])
+    parser.add_argument("results", nargs="?", default="reports/allure-results", help="allure results directory")
+    args = parser.parse_args(argv)
+    if not Path(args.results).is_dir():
+        print(f"no allure results in {args.results}", file=sys.stderr)
+        return 1
+    print(format_summary(summarize(load_results(args.results))))
+    return 0
+
+
+if __name__ == "__main__":
+    sys.exit(main())

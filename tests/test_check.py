@@ -1,0 +1,81 @@
+from pathlib import Path
+
+from outline.check import check_tree
+from outline.paths import Tree
+from outline.stepdefs import definitions_in_modules
+
+from tests.helpers import DATA
+
+
+def test_good_tree_passes(data_on_path):
+    data_on_path("good")
+    result = check_tree(Tree.at(DATA / "good"), definitions_in_modules(["good_steps"]), shared=[])
+    assert result.problems == []
+    assert result.warnings == []
+    assert len(result.features) == 2
+
+
+BAD_EXPECTED = [
+    "features/registry.yaml:9: required coverage: NET-05 is carried by no scenario",
+    "features/registry.yaml:17: item R-CTL-02: feature file features/routine/control/R-CTL-02.feature does not exist",
+    "features/routine/control/R-CTL-01.feature:1: @req tags differ from registry item R-CTL-01 "
+    "(in registry only: PRO-01; in @req tags only: NET-03, XXX-99)",
+    'features/routine/control/R-CTL-01.feature:7: ambiguous step "Then the notch is 3" matches 2 definitions: '
+    "bad_steps:16 ('the notch is {notch:d}'); bad_steps:21 ('the notch is 3')",
+    'features/routine/control/R-CTL-01.feature:10: duplicate scenario title "R-CTL-01 Same title twice" '
+    "(first at line 4); pytest-bdd would silently run only one of them",
+    "features/routine/control/R-CTL-01.feature:13: @req:XXX-99: XXX-99 is not defined in docs/requirements.md",
+    'features/routine/control/R-CTL-01.feature:14: scenario "Title without the item ID" is tagged @item:R-CTL-02; '
+    "the file is item R-CTL-01",
+    'features/routine/control/R-CTL-01.feature:14: scenario title "Title without the item ID" must start with '
+    '"R-CTL-01 "',
+    'features/routine/control/R-CTL-01.feature:18: scenario "R-CTL-01 No requirement tag" has no @req: tag',
+    'features/routine/control/R-CTL-01.feature:20: unknown step "Given the driver does something"',
+    "features/routine/control/R-CTL-01.feature:22: unknown tag kind @reqs:PRO-01 (known kinds: @item:, @req:, "
+    "@profile:)",
+    'features/routine/control/R-CTL-01.feature:23: scenario "R-CTL-01 Typo in a tag kind" has no @req: tag',
+    "features/routine/control/R-CTL-09.feature: not listed in features/registry.yaml",
+    "features/routine/display/R-CTL-03.feature: file name must be the item ID, R-DSP-<nn>.feature in this folder",
+    "features/routine/display/R-CTL-03.feature: not listed in features/registry.yaml",
+]
+
+
+def test_bad_tree_reports_each_problem_once_with_file_and_line(data_on_path):
+    data_on_path("bad")
+    result = check_tree(Tree.at(DATA / "bad"), definitions_in_modules(["bad_steps"]), shared=[])
+    assert [str(p) for p in sorted(result.problems)] == BAD_EXPECTED
+
+
+def test_steps_are_optional(data_on_path):
+    result = check_tree(Tree.at(DATA / "bad"), None, shared=[])
+    assert not any("step" in p.message for p in result.problems if "scenario" not in p.message)
+
+
+def test_shared_baseline_difference_is_a_warning(tmp_path: Path):
+    copy = tmp_path / "requirements.md"
+    copy.write_text("- NET-03 something else\n")
+    result = check_tree(Tree.at(DATA / "good"), None, shared=[copy])
+    assert [str(w) for w in result.warnings] == [
+        f"docs/requirements.md: differs from {copy}; which one is the baseline?"
+    ]
+    assert result.problems == []
+
+
+def test_examples_tags_must_be_plain(tmp_path: Path):
+    for sub in ("docs", "features/routine/control"):
+        (tmp_path / sub).mkdir(parents=True)
+    (tmp_path / "docs/requirements.md").write_text("- NET-03 x\n")
+    (tmp_path / "features/registry.yaml").write_text(
+        "classes: {routine: {code: R, title: R, categories: {control: {code: CTL, title: C}}}}\n"
+        "required_coverage: []\nitems:\n"
+        "  - {id: R-CTL-01, class: routine, category: control, title: t, requirements: [NET-03],"
+        " feature: features/routine/control/R-CTL-01.feature}\n"
+    )
+    (tmp_path / "features/routine/control/R-CTL-01.feature").write_text(
+        "@item:R-CTL-01 @req:NET-03\nFeature: f\n  Scenario Outline: R-CTL-01 o\n    Given <x>\n\n"
+        "    @req:NET-03\n    Examples:\n      | x |\n      | 1 |\n"
+    )
+    result = check_tree(Tree.at(tmp_path), None, shared=[])
+    assert [str(p) for p in result.problems] == [
+        "features/routine/control/R-CTL-01.feature:6: @req:NET-03: kind:value tags cannot go on Examples"
+    ]
