@@ -34,7 +34,7 @@ report: $(VENV_STAMP) $(NODE_STAMP) ## run every feature, build reports/html/ind
 	exit $$status
 
 test: $(VENV_STAMP) ## the project's own tests, then the whole conformance run; fails if either fails
-	@$(PY) -m pytest tests; t=$$?; \
+	@$(PY) -m pytest tests -n auto; t=$$?; \
 	$(PY) -m pytest features $(SUT_ARG) $(PYTEST_ARGS); f=$$?; \
 	echo "make test: tests exit $$t, conformance run exit $$f"; \
 	[ $$t -eq 0 ] && [ $$f -eq 0 ]

@@ -1,28 +1,42 @@
-"""What a scenario leaves in the Allure report: the SUT's trace and its parameters."""
+"""What a scenario leaves in the Allure report: the SUT's trace and its parameters.
+
+Two attachments per scenario: the key events (faults, desk inputs, token initialisation and formation,
+takeover, fail-safe cuts, path changes, discards, block transfer, lamps) as a CSV shown inline, and the
+whole trace, every event, as gzipped CSV. The periodic traffic (thousands of command and status frames a
+second) would make the inline table unreadable and the single-file report tens of megabytes.
+"""
 from __future__ import annotations
+
+import gzip
 
 import allure
 import pytest
 
 from sut.driver import TrainDriver
+from sut.trace import Trace
 
-_ENV_WRITTEN = "_crh2_env_written"
+PERIODIC_KINDS = frozenset({
+    "cmd.tx", "cmd.rx", "cmd.in", "status.tx", "status.rx", "token.rx", "token.pass", "sd.rx",
+    "loop.poll", "loop.send", "loop.report", "link.tx",
+})
 
 
 def attach_run(driver: TrainDriver, request: pytest.FixtureRequest) -> None:
     if not driver.powered:
         return
     trace = driver.trace
-    allure.attach(trace.to_csv(), name=f"SUT trace ({len(trace)} events, t in ms)",
+    key = Trace([ev for ev in trace if ev.kind not in PERIODIC_KINDS])
+    allure.attach(key.to_csv(), name=f"key events ({len(key)} of {len(trace)}, t in ms)",
                   attachment_type=allure.attachment_type.CSV)
+    allure.attach(gzip.compress(trace.to_csv().encode(), mtime=0), name=f"whole trace ({len(trace)} events)",
+                  attachment_type="application/gzip", extension="csv.gz")
     _write_environment(driver, request.config)
 
 
 def _write_environment(driver: TrainDriver, config: pytest.Config) -> None:
+    # Every scenario adds its SUT's parameters: values that differ (one set, two sets) are merged, not lost.
     results_dir = getattr(config.option, "allure_report_dir", None)
-    if not results_dir or getattr(config, _ENV_WRITTEN, False):
-        return
-    from outline.allure_env import write_environment
+    if results_dir:
+        from outline.allure_env import write_environment
 
-    write_environment(results_dir, driver.describe())
-    setattr(config, _ENV_WRITTEN, True)
+        write_environment(results_dir, driver.describe())
