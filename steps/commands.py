@@ -150,10 +150,20 @@ def _(sut: TrainDriver, t_action: int, after: float, car: int, notch: int) -> No
         assert not odd, f"{device} left path 1 / notch {notch}: {analysis.describe(odd)}"
 
 
+def _nothing_over(sut: TrainDriver, devices: list[str], since: int, path: int) -> None:
+    for device in devices:
+        got = sut.trace.select(kind="cmd.in", source=device, since=since, path=path)
+        assert not got, f"{device} received commands over path {path}: {analysis.describe(got)}"
+
+
 @then(parsers.parse("the {device:w} of car {car:d} receives nothing over path {path:d}"))
 def _(sut: TrainDriver, t_action: int, device: str, car: int, path: int) -> None:
-    got = sut.trace.select(kind="cmd.in", source=f"car{car}.{device}", since=t_action, path=path)
-    assert not got, f"car{car}.{device} received commands over path {path}: {analysis.describe(got)}"
+    _nothing_over(sut, [f"car{car}.{device}"], t_action, path)
+
+
+@then(parsers.parse("the CI and BCU of car {car:d} receive nothing over path {path:d}"))
+def _(sut: TrainDriver, t_action: int, car: int, path: int) -> None:
+    _nothing_over(sut, analysis.command_devices(sut, car), t_action, path)
 
 
 @then("commands over paths 2 and 3 carry only the traction and brake steps A and B")

@@ -30,3 +30,11 @@ Feature: F-NET-04 Whole ring down: the self-diagnostic line carries control comm
     And "car3.LCU" asks to send a 500-byte record as block data
     And 2 s pass
     Then "car1.CCU.sys1" holds no record of "car3.LCU"
+
+  @req:CMD-04
+  Scenario: F-NET-04 With the self-diagnostic line failed as well, no path is left
+    Given board "selfdiag" has failed
+    When every ring link is cut
+    And 500 ms pass
+    Then the BCU of car 4 receives nothing over path 3
+    And the CI and BCU of car 3 receive nothing over path 3
