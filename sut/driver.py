@@ -17,7 +17,7 @@ from __future__ import annotations
 import abc
 from typing import Any
 
-from sut.errors import NotPoweredUp, OutOfRange
+from sut.errors import NotPoweredUp, NotSupported, OutOfRange
 from sut.trace import Trace
 
 DIRECTIONS = ("neutral", "forward", "reverse")
@@ -135,6 +135,25 @@ class TrainDriver(abc.ABC):
 
     @abc.abstractmethod
     def restore_power(self, supply: str) -> None: ...
+
+    # -- the vehicle around the network (ILK): named inputs and outputs ------------------------
+    def set_input(self, name: str, value: Any) -> None:
+        """Set a vehicle input (speed, main pipe pressure, doors, ATP brake, a fault state, ...)."""
+        raise NotSupported(f"{self.backend_name} has no vehicle inputs")
+
+    def ramp_input(self, name: str, to: float, per_s: float) -> None:
+        """Move a numeric input linearly to `to` at `per_s` units per second of train time."""
+        raise NotSupported(f"{self.backend_name} cannot ramp vehicle inputs")
+
+    def input(self, name: str) -> Any:
+        raise NotSupported(f"{self.backend_name} has no vehicle inputs")
+
+    def output(self, name: str) -> str:
+        """A vehicle output: a valve, relay, breaker or contactor state, the doors, traction permission."""
+        raise NotSupported(f"{self.backend_name} has no vehicle outputs")
+
+    def vehicle_names(self) -> dict[str, list[str]]:
+        return {"inputs": [], "outputs": []}
 
     # -- traffic -------------------------------------------------------------------------------
     @abc.abstractmethod

@@ -30,9 +30,12 @@ class ReferenceTrain(TrainDriver):
     TIMING: ClassVar[dict[str, Any]] = {}
     BEHAVIOUR: ClassVar[dict[str, Any]] = {}
 
+    INTERLOCKS: ClassVar[dict[str, Any]] = {}
+
     def __init__(self) -> None:
         super().__init__()
-        self._cfg = TrainConfig().with_timing(**self.TIMING).with_behaviour(**self.BEHAVIOUR)
+        self._cfg = (TrainConfig().with_timing(**self.TIMING).with_behaviour(**self.BEHAVIOUR)
+                     .with_interlocks(**self.INTERLOCKS))
         self._train: Train | None = None
 
     # -- composition and life cycle ------------------------------------------------------------
@@ -40,7 +43,7 @@ class ReferenceTrain(TrainDriver):
         if self._train is not None:
             raise SutError("configure the composition before anything else is done to the train")
         self._cfg = TrainConfig(sets=sets, cars_per_set=cars_per_set, timing=self._cfg.timing,
-                                behaviour=self._cfg.behaviour)
+                                behaviour=self._cfg.behaviour, interlocks=self._cfg.interlocks)
 
     @property
     def train(self) -> Train:
@@ -118,6 +121,7 @@ class ReferenceTrain(TrainDriver):
             ccu.desk.mcr = True
             self._mark(f"car{cab}.desk", "mcr.up")
         ccu.mcr_changed()
+        self.train.vehicle.desk_changed()
 
     def remove_key(self, cab: int) -> None:
         ccu = self._cab(cab)
@@ -127,22 +131,26 @@ class ReferenceTrain(TrainDriver):
             self._mark(f"car{cab}.desk", "mcr.down")
         self._mark(f"car{cab}.desk", "desk.key", inserted=False)
         ccu.mcr_changed()
+        self.train.vehicle.desk_changed()
 
     def set_direction(self, cab: int, direction: str) -> None:
         self._cab(cab).desk.direction = self.check_direction(direction)
         self._mark(f"car{cab}.desk", "desk.direction", direction=direction)
+        self.train.vehicle.desk_changed()
 
     def set_traction(self, cab: int, notch: int) -> None:
         if not (isinstance(notch, int) and 0 <= notch <= TRACTION_NOTCHES):
             raise OutOfRange("traction notch", notch, f"0..{TRACTION_NOTCHES}")
         self._cab(cab).desk.traction = notch
         self._mark(f"car{cab}.desk", "desk.traction", notch=notch)
+        self.train.vehicle.desk_changed()
 
     def set_brake(self, cab: int, step: int) -> None:
         if not (isinstance(step, int) and 0 <= step <= EMERGENCY):
             raise OutOfRange("brake step", step, f"0..{BRAKE_STEPS} service, {EMERGENCY} emergency")
         self._cab(cab).desk.brake = step
         self._mark(f"car{cab}.desk", "desk.brake", step=step)
+        self.train.vehicle.desk_changed()
 
     # -- faults --------------------------------------------------------------------------------
     def _set_span(self, span: Span, cut: bool) -> None:
@@ -186,6 +194,23 @@ class ReferenceTrain(TrainDriver):
         self._mark(supply, "fault.power", on=True)
         s.set(True)
 
+    # -- the vehicle (ILK) ---------------------------------------------------------------------
+    def set_input(self, name: str, value: Any) -> None:
+        self.train.vehicle.set_input(name, value)
+
+    def ramp_input(self, name: str, to: float, per_s: float) -> None:
+        self.train.vehicle.ramp_input(name, to, per_s)
+
+    def input(self, name: str) -> Any:
+        return self.train.vehicle.input(name)
+
+    def output(self, name: str) -> str:
+        return self.train.vehicle.output(name)
+
+    def vehicle_names(self) -> dict[str, list[str]]:
+        v = self.train.vehicle
+        return {"inputs": sorted(v.inputs_spec), "outputs": sorted(v.outputs)}
+
     # -- traffic -------------------------------------------------------------------------------
     def request_block_transfer(self, node: str, data: bytes) -> None:
         if not data:
@@ -217,7 +242,9 @@ class ReferenceTrain(TrainDriver):
         return [n.name for n in self.train.ring.nodes if n.has_token]
 
     def monitor(self, cab: int) -> dict[str, Any]:
-        return self._cab(cab).monitor_view(stale_us=self._cfg.timing.token_loss_us)
+        view = self._cab(cab).monitor_view(stale_us=self._cfg.timing.token_loss_us)
+        view["faults"] = sorted(view["faults"] + self.train.vehicle.monitor_alarms())
+        return view
 
     def status_table(self, node: str) -> dict[str, int | None]:
         me = self._node(node)

@@ -12,6 +12,7 @@ from sut.errors import OutOfRange
 MS = 1000  # microseconds per millisecond
 
 
+
 @dataclass(frozen=True)
 class Timing:
     bitrate: int = 2_500_000             # NET-07 ARCNET over fibre
@@ -47,6 +48,22 @@ class Behaviour:
     cmd_bypass_cpu3: bool = True          # CMD-01 commands do not pass through CPU3
     standby_transmits: bool = False       # RED-02 system 2 only monitors while system 1 is healthy
     block_grant_required: bool = True     # PRO-06 no block transfer before the grant
+    ilk08_ignored: tuple[str, ...] = ()   # ILK-08 conditions a faulty variant forgets to check
+
+
+@dataclass(frozen=True)
+class Interlocks:
+    """Trip points and delays of the reference. The features test the requirement bands, not these."""
+
+    pipe_trip_kpa: float = 590.0        # ILK-02: (590 +/- 10) kPa
+    pipe_reset_kpa: float = 620.0       # DECISIONS: hysteresis 30 kPa
+    seal_on_kmh: float = 30.0           # ILK-05: press-seal valve energised above 30 km/h
+    seal_off_kmh: float = 28.0          # DECISIONS: released below 28 km/h
+    door_relay_kmh: float = 5.0         # ILK-05: door-open safety relay acts below 5 km/h
+    brake_force_min_pct: float = 50.0   # DECISIONS: "insufficient" = below 50 % of the demand ...
+    brake_force_detect_us: int = 500 * MS   # ... for 500 ms
+    ns_entry_timeout_us: int = 15_000 * MS  # DECISIONS: no entry signal 15 s after the warning
+    ns_exit_timeout_us: int = 10_000 * MS   # DECISIONS: no exit signal 10 s after the entry
 
 
 MOTOR_CARS_8 = (2, 3, 6, 7)       # CRH2A 4M4T: CI (main converter) in these cars of each set
@@ -63,6 +80,7 @@ class TrainConfig:
     cars_per_set: int = 8
     timing: Timing = field(default_factory=Timing)
     behaviour: Behaviour = field(default_factory=Behaviour)
+    interlocks: Interlocks = field(default_factory=Interlocks)
 
     def __post_init__(self) -> None:
         if self.sets not in (1, 2):
@@ -94,9 +112,13 @@ class TrainConfig:
     def with_behaviour(self, **changes) -> "TrainConfig":
         return replace(self, behaviour=replace(self.behaviour, **changes))
 
+    def with_interlocks(self, **changes) -> "TrainConfig":
+        return replace(self, interlocks=replace(self.interlocks, **changes))
+
     def describe(self) -> dict[str, str]:
         out = {"sets": str(self.sets), "cars per set": str(self.cars_per_set)}
         out.update({f"timing.{k}": str(v) for k, v in asdict(self.timing).items()})
+        out.update({f"interlocks.{k}": str(v) for k, v in asdict(self.interlocks).items()})
         changed = {k: v for k, v in asdict(self.behaviour).items() if v != getattr(Behaviour(), k)}
         out["behaviour"] = ", ".join(f"{k}={v}" for k, v in changed.items()) or "reference"
         return out

@@ -44,5 +44,11 @@ class Desk:
             # FS-03: with inverted logic a dead input reads as the restrictive state: full service brake,
             # no traction. Without it, dead inputs would read as "nothing asked": released brake.
             return Sample("neutral", 0, BRAKE_STEPS if inverted else 0, self.mcr)
-        brake = (self.brake + 1) % (BRAKE_STEPS + 2) if misread else self.brake
-        return Sample(self.direction, self.traction, brake, self.mcr)
+        vehicle = self.train.vehicle
+        # ILK-08: the traction lines carry a notch only while every permission holds; an ATP brake
+        # raises the brake demand (DECISIONS.md, "Traction permission").
+        traction = self.traction if self.mcr and vehicle.traction_permitted() else 0
+        brake = vehicle.brake_demand(self.brake)
+        if misread:
+            brake = (brake + 1) % (BRAKE_STEPS + 2)
+        return Sample(self.direction, traction, brake, self.mcr)

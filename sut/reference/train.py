@@ -17,6 +17,7 @@ from sut.reference.lcu import Lcu
 from sut.reference.node import RingNode
 from sut.reference.ring import Ring, Span
 from sut.reference.selfdiag import SelfDiagLine
+from sut.reference.vehicle import Vehicle
 from sut.trace import TraceEvent
 
 
@@ -60,6 +61,7 @@ class Train:
         self.block_queue: list[int] = []
         self.block_granted = 0
         self.block_records: dict[int, dict[int, bytes]] = {}
+        self.vehicle = Vehicle(self)
 
     def _add_loop_devices(self, lcu: Lcu) -> None:
         periods = dict(self.cfg.timing.current_loop_periods_us)

@@ -6,6 +6,7 @@ Feature: F-NET-02 Ring with one link fault
   Background:
     Given an 8-car CRH2 train set
     And the driver has inserted the key in cab 1
+    And the direction switch of cab 1 is at forward
     And the traction notch of cab 1 is at 3
     And the train has been powered up for 1000 ms
 

@@ -7,6 +7,7 @@ Feature: F-NET-03 Ring split by two link faults
   Background:
     Given an 8-car CRH2 train set
     And the driver has inserted the key in cab 1
+    And the direction switch of cab 1 is at forward
     And the train has been powered up for 1000 ms
 
   @req:NET-03 @req:PRO-05

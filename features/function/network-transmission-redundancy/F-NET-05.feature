@@ -5,6 +5,7 @@ Feature: F-NET-05 Frame check: a bad frame is discarded, a good one forwarded
   Background:
     Given an 8-car CRH2 train set
     And the driver has inserted the key in cab 1
+    And the direction switch of cab 1 is at forward
     And the traction notch of cab 1 is at 3
     And the train has been powered up for 1000 ms
 

@@ -8,6 +8,7 @@ Feature: F-NET-06 Three priorities: control commands are never held up by status
   Background:
     Given an 8-car CRH2 train set
     And the driver has inserted the key in cab 1
+    And the direction switch of cab 1 is at forward
     And the traction notch of cab 1 is at 5
     And an analyser is attached to the ring link between "car1.CCU.sys1" and "car1.CCU.sys2"
     And the train has been powered up for 1000 ms

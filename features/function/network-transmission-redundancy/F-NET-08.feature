@@ -5,6 +5,7 @@ Feature: F-NET-08 Coupling two sets couples the ring and the self-diagnostic lin
   Background:
     Given two 8-car CRH2 train sets coupled together
     And the driver has inserted the key in cab 1
+    And the direction switch of cab 1 is at forward
     And the traction notch of cab 1 is at 2
     And an analyser is attached to the ring link between "car8.CCU.sys1" and "car9.CCU.sys1"
     And the train has been powered up for 1000 ms

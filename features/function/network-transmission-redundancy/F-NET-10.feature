@@ -6,6 +6,7 @@ Feature: F-NET-10 Control command broadcast: 12 bytes, at least 10 ms apart, at 
   Background:
     Given an 8-car CRH2 train set
     And the driver has inserted the key in cab 1
+    And the direction switch of cab 1 is at forward
     And the traction notch of cab 1 is at 1
 
   @req:PRO-01

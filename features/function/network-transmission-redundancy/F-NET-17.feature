@@ -10,6 +10,7 @@ Feature: F-NET-17 CCU systems 1 and 2: independent supplies, takeover after 50 m
   Background:
     Given an 8-car CRH2 train set
     And the driver has inserted the key in cab 1
+    And the direction switch of cab 1 is at forward
     And the traction notch of cab 1 is at 6
     And the train has been powered up for 1000 ms
 

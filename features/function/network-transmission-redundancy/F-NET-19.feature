@@ -5,6 +5,7 @@ Feature: F-NET-19 Fail-safe command boards: two CPU groups, compare, cut on disa
   Background:
     Given an 8-car CRH2 train set
     And the driver has inserted the key in cab 1
+    And the direction switch of cab 1 is at forward
     And the traction notch of cab 1 is at 5
     And the train has been powered up for 1000 ms
 

@@ -15,6 +15,7 @@ Feature: F-NET-20 The driver's controller in each cab sets master control, direc
   @req:CMD-05 @req:PRO-01
   Scenario Outline: F-NET-20 Notch <notch> set in cab <cab> reaches every CI
     Given the driver has inserted the key in cab <cab>
+    And the direction switch of cab <cab> is at forward
     And the train has been powered up for 1000 ms
     When the driver moves the traction notch of cab <cab> to <notch>
     And 100 ms pass

@@ -28,6 +28,7 @@ Feature: R-CTL-01 Traction and brake command transmission
     When the driver removes the key from cab 1
     And 100 ms pass
     And the driver inserts the key in cab 8
+    And the driver sets the direction switch of cab 8 to forward
     And the driver moves the traction notch of cab 8 to 3
     And 200 ms pass
     Then only "car8.CCU.sys1" puts commands on the ring

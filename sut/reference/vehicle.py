@@ -1,0 +1,350 @@
+"""The vehicle around the network: brake loop, doors, main circuit, neutral-section passing, traction
+permission (ILK-01..08, S0 §3).
+
+Everything the test engineer can set is a named *input*, everything the train shows is a named *output*;
+`CATALOGUE` below is the single list of both, with allowed values, so a wrong name or an out-of-range
+value fails loudly. Outputs are re-evaluated after every input change and every 1 ms step of a ramp; each
+change is one `out.change` trace event carrying the speed and main-pipe pressure of that instant, which
+is what a band test reads (did the valve drop between 600 and 580 kPa?).
+"""
+from __future__ import annotations
+
+from dataclasses import dataclass
+from typing import TYPE_CHECKING, Any
+
+from sut.errors import OutOfRange, UnknownName
+
+if TYPE_CHECKING:
+    from sut.reference.config import Interlocks
+    from sut.reference.kernel import Timer
+    from sut.reference.train import Train
+
+MS = 1000
+TRANSFORMER_STATES = ("normal", "primary overcurrent", "secondary overcurrent", "tertiary overcurrent",
+                      "secondary earth fault", "tertiary earth fault")
+OVERCURRENTS = TRANSFORMER_STATES[1:4]
+
+
+@dataclass(frozen=True)
+class Spec:
+    kind: str                              # "number" or "choice"
+    allowed: tuple = ()
+    low: float = 0.0
+    high: float = 0.0
+    unit: str = ""
+    initial: Any = None
+
+    def check(self, name: str, value: Any) -> Any:
+        if self.kind == "number":
+            if isinstance(value, bool) or not isinstance(value, (int, float)) or not self.low <= value <= self.high:
+                raise OutOfRange(name, value, f"{self.low:g}..{self.high:g} {self.unit}".strip())
+            return float(value)
+        if value not in self.allowed:
+            raise OutOfRange(name, value, ", ".join(map(str, self.allowed)))
+        return value
+
+
+def catalogue(cars: int, units: int) -> tuple[dict[str, Spec], dict[str, tuple]]:
+    """(inputs, outputs) of a train of `cars` cars in `units` traction units."""
+    inputs: dict[str, Spec] = {
+        "speed": Spec("number", low=0, high=400, unit="km/h", initial=0.0),
+        "main pipe pressure": Spec("number", low=0, high=1000, unit="kPa", initial=780.0),
+        "doors": Spec("choice", ("closed", "open"), initial="closed"),
+        "door bypass": Spec("choice", ("off", "on"), initial="off"),
+        "ATP brake": Spec("choice", ("none", "service", "emergency"), initial="none"),
+        "neutral section signal": Spec("choice", ("warning", "entry", "exit")),
+        "neutral section device": Spec("choice", ("normal", "severe fault", "warning signal fault"),
+                                       initial="normal"),
+        "neutral section restore": Spec("choice", ("manual restore",)),
+        "main circuit reset": Spec("choice", ("reset",)),
+    }
+    for car in range(1, cars + 1):
+        inputs[f"car{car}.brake force"] = Spec("number", low=0, high=150, unit="% of demand", initial=100.0)
+    for car in range(1, cars):
+        inputs[f"coupler car{car}~car{car + 1}"] = Spec("choice", ("coupled", "separated"), initial="coupled")
+    for unit in range(1, units + 1):
+        inputs[f"unit{unit}.transformer"] = Spec("choice", TRANSFORMER_STATES, initial="normal")
+        inputs[f"unit{unit}.oil pump"] = Spec("choice", ("running", "stopped"), initial="running")
+        inputs[f"unit{unit}.oil temperature"] = Spec("choice", ("normal", "over-temperature"), initial="normal")
+    outputs = {
+        "EB valve": ("energised", "de-energised"),
+        "rapid-brake valve": ("energised", "de-energised"),
+        "emergency brake": ("released", "applied"),
+        "rapid brake": ("not commanded", "commanded"),
+        "press-seal valve": ("de-energised", "energised"),
+        "door-open relay": ("released", "acting"),
+        "doors": ("closed", "open"),
+        "traction": ("permitted", "blocked"),
+        "neutral section": ("idle", "warned", "passing", "awaiting manual entry", "awaiting manual restore",
+                            "manual passing"),
+    }
+    for unit in range(1, units + 1):
+        outputs[f"unit{unit}.VCB"] = ("closed", "open")
+    return inputs, outputs
+
+
+class Vehicle:
+    def __init__(self, train: "Train"):
+        self.train = train
+        self.kernel = train.kernel
+        self.cfg: Interlocks = train.cfg.interlocks
+        per = train.cfg.cars_per_set
+        self.units = {u + 1: [c for c in range(u * per // 2 + 1, (u + 1) * per // 2 + 1)]
+                      for u in range(train.cfg.sets * 2)}
+        self.inputs_spec, self.outputs_spec = catalogue(train.cfg.cars, len(self.units))
+        for car in train.cfg.motor_cars():
+            self.outputs_spec[f"car{car}.CI contactor"] = ("closed", "open")
+            self.outputs_spec[f"car{car}.CI gates"] = ("enabled", "blocked")
+        self.inputs: dict[str, Any] = {k: s.initial for k, s in self.inputs_spec.items() if s.initial is not None}
+        self.outputs: dict[str, str] = {}
+        self._ramps: dict[str, "Timer"] = {}
+        # latched states
+        self.pipe_tripped = False
+        self.brake_force_low = False
+        self._force_timer: "Timer | None" = None
+        self.seal = False
+        self.unit_faults: dict[int, set[str]] = {u: set() for u in self.units}
+        self.ns_phase = "idle"
+        self._ns_timer: "Timer | None" = None
+        self.ns_vcb_open = False
+        self._evaluate(initial=True)
+
+    # -- the interface the driver uses ----------------------------------------------------------
+    def set_input(self, name: str, value: Any) -> None:
+        spec = self._spec(name)
+        value = spec.check(name, value)
+        self._cancel_ramp(name)
+        self.train.emit("vehicle", "in.set", name=name, value=value)
+        self._apply(name, value)
+
+    def ramp_input(self, name: str, to: float, per_s: float) -> None:
+        spec = self._spec(name)
+        if spec.kind != "number":
+            raise OutOfRange(f"ramp of {name}", to, "only numeric inputs ramp")
+        to = spec.check(name, to)
+        if not (isinstance(per_s, (int, float)) and per_s > 0):
+            raise OutOfRange("ramp rate", per_s, f"> 0 {spec.unit}/s")
+        self._cancel_ramp(name)
+        self.train.emit("vehicle", "in.ramp", name=name, frm=self.inputs[name], to=to, per_s=per_s)
+        step = per_s / 1000.0                     # per millisecond
+
+        def tick() -> None:
+            now = self.inputs[name]
+            nxt = min(to, now + step) if to > now else max(to, now - step)
+            self.inputs[name] = round(nxt, 6)
+            self._evaluate()
+            if nxt != to:
+                self._ramps[name] = self.kernel.call_later(MS, tick)
+            else:
+                self._ramps.pop(name, None)
+
+        self._ramps[name] = self.kernel.call_later(MS, tick)
+
+    def output(self, name: str) -> str:
+        if name not in self.outputs:
+            raise UnknownName("vehicle output", name, self.outputs)
+        return self.outputs[name]
+
+    def desk_changed(self) -> None:
+        self._evaluate()
+
+    def input(self, name: str) -> Any:
+        self._spec(name)
+        return self.inputs.get(name)
+
+    # -- inputs that are events rather than levels ----------------------------------------------
+    def _apply(self, name: str, value: Any) -> None:
+        if name == "neutral section signal":
+            self._ns_signal(value)
+        elif name == "neutral section restore":
+            self._ns_restore()
+        elif name == "main circuit reset":
+            self._main_circuit_reset()
+        else:
+            self.inputs[name] = value
+        self._evaluate()
+
+    def _spec(self, name: str) -> Spec:
+        if name not in self.inputs_spec:
+            raise UnknownName("vehicle input", name, self.inputs_spec)
+        return self.inputs_spec[name]
+
+    def _cancel_ramp(self, name: str) -> None:
+        timer = self._ramps.pop(name, None)
+        if timer is not None:
+            timer.cancel()
+
+    # -- the interlock logic --------------------------------------------------------------------
+    def _evaluate(self, initial: bool = False) -> None:
+        cfg, inp = self.cfg, self.inputs
+        pressure, speed = inp["main pipe pressure"], inp["speed"]
+        # ILK-02 with hysteresis
+        if not self.pipe_tripped and pressure < cfg.pipe_trip_kpa:
+            self.pipe_tripped = True
+        elif self.pipe_tripped and pressure >= cfg.pipe_reset_kpa:
+            self.pipe_tripped = False
+        separated = any(v == "separated" for k, v in inp.items() if k.startswith("coupler "))
+        self._supervise_brake_force()
+        safety_trip = separated or self.pipe_tripped or self.brake_force_low          # ILK-01..03
+        driver_eb = self._handle_brake() >= 8
+        atp = inp["ATP brake"]
+        eb_loop_open = safety_trip or driver_eb or atp == "emergency"
+        # ILK-05
+        doors_open = inp["doors"] == "open" and self.outputs.get("doors") == "open"
+        if self.seal and (speed < cfg.seal_off_kmh or doors_open):
+            self.seal = False
+        elif not self.seal and speed > cfg.seal_on_kmh and not doors_open:
+            self.seal = True
+        relay = speed < cfg.door_relay_kmh
+        doors = "open" if inp["doors"] == "open" and relay and not self.seal else "closed"
+        # ILK-06
+        vcb_open = {u: bool(self.unit_faults[u] & {"vcb"}) or self.ns_vcb_open for u in self.units}
+        out = {
+            "EB valve": "de-energised" if eb_loop_open else "energised",
+            "rapid-brake valve": "de-energised" if safety_trip else "energised",
+            "emergency brake": "applied" if eb_loop_open else "released",
+            "rapid brake": "commanded" if safety_trip else "not commanded",
+            "press-seal valve": "energised" if self.seal else "de-energised",
+            "door-open relay": "acting" if relay else "released",
+            "doors": doors,
+            "neutral section": self.ns_phase,
+        }
+        for u in self.units:
+            out[f"unit{u}.VCB"] = "open" if vcb_open[u] else "closed"
+            self._unit_protection(u)
+        for u, cars in self.units.items():
+            for car in cars:
+                if f"car{car}.CI contactor" in self.outputs_spec:
+                    cut = bool(self.unit_faults[u] & {"converter"}) or vcb_open[u]
+                    out[f"car{car}.CI contactor"] = "open" if cut else "closed"
+                    out[f"car{car}.CI gates"] = "blocked" if cut else "enabled"
+        out["traction"] = "permitted" if self._permitted(eb_loop_open, safety_trip, doors) else "blocked"
+        for name, value in out.items():
+            if self.outputs.get(name) != value:
+                self.outputs[name] = value
+                if not initial:
+                    self.train.emit(name, "out.change", value=value, speed=speed, pressure=pressure)
+
+    def _handle_brake(self) -> int:
+        ccu = self.train.commanding_ccu()
+        return ccu.desk.brake if ccu else 0
+
+    # ILK-03: brake force supervision
+    def _supervise_brake_force(self) -> None:
+        demand = self._handle_brake() > 0 or self.inputs["ATP brake"] != "none"
+        weak = demand and any(v < self.cfg.brake_force_min_pct for k, v in self.inputs.items()
+                              if k.endswith(".brake force"))
+        if weak and self._force_timer is None and not self.brake_force_low:
+            self._force_timer = self.kernel.call_later(self.cfg.brake_force_detect_us, self._brake_force_low)
+        elif not weak and self._force_timer is not None:
+            self._force_timer.cancel()
+            self._force_timer = None
+
+    def _brake_force_low(self) -> None:
+        self._force_timer = None
+        self.brake_force_low = True            # latched: the emergency brake holds until the train stops
+        self.train.emit("vehicle", "brake.force_low")
+        self._evaluate()
+
+    # ILK-06: transformer, oil pump, oil temperature
+    def _unit_protection(self, unit: int) -> None:
+        inp, faults = self.inputs, self.unit_faults[unit]
+        transformer = inp[f"unit{unit}.transformer"]
+        if transformer != "normal":
+            faults.add("vcb")                               # every listed transformer fault opens the VCB
+            if transformer in OVERCURRENTS:
+                faults.add("converter")                     # over-currents also cut the converters
+        if inp[f"unit{unit}.oil pump"] == "stopped" or inp[f"unit{unit}.oil temperature"] == "over-temperature":
+            faults.add("converter")
+
+    def _main_circuit_reset(self) -> None:
+        for unit, faults in self.unit_faults.items():
+            inp = self.inputs
+            still = (inp[f"unit{unit}.transformer"] != "normal" or inp[f"unit{unit}.oil pump"] == "stopped"
+                     or inp[f"unit{unit}.oil temperature"] == "over-temperature")
+            if not still:
+                faults.clear()
+
+    # ILK-08: traction permission
+    def traction_permitted(self) -> bool:
+        return self.outputs.get("traction") == "permitted"
+
+    def _permitted(self, emergency: bool, rapid: bool, doors: str) -> bool:
+        ccu = self.train.commanding_ccu()
+        if ccu is None or not ccu.desk.mcr:                       # (1) this cab's MCR
+            return False
+        inp, b = self.inputs, self.train.cfg.behaviour
+        braking = ccu.desk.brake > 0 or inp["ATP brake"] != "none"
+        conditions = {
+            "direction": ccu.desk.direction in ("forward", "reverse"),                # (2)
+            "brakes": not (emergency or rapid),                                        # (3)
+            "doors": doors == "closed" or inp["door bypass"] == "on",                  # (4)
+            "braking": not braking,                                                    # brake outranks traction
+        }
+        return all(ok for name, ok in conditions.items() if name not in b.ilk08_ignored)
+
+    def brake_demand(self, handle: int) -> int:
+        """The brake step the commands carry: the handle, raised to full service by an ATP brake."""
+        return max(handle, 7) if self.inputs["ATP brake"] != "none" and handle < 8 else handle
+
+    # ILK-04: automatic neutral-section passing
+    def _ns_signal(self, signal: str) -> None:
+        device = self.inputs["neutral section device"]
+        self.train.emit("vehicle", "ns.signal", signal=signal, device=device)
+        if device == "severe fault":
+            self.ns_phase = "manual passing"               # network alarm; the driver passes by hand
+            self._ns_cancel()
+            return
+        if signal == "warning":
+            self.ns_phase = "warned"
+            self.ns_vcb_open = True                        # traction off and VCB open before the section
+            self._ns_arm(self.cfg.ns_entry_timeout_us, "awaiting manual entry")
+        elif signal == "entry":
+            # without a warning (a faulty warning signal) the network forces automatic passing here
+            self.ns_phase = "passing"
+            self.ns_vcb_open = True
+            self._ns_arm(self.cfg.ns_exit_timeout_us, "awaiting manual restore")
+        elif signal == "exit" and self.ns_phase in ("passing", "warned"):
+            self._ns_cancel()
+            self.ns_phase = "idle"
+            self.ns_vcb_open = False
+
+    def _ns_arm(self, delay: int, phase: str) -> None:
+        self._ns_cancel()
+
+        def expire() -> None:
+            self._ns_timer = None
+            self.ns_phase = phase
+            self._evaluate()
+
+        self._ns_timer = self.kernel.call_later(delay, expire)
+
+    def _ns_cancel(self) -> None:
+        if self._ns_timer is not None:
+            self._ns_timer.cancel()
+            self._ns_timer = None
+
+    def _ns_restore(self) -> None:
+        if self.ns_phase in ("awaiting manual restore", "awaiting manual entry", "manual passing"):
+            self._ns_cancel()
+            self.ns_phase = "idle"
+            self.ns_vcb_open = False
+
+    def monitor_alarms(self) -> list[str]:
+        alarms = []
+        device = self.inputs["neutral section device"]
+        if device == "severe fault":
+            alarms.append("neutral section: severe fault, pass manually")
+        elif device == "warning signal fault":
+            alarms.append("neutral section: warning signal fault, forced automatic passing")
+        if self.ns_phase == "awaiting manual entry":
+            alarms.append("neutral section: no entry signal, enter manually")
+        if self.ns_phase == "awaiting manual restore":
+            alarms.append("neutral section: no exit signal, restore manually")
+        for unit, faults in self.unit_faults.items():
+            if faults:
+                alarms.append(f"unit{unit}: main circuit protection acted")
+        if self.brake_force_low:
+            alarms.append("insufficient brake force")
+        return alarms
+
