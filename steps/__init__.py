@@ -11,4 +11,5 @@ STEP_MODULES = [
     "steps.faults",
     "steps.commands",
     "steps.network",
+    "steps.vehicle",
 ]

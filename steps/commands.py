@@ -63,6 +63,12 @@ def _(sut: TrainDriver, t_action: int, node: str) -> None:
     assert not found, f"{node} sent commands: {analysis.describe(found)}"
 
 
+@then(parsers.parse('"{node}" puts no commands on the ring from {after:g} ms on'))
+def _(sut: TrainDriver, t_action: int, node: str, after: float) -> None:
+    found = sut.trace.select(kind="cmd.tx", source=f"{node}.MDM8", since=t_action + _us(after))
+    assert not found, f"{node} sent commands: {analysis.describe(found)}"
+
+
 @then(parsers.parse('"{txc}" puts nothing on the ring or the self-diagnostic line from {after:g} ms on'))
 def _(sut: TrainDriver, t_action: int, txc: str, after: float) -> None:
     system = txc.rsplit(".", 1)[0]

@@ -128,6 +128,77 @@ class NoSelfDiagnosticFallback(ReferenceTrain):
     TIMING = {"rxc_fallback_us": 3_600_000 * MS}
 
 
+# -- faulty interlocks (ILK) ------------------------------------------------------------------------
+class PipeTripTooLow(ReferenceTrain):
+    """ILK-02: trips at 570 kPa, below the (590 +/- 10) kPa band."""
+    INTERLOCKS = {"pipe_trip_kpa": 570.0}
+
+
+class PipeTripTooHigh(ReferenceTrain):
+    """ILK-02: trips at 605 kPa, above the band."""
+    INTERLOCKS = {"pipe_trip_kpa": 605.0, "pipe_reset_kpa": 630.0}
+
+
+class PipeWithoutHysteresis(ReferenceTrain):
+    """ILK-02: releases as soon as the pressure is back at the trip point: chatters inside the band."""
+    INTERLOCKS = {"pipe_reset_kpa": 590.0}
+
+
+class SeparationWithoutRapidBrake(ReferenceTrain):
+    """ILK-01: separation applies the emergency brake only."""
+    BEHAVIOUR = {"separation_trips_rapid": False}
+
+
+class BlindBrakeForceSupervision(ReferenceTrain):
+    """ILK-03: 'insufficient' only below 20 % of the demand."""
+    INTERLOCKS = {"brake_force_min_pct": 20.0}
+
+
+class NoForcedNeutralSectionPassing(ReferenceTrain):
+    """ILK-04: an entry signal without a warning does nothing."""
+    BEHAVIOUR = {"ns_forced_passing": False}
+
+
+class EarlyPressSeal(ReferenceTrain):
+    """ILK-05: the press-seal valve energises above 25 km/h."""
+    INTERLOCKS = {"seal_on_kmh": 25.0, "seal_off_kmh": 23.0}
+
+
+class DoorRelayAt10(ReferenceTrain):
+    """ILK-05: the door-open safety relay acts below 10 km/h."""
+    INTERLOCKS = {"door_relay_kmh": 10.0}
+
+
+class OilFaultsIgnored(ReferenceTrain):
+    """ILK-06: a stopped oil pump or hot oil leaves the converters running."""
+    BEHAVIOUR = {"oil_protection": False}
+
+
+class TwoMasterControllers(ReferenceTrain):
+    """ILK-07: both cabs' MCRs pick up."""
+    BEHAVIOUR = {"mcr_exclusive": False}
+
+
+class TractionInNeutral(ReferenceTrain):
+    """ILK-08: the direction switch is not part of the traction permission."""
+    BEHAVIOUR = {"ilk08_ignored": ("direction",)}
+
+
+class TractionThroughEmergencyBrake(ReferenceTrain):
+    """ILK-08: traction stays permitted while the emergency and rapid brakes act."""
+    BEHAVIOUR = {"ilk08_ignored": ("brakes",)}
+
+
+class TractionWithDoorsOpen(ReferenceTrain):
+    """ILK-08: open doors do not block traction."""
+    BEHAVIOUR = {"ilk08_ignored": ("doors",)}
+
+
+class TractionWhileBraking(ReferenceTrain):
+    """ILK-08: a brake command does not suppress traction."""
+    BEHAVIOUR = {"ilk08_ignored": ("braking",)}
+
+
 # -- in band: differ only where the requirements leave room ------------------------------------------
 class HoldCountedToSend(ReferenceTrain):
     """Holds 10 ms from receiving the token to sending it: the neighbour has it 10.25 ms later."""
@@ -174,6 +245,30 @@ FAULTY = [
     (SlowPolling, "NET-09", "F-NET-09"),
     (HalfRateRing, "NET-07", "F-NET-07"),
     (NoSelfDiagnosticFallback, "CMD-04", "F-NET-04"),
+    (PipeTripTooLow, "ILK-02", "F-ILK-02"),
+    (PipeTripTooHigh, "ILK-02", "F-ILK-02"),
+    (PipeWithoutHysteresis, "ILK-02", "F-ILK-02"),
+    (SeparationWithoutRapidBrake, "ILK-01", "F-ILK-01"),
+    (BlindBrakeForceSupervision, "ILK-03", "F-ILK-03"),
+    (NoForcedNeutralSectionPassing, "ILK-04", "F-ILK-04"),
+    (EarlyPressSeal, "ILK-05", "F-ILK-05"),
+    (DoorRelayAt10, "ILK-05", "F-ILK-05"),
+    (OilFaultsIgnored, "ILK-06", "F-ILK-06"),
+    (TwoMasterControllers, "ILK-07", "F-ILK-07"),
+    (TractionInNeutral, "ILK-08", "F-ILK-08"),
+    (TractionThroughEmergencyBrake, "ILK-08", "F-ILK-08"),
+    (TractionWithDoorsOpen, "ILK-08", "F-ILK-08"),
+    (TractionWhileBraking, "ILK-08", "F-ILK-09"),
 ]
 
-IN_BAND = [HoldCountedToSend, FasterNodes, CommandsEvery12ms, EarlierFallback]
+class PipeTripAt585(ReferenceTrain):
+    """Trips at 585 kPa, releases at 610 kPa: inside ILK-02's band and the hysteresis rule."""
+    INTERLOCKS = {"pipe_trip_kpa": 585.0, "pipe_reset_kpa": 610.0}
+
+
+class DoorBandsNarrow(ReferenceTrain):
+    """Press-seal at 31 km/h, door-open relay below 4.5 km/h: inside ILK-05's bands."""
+    INTERLOCKS = {"seal_on_kmh": 31.0, "seal_off_kmh": 29.0, "door_relay_kmh": 4.5}
+
+
+IN_BAND = [HoldCountedToSend, FasterNodes, CommandsEvery12ms, EarlierFallback, PipeTripAt585, DoorBandsNarrow]

@@ -117,7 +117,7 @@ class ReferenceTrain(TrainDriver):
         ccu.desk.key = True
         others_up = any(c.desk.mcr for c in self.train.ccus.values() if c is not ccu)
         self._mark(f"car{cab}.desk", "desk.key", inserted=True)
-        if not others_up:           # ILK-07: only one cab's MCR can pick up
+        if not others_up or not self._cfg.behaviour.mcr_exclusive:   # ILK-07: only one cab's MCR picks up
             ccu.desk.mcr = True
             self._mark(f"car{cab}.desk", "mcr.up")
         ccu.mcr_changed()

@@ -49,6 +49,10 @@ class Behaviour:
     standby_transmits: bool = False       # RED-02 system 2 only monitors while system 1 is healthy
     block_grant_required: bool = True     # PRO-06 no block transfer before the grant
     ilk08_ignored: tuple[str, ...] = ()   # ILK-08 conditions a faulty variant forgets to check
+    separation_trips_rapid: bool = True   # ILK-01 separation applies emergency AND rapid brake
+    oil_protection: bool = True           # ILK-06 oil pump / oil temperature cut the converters
+    ns_forced_passing: bool = True        # ILK-04 entry without warning forces automatic passing
+    mcr_exclusive: bool = True            # ILK-07 only one cab's MCR picks up
 
 
 @dataclass(frozen=True)

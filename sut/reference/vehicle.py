@@ -185,7 +185,9 @@ class Vehicle:
             self.pipe_tripped = False
         separated = any(v == "separated" for k, v in inp.items() if k.startswith("coupler "))
         self._supervise_brake_force()
+        b = self.train.cfg.behaviour
         safety_trip = separated or self.pipe_tripped or self.brake_force_low          # ILK-01..03
+        rapid = safety_trip if b.separation_trips_rapid else (self.pipe_tripped or self.brake_force_low)
         driver_eb = self._handle_brake() >= 8
         atp = inp["ATP brake"]
         eb_loop_open = safety_trip or driver_eb or atp == "emergency"
@@ -198,12 +200,14 @@ class Vehicle:
         relay = speed < cfg.door_relay_kmh
         doors = "open" if inp["doors"] == "open" and relay and not self.seal else "closed"
         # ILK-06
+        for u in self.units:
+            self._unit_protection(u)
         vcb_open = {u: bool(self.unit_faults[u] & {"vcb"}) or self.ns_vcb_open for u in self.units}
         out = {
             "EB valve": "de-energised" if eb_loop_open else "energised",
-            "rapid-brake valve": "de-energised" if safety_trip else "energised",
+            "rapid-brake valve": "de-energised" if rapid else "energised",
             "emergency brake": "applied" if eb_loop_open else "released",
-            "rapid brake": "commanded" if safety_trip else "not commanded",
+            "rapid brake": "commanded" if rapid else "not commanded",
             "press-seal valve": "energised" if self.seal else "de-energised",
             "door-open relay": "acting" if relay else "released",
             "doors": doors,
@@ -211,14 +215,13 @@ class Vehicle:
         }
         for u in self.units:
             out[f"unit{u}.VCB"] = "open" if vcb_open[u] else "closed"
-            self._unit_protection(u)
         for u, cars in self.units.items():
             for car in cars:
                 if f"car{car}.CI contactor" in self.outputs_spec:
                     cut = bool(self.unit_faults[u] & {"converter"}) or vcb_open[u]
                     out[f"car{car}.CI contactor"] = "open" if cut else "closed"
                     out[f"car{car}.CI gates"] = "blocked" if cut else "enabled"
-        out["traction"] = "permitted" if self._permitted(eb_loop_open, safety_trip, doors) else "blocked"
+        out["traction"] = "permitted" if self._permitted(eb_loop_open, rapid, doors) else "blocked"
         for name, value in out.items():
             if self.outputs.get(name) != value:
                 self.outputs[name] = value
@@ -254,7 +257,8 @@ class Vehicle:
             faults.add("vcb")                               # every listed transformer fault opens the VCB
             if transformer in OVERCURRENTS:
                 faults.add("converter")                     # over-currents also cut the converters
-        if inp[f"unit{unit}.oil pump"] == "stopped" or inp[f"unit{unit}.oil temperature"] == "over-temperature":
+        oil = inp[f"unit{unit}.oil pump"] == "stopped" or inp[f"unit{unit}.oil temperature"] == "over-temperature"
+        if oil and self.train.cfg.behaviour.oil_protection:
             faults.add("converter")
 
     def _main_circuit_reset(self) -> None:
@@ -301,6 +305,8 @@ class Vehicle:
             self._ns_arm(self.cfg.ns_entry_timeout_us, "awaiting manual entry")
         elif signal == "entry":
             # without a warning (a faulty warning signal) the network forces automatic passing here
+            if self.ns_phase == "idle" and not self.train.cfg.behaviour.ns_forced_passing:
+                return
             self.ns_phase = "passing"
             self.ns_vcb_open = True
             self._ns_arm(self.cfg.ns_exit_timeout_us, "awaiting manual restore")

@@ -1,0 +1,27 @@
+@item:F-ILK-03 @profile:crh2
+Feature: F-ILK-03 Insufficient brake force applies the emergency and the rapid brake
+  Requirements: ILK-03 (primary).
+  "Insufficient" is the project's definition (DECISIONS.md): a car's brake force below 50 % of the demand
+  for 500 ms while a brake is demanded.
+
+  Background:
+    Given an 8-car CRH2 train set
+    And the driver has inserted the key in cab 1
+    And the train runs at 160 km/h
+    And the train has been powered up for 1000 ms
+
+  @req:ILK-03 @tentative
+  Scenario: F-ILK-03 A car braking at 30 % of its demand trips the emergency brake
+    Given the brake force of car 3 is 30 % of the demand
+    When the driver moves the brake handle of cab 1 to step 4
+    And 1000 ms pass
+    Then the "emergency brake" is applied within 600 ms
+    And the "rapid brake" is commanded within 600 ms
+    And the cab 1 monitor shows "insufficient brake force"
+
+  @req:ILK-03
+  Scenario: F-ILK-03 Full brake force does not trip anything
+    When the driver moves the brake handle of cab 1 to step 4
+    And 2 s pass
+    Then the "emergency brake" never became applied
+    And the "rapid brake" never became commanded

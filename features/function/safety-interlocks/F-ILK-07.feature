@@ -1,0 +1,30 @@
+@item:F-ILK-07 @profile:crh2
+Feature: F-ILK-07 Only one cab's master control relay picks up
+  Requirements: ILK-07 (primary), CMD-05.
+
+  Background:
+    Given an 8-car CRH2 train set
+    And the driver has inserted the key in cab 1
+    And the direction switch of cab 1 is at forward
+    And the traction notch of cab 1 is at 2
+    And the train has been powered up for 1000 ms
+
+  @req:ILK-07 @req:CMD-05
+  Scenario: F-ILK-07 Operations in the other cab are void
+    When the driver inserts the key in cab 8
+    And the driver sets the direction switch of cab 8 to forward
+    And the driver moves the traction notch of cab 8 to 9
+    And 300 ms pass
+    Then only "car1.CCU.sys1" puts commands on the ring
+    And no CI or BCU receives a traction notch other than 2
+
+  @req:ILK-07
+  Scenario: F-ILK-07 The second cab takes over only after the first cab's key is out
+    When the driver removes the key from cab 1
+    And 100 ms pass
+    And the driver inserts the key in cab 8
+    And the driver sets the direction switch of cab 8 to forward
+    And the driver moves the traction notch of cab 8 to 9
+    And 300 ms pass
+    Then only "car8.CCU.sys1" puts commands on the ring
+    And every CI receives traction notch 9 within 60 ms

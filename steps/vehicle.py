@@ -1,0 +1,214 @@
+"""The vehicle around the network (ILK-01..08): speed, main air pipe, doors, couplers, main circuit,
+neutral section, ATP brake; and what the train's valves, relays and breakers do.
+
+Outputs are read from the trace (`out.change` events carry the speed and pressure at that instant), so a
+band test asks *where* a valve dropped, not only whether it did.
+"""
+from __future__ import annotations
+
+from pytest_bdd import given, parsers, then, when
+
+from sut.driver import TrainDriver
+from steps import analysis
+from steps.analysis import ms
+
+
+# An output value is words of lower-case letters and hyphens ("de-energised", "not commanded"), so a
+# sentence that goes on with "within 200 ms" can never be read as a longer value.
+VALUE = r"(?P<value>[a-z][a-z -]*[a-z])"
+NUMBER = r"\d+(?:\.\d+)?"
+
+
+def _us(ms_value: float) -> int:
+    return round(ms_value * 1000)
+
+
+# -- inputs -----------------------------------------------------------------------------------------
+@given(parsers.parse("the train runs at {kmh:g} km/h"))
+@when(parsers.parse("the train speed changes to {kmh:g} km/h"), target_fixture="t_action")
+def _(sut: TrainDriver, kmh: float) -> int:
+    sut.set_input("speed", kmh)
+    return sut.now_us
+
+
+@when(parsers.parse("the train speed goes from {a:g} km/h to {b:g} km/h at {rate:g} km/h per second"),
+      target_fixture="t_action")
+def _(sut: TrainDriver, a: float, b: float, rate: float) -> int:
+    sut.set_input("speed", a)
+    sut.ramp_input("speed", b, rate)
+    return sut.now_us
+
+
+@given(parsers.parse("the main air pipe pressure is {kpa:g} kPa"))
+@when(parsers.parse("the main air pipe pressure changes to {kpa:g} kPa"), target_fixture="t_action")
+def _(sut: TrainDriver, kpa: float) -> int:
+    sut.set_input("main pipe pressure", kpa)
+    return sut.now_us
+
+
+@when(parsers.parse("the main air pipe pressure goes from {a:g} kPa to {b:g} kPa at {rate:g} kPa per second"),
+      target_fixture="t_action")
+def _(sut: TrainDriver, a: float, b: float, rate: float) -> int:
+    sut.set_input("main pipe pressure", a)
+    sut.ramp_input("main pipe pressure", b, rate)
+    return sut.now_us
+
+
+@when(parsers.parse("the train separates between car {a:d} and car {b:d}"), target_fixture="t_action")
+def _(sut: TrainDriver, a: int, b: int) -> int:
+    sut.set_input(f"coupler car{a}~car{b}", "separated")
+    return sut.now_us
+
+
+@given(parsers.parse("the brake force of car {car:d} is {pct:g} % of the demand"))
+def _(sut: TrainDriver, car: int, pct: float) -> None:
+    sut.set_input(f"car{car}.brake force", pct)
+
+
+@given(parsers.parse("the doors are {state:w}"))
+@when(parsers.parse("the driver commands the doors {state:w}"), target_fixture="t_action")
+def _(sut: TrainDriver, state: str) -> int:
+    sut.set_input("doors", state)
+    return sut.now_us
+
+
+@given(parsers.parse("the door-interlock bypass switch is {state:w}"))
+@when(parsers.parse("the driver turns the door-interlock bypass switch {state:w}"), target_fixture="t_action")
+def _(sut: TrainDriver, state: str) -> int:
+    sut.set_input("door bypass", state)
+    return sut.now_us
+
+
+@when(parsers.parse("the ATP commands a {kind:w} brake"), target_fixture="t_action")
+def _(sut: TrainDriver, kind: str) -> int:
+    sut.set_input("ATP brake", kind)
+    return sut.now_us
+
+
+@when("the ATP releases its brake", target_fixture="t_action")
+def _(sut: TrainDriver) -> int:
+    sut.set_input("ATP brake", "none")
+    return sut.now_us
+
+
+@when(parsers.parse("the neutral-section {signal:w} signal arrives"), target_fixture="t_action")
+def _(sut: TrainDriver, signal: str) -> int:
+    sut.set_input("neutral section signal", signal)
+    return sut.now_us
+
+
+@given(parsers.parse('the neutral-section device reports "{state}"'))
+def _(sut: TrainDriver, state: str) -> None:
+    sut.set_input("neutral section device", state)
+
+
+@when("the driver restores the pre-section state manually", target_fixture="t_action")
+def _(sut: TrainDriver) -> int:
+    sut.set_input("neutral section restore", "manual restore")
+    return sut.now_us
+
+
+@when("the driver resets the main circuit", target_fixture="t_action")
+def _(sut: TrainDriver) -> int:
+    sut.set_input("main circuit reset", "reset")
+    return sut.now_us
+
+
+@given(parsers.parse('the vehicle input "{name}" is "{value}"'))
+@when(parsers.parse('the vehicle input "{name}" becomes "{value}"'), target_fixture="t_action")
+def _(sut: TrainDriver, name: str, value: str) -> int:
+    """The catch-all: any input of the SUT's catalogue, so a new test item needs no new Python."""
+    try:
+        parsed: object = float(value)
+    except ValueError:
+        parsed = value
+    sut.set_input(name, parsed)
+    return sut.now_us
+
+
+# -- outputs ----------------------------------------------------------------------------------------
+def _changes(sut: TrainDriver, output: str, since: int, value: str | None = None):
+    found = sut.trace.select(kind="out.change", source=output, since=since)
+    return [ev for ev in found if value is None or ev["value"] == value]
+
+
+@then(parsers.re(rf'the "(?P<output>[^"]+)" is {VALUE}'))
+def _(sut: TrainDriver, output: str, value: str) -> None:
+    got = sut.output(output)
+    assert got == value, f"the {output} is {got}, expected {value}"
+
+
+@then(parsers.re(rf'the "(?P<output>[^"]+)" is {VALUE} within (?P<bound>{NUMBER}) ms'),
+      converters={"bound": float})
+def _(sut: TrainDriver, t_action: int, output: str, value: str, bound: float) -> None:
+    got = sut.output(output)
+    assert got == value, f"the {output} is {got} at {ms(sut.now_us)}, expected {value}"
+    change = sut.trace.last(kind="out.change", source=output, until=sut.now_us)
+    if change is not None and change.t >= t_action:
+        delay = change.t - t_action
+        assert delay <= _us(bound), f"the {output} became {value} after {ms(delay)}, limit {bound} ms"
+
+
+@then(parsers.re(rf'the "(?P<output>[^"]+)" stays {VALUE}'))
+def _(sut: TrainDriver, t_action: int, output: str, value: str) -> None:
+    changes = _changes(sut, output, t_action)
+    assert not changes, f"the {output} changed: {analysis.describe(changes)}"
+    got = sut.output(output)
+    assert got == value, f"the {output} is {got}, expected {value}"
+
+
+@then(parsers.re(rf'the "(?P<output>[^"]+)" became {VALUE} while the main air pipe pressure was between '
+                 rf'(?P<lo>{NUMBER}) and (?P<hi>{NUMBER}) kPa'), converters={"lo": float, "hi": float})
+def _(sut: TrainDriver, t_action: int, output: str, value: str, lo: float, hi: float) -> None:
+    changes = _changes(sut, output, t_action, value)
+    assert changes, f"the {output} never became {value} after {ms(t_action)}"
+    p = changes[0]["pressure"]
+    assert lo <= p <= hi, f"the {output} became {value} at {p:g} kPa, outside {lo:g}..{hi:g} kPa"
+
+
+@then(parsers.re(rf'the "(?P<output>[^"]+)" became {VALUE} while the speed was between (?P<lo>{NUMBER}) and '
+                 rf'(?P<hi>{NUMBER}) km/h'), converters={"lo": float, "hi": float})
+def _(sut: TrainDriver, t_action: int, output: str, value: str, lo: float, hi: float) -> None:
+    changes = _changes(sut, output, t_action, value)
+    assert changes, f"the {output} never became {value} after {ms(t_action)}"
+    v = changes[0]["speed"]
+    assert lo <= v <= hi, f"the {output} became {value} at {v:g} km/h, outside {lo:g}..{hi:g} km/h"
+
+
+@then(parsers.re(rf'the "(?P<output>[^"]+)" never became {VALUE}'))
+def _(sut: TrainDriver, t_action: int, output: str, value: str) -> None:
+    changes = _changes(sut, output, t_action, value)
+    assert not changes, f"the {output} became {value}: {analysis.describe(changes)}"
+    assert sut.output(output) != value, f"the {output} is {value}"
+
+
+@then(parsers.parse('the "{a}" and the "{b}" changed at the same instant'))
+def _(sut: TrainDriver, t_action: int, a: str, b: str) -> None:
+    ca, cb = _changes(sut, a, t_action), _changes(sut, b, t_action)
+    assert ca and cb, f"{a} changes: {len(ca)}, {b} changes: {len(cb)}"
+    assert ca[0].t == cb[0].t, f"the {a} changed at {ms(ca[0].t)}, the {b} at {ms(cb[0].t)}"
+
+
+@then(parsers.parse("no CI receives a traction notch above 0 from {after:g} ms on"))
+def _(sut: TrainDriver, t_action: int, after: float) -> None:
+    takes = [ev for ev in sut.trace.select(kind="cmd.in", source="*.CI", since=t_action + _us(after))]
+    assert takes, "no CI received any command"
+    odd = [ev for ev in takes if (ev["traction"] or 0) > 0 or ev["traction_step"] in ("A", "B")]
+    assert not odd, f"traction reached a CI: {analysis.describe(odd)}"
+
+
+@then(parsers.parse("every CI receives traction notch {notch:d} within {bound:g} ms"))
+def _(sut: TrainDriver, t_action: int, notch: int, bound: float) -> None:
+    for device in [d for d in analysis.command_devices(sut) if d.endswith(".CI")]:
+        got = sut.trace.first(kind="cmd.in", source=device, since=t_action, until=t_action + _us(bound),
+                              traction=notch)
+        assert got is not None, f"{device} did not receive traction notch {notch} within {bound} ms"
+
+
+@then(parsers.parse("from {after:g} ms on every BCU receives brake step {step:d}"))
+def _(sut: TrainDriver, t_action: int, after: float, step: int) -> None:
+    for device in [d for d in analysis.command_devices(sut) if d.endswith(".BCU")]:
+        takes = sut.trace.select(kind="cmd.in", source=device, since=t_action + _us(after))
+        assert takes, f"{device} received nothing"
+        odd = [ev for ev in takes if ev["brake"] != step]
+        assert not odd, f"{device} received other brake steps: {analysis.describe(odd)}"
