@@ -152,6 +152,14 @@ class TrainDriver(abc.ABC):
         """A vehicle output: a valve, relay, breaker or contactor state, the doors, traction permission."""
         raise NotSupported(f"{self.backend_name} has no vehicle outputs")
 
+    def reading(self, name: str) -> float:
+        """A numeric reading of the train: speed (km/h), main pipe pressure (kPa), mileage (km)."""
+        raise NotSupported(f"{self.backend_name} has no readings")
+
+    def monitor_order(self, cab: int, name: str, value: str) -> None:
+        """The driver orders equipment from the cab monitor (service equipment, remote cut-out, VCB, ...)."""
+        raise NotSupported(f"{self.backend_name} takes no monitor orders")
+
     def vehicle_names(self) -> dict[str, list[str]]:
         return {"inputs": [], "outputs": []}
 

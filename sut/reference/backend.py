@@ -207,6 +207,19 @@ class ReferenceTrain(TrainDriver):
     def output(self, name: str) -> str:
         return self.train.vehicle.output(name)
 
+    def reading(self, name: str) -> float:
+        return self.train.vehicle.reading(name)
+
+    def monitor_order(self, cab: int, name: str, value: str) -> None:
+        ccu = self._cab(cab)
+        allowed = self.train.vehicle.orderable(name)
+        if allowed is None or name not in self.train.display.by_name:
+            known = [n for n in self.train.display.by_name if self.train.vehicle.orderable(n)]
+            raise UnknownName("equipment the monitor can order", name, known)
+        if value not in allowed:
+            raise OutOfRange(f"order for {name}", value, ", ".join(allowed))
+        ccu.order(name, value)
+
     def vehicle_names(self) -> dict[str, list[str]]:
         v = self.train.vehicle
         return {"inputs": sorted(v.inputs_spec), "outputs": sorted(v.outputs)}

@@ -98,6 +98,10 @@ class CcuSystem(RingNode):
         if self.ccu.monitor_source() is self:
             self.train.emit(f"car{self.car}.monitor", "status.rx",
                             frm=self.train.node_by_number(src).name, seq=fields["seq"])
+            for raw in fields.get("points", ()):
+                decoded = self.train.display.decode(raw)
+                if decoded is not None:
+                    self.ccu.display_update(*decoded)
         super().on_status(fields, src)
 
 
@@ -111,6 +115,8 @@ class Ccu:
         self.master = 1
         self._watch: "Timer | None" = None
         self.lamps = {name: False for name in LAMPS}
+        self.display: dict[str, Any] = {}         # what the cab monitor shows, from status data
+        self.orders: dict[str, str] = {}          # equipment orders given on this monitor, not yet shown done
 
     @property
     def commanding(self) -> bool:
@@ -184,6 +190,20 @@ class Ccu:
                 self.train.emit(f"car{self.car}.cab", "lamp.on" if on else "lamp.off", lamp=name)
 
     # -- the cab monitor ------------------------------------------------------------------------
+    def display_update(self, name: str, value: Any) -> None:
+        if self.display.get(name) != value:
+            self.display[name] = value
+            self.train.emit(f"car{self.car}.monitor", "display.change", name=name, value=value)
+        if self.orders.get(name) == value:
+            del self.orders[name]                 # the order is shown done: stop sending it
+
+    def order(self, name: str, value: str) -> None:
+        if not self.commanding:
+            self.train.emit(f"car{self.car}.monitor", "order.void", name=name, value=value)   # ILK-07
+            return
+        self.orders[name] = value
+        self.train.emit(f"car{self.car}.monitor", "order.given", name=name, value=value)
+
     def monitor_source(self) -> CcuSystem | None:
         for system in self.systems:
             if system.cpu3.alive:
@@ -217,4 +237,5 @@ class Ccu:
             for i, board in enumerate(fr.HEALTH_BITS):
                 if not fields.get("health", 0xFF) & (1 << i):
                     faults.append(f"{node.name}.{board} failure")
-        return {"status": status, "faults": sorted(set(faults)), "fed_by": source.name if source else None}
+        return {"status": status, "faults": sorted(set(faults)), "fed_by": source.name if source else None,
+                "display": dict(self.display)}

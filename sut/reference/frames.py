@@ -11,8 +11,8 @@ import itertools
 from dataclasses import dataclass
 from typing import Any
 
-from construct import (Byte, Bytes, Const, ConstructError, Int16ub, Int16ul, Int32ub, Padding,
-                       Struct, this)
+from construct import (Byte, Bytes, Const, ConstructError, Int16ub, Int16ul, Int32sb, Int32ub, Padded,
+                       PrefixedArray, Struct, this)
 
 # -- check sequences ------------------------------------------------------------------------------
 
@@ -143,7 +143,8 @@ COMMAND = Struct(                     # PRO-01: 12 bytes
 assert COMMAND.sizeof() == 12
 
 STATUS_SIZE = 240
-STATUS = Struct(                      # PRO-02: 240 bytes
+POINT = Struct("id" / Int16ub, "value" / Int32sb)   # a display point or an equipment order (display.py)
+STATUS = Padded(STATUS_SIZE, Struct(  # PRO-02: 240 bytes
     "kind" / Const(K_STATUS, Byte),
     "node" / Byte,
     "car" / Byte,
@@ -153,8 +154,9 @@ STATUS = Struct(                      # PRO-02: 240 bytes
     "block_request" / Byte,           # blocks waiting to be sent, 0 = no request
     "grant" / Byte,                   # master only: node number granted a block transfer, 0 = none
     "seq" / Int16ub,
-    Padding(STATUS_SIZE - 10),
-)
+    "points" / PrefixedArray(Byte, POINT),   # this node's display points for the cab monitor
+    "orders" / PrefixedArray(Byte, POINT),   # commanding CCU only: equipment orders from the monitor
+))
 assert STATUS.sizeof() == STATUS_SIZE
 HEALTH_BITS = ("CPU3", "MDM8", "MDM9", "RXC", "TXC")
 

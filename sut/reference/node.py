@@ -240,6 +240,7 @@ class RingNode:
 
     def on_status(self, fields: dict, src: int) -> None:
         self.train.block_master_saw_status(self, fields, src)
+        self.train.orders_received(self, fields)
 
     def on_block(self, fields: dict, src: int) -> None:
         self.train.block_received(self, fields, src)
@@ -256,7 +257,8 @@ class RingNode:
                   grant=grant)
         frame = fr.data_frame(fr.K_STATUS, self.number, fr.BROADCAST, fr.P_STATUS, node=self.number,
                               car=self.car, unit=1 if self.unit == "CCU" else 2, health=self.health_byte(),
-                              ports=ports, block_request=request, grant=grant, seq=self.status_seq)
+                              ports=ports, block_request=request, grant=grant, seq=self.status_seq,
+                              points=self.train.display.points_for(self), orders=self.train.orders_for(self))
         self.train.ring.broadcast(self, frame)
         self.train.selfdiag_status_leak(self, frame)
         if self.pending_blocks and not self.train.cfg.behaviour.block_grant_required:

@@ -12,6 +12,7 @@ from sut.reference.boards import PowerSupply
 from sut.reference.ccu import Ccu, CcuSystem
 from sut.reference.config import TrainConfig
 from sut.reference.devices import LoopDevice
+from sut.reference.display import DisplayTable
 from sut.reference.kernel import Kernel
 from sut.reference.lcu import Lcu
 from sut.reference.node import RingNode
@@ -62,6 +63,7 @@ class Train:
         self.block_granted = 0
         self.block_records: dict[int, dict[int, bytes]] = {}
         self.vehicle = Vehicle(self)
+        self.display = DisplayTable(self)
 
     def _add_loop_devices(self, lcu: Lcu) -> None:
         periods = dict(self.cfg.timing.current_loop_periods_us)
@@ -147,6 +149,22 @@ class Train:
         self.block_records.setdefault(owner, {})[fields["index"]] = fields["data"]
         self.emit(f"{node.name}.CPU3", "block.rx", owner=self.node_by_number(owner).name, index=fields["index"],
                   total=fields["total"], bytes=len(fields["data"]))
+
+    # -- the cab monitor's equipment orders (DECISIONS.md, "Display") ----------------------------
+    def orders_for(self, node: RingNode) -> list[dict[str, int]]:
+        ccu = self.commanding_ccu()
+        if ccu is None or node is not ccu.systems[ccu.master - 1]:
+            return []
+        return [self.display.order(name, value) for name, value in ccu.orders.items()]
+
+    def orders_received(self, node: RingNode, fields: dict) -> None:
+        for raw in fields.get("orders", ()):
+            decoded = self.display.decode(raw)
+            if decoded is None:
+                continue
+            name, value = decoded
+            if self.display.by_name[name].owner == node.name:
+                self.vehicle.apply_order(name, value)
 
     # -- NET-04: the self-diagnostic line carries commands only ----------------------------------
     def selfdiag_status_leak(self, node: RingNode, frame: Any) -> None:

@@ -78,9 +78,28 @@ def catalogue(cars: int, units: int) -> tuple[dict[str, Spec], dict[str, tuple]]
         "neutral section": ("idle", "warned", "passing", "awaiting manual entry", "awaiting manual restore",
                             "manual passing"),
     }
+    outputs["compressor"] = ("stopped", "running")
+    outputs["passenger information"] = ("none", "next station", "welcome aboard")
     for unit in range(1, units + 1):
         outputs[f"unit{unit}.VCB"] = ("closed", "open")
+        outputs[f"unit{unit}.pantograph"] = ("up", "down")
+        outputs[f"unit{unit}.auxiliary supply"] = ("own", "extended", "none")
+    for car in range(1, cars + 1):
+        outputs[f"car{car}.air conditioning"] = ("on", "off")
+        outputs[f"car{car}.lighting"] = ("on", "off")
     return inputs, outputs
+
+
+# Outputs the driver can order from the cab monitor (service equipment and remote control), with the
+# state each order sets; everything else only follows the train.
+ORDERS = {
+    "VCB": ("closed", "open"),
+    "pantograph": ("up", "down"),
+    "CI cut-out": ("in", "cut out"),
+    "air conditioning": ("on", "off"),
+    "lighting": ("on", "off"),
+    "passenger information": ("none", "next station", "welcome aboard"),
+}
 
 
 class Vehicle:
@@ -95,6 +114,12 @@ class Vehicle:
         for car in train.cfg.motor_cars():
             self.outputs_spec[f"car{car}.CI contactor"] = ("closed", "open")
             self.outputs_spec[f"car{car}.CI gates"] = ("enabled", "blocked")
+            self.outputs_spec[f"car{car}.CI cut-out"] = ("in", "cut out")
+        self.ordered: dict[str, str] = {}          # equipment states ordered from the monitor
+        self.compressor = False
+        self.mileage_m = 0.0
+        self._odo_t = 0
+        self._odo_v = 0.0
         self.inputs: dict[str, Any] = {k: s.initial for k, s in self.inputs_spec.items() if s.initial is not None}
         self.outputs: dict[str, str] = {}
         self._ramps: dict[str, "Timer"] = {}
@@ -131,6 +156,8 @@ class Vehicle:
         def tick() -> None:
             now = self.inputs[name]
             nxt = min(to, now + step) if to > now else max(to, now - step)
+            if name == "speed":
+                self._odometer(nxt, linear=True)
             self.inputs[name] = round(nxt, 6)
             self._evaluate()
             if nxt != to:
@@ -161,8 +188,38 @@ class Vehicle:
         elif name == "main circuit reset":
             self._main_circuit_reset()
         else:
+            if name == "speed":
+                self._odometer(value, linear=False)
             self.inputs[name] = value
         self._evaluate()
+
+    # -- mileage: speed integrated exactly over piecewise-constant and linear pieces -------------
+    def _odometer(self, new_speed: float, linear: bool) -> None:
+        now = self.kernel.now
+        dt_s = (now - self._odo_t) / 1e6
+        start = self._odo_v
+        end = new_speed if linear else start
+        self.mileage_m += (start + end) / 2 / 3.6 * dt_s
+        self._odo_t, self._odo_v = now, new_speed
+
+    def reading(self, name: str) -> float:
+        """Numeric readings: speed (km/h), main pipe pressure (kPa), mileage (km)."""
+        if name == "mileage":
+            dt_s = (self.kernel.now - self._odo_t) / 1e6
+            return (self.mileage_m + self._odo_v / 3.6 * dt_s) / 1000
+        if name in ("speed", "main pipe pressure"):
+            return float(self.inputs[name])
+        raise UnknownName("reading", name, ("speed", "main pipe pressure", "mileage"))
+
+    def apply_order(self, name: str, value: str) -> None:
+        if self.ordered.get(name) != value:
+            self.ordered[name] = value
+            self.train.emit("vehicle", "order.applied", name=name, value=value)
+            self._evaluate()
+
+    @staticmethod
+    def orderable(name: str) -> tuple[str, ...] | None:
+        return ORDERS.get(name.split(".", 1)[-1]) or ORDERS.get(name)
 
     def _spec(self, name: str) -> Spec:
         if name not in self.inputs_spec:
@@ -202,7 +259,15 @@ class Vehicle:
         # ILK-06
         for u in self.units:
             self._unit_protection(u)
-        vcb_open = {u: bool(self.unit_faults[u] & {"vcb"}) or self.ns_vcb_open for u in self.units}
+        order = self.ordered.get
+        vcb_open = {u: bool(self.unit_faults[u] & {"vcb"}) or self.ns_vcb_open
+                    or order(f"unit{u}.VCB") == "open" or order(f"unit{u}.pantograph") == "down"
+                    for u in self.units}
+        # compressor governor (DECISIONS.md): start below 780 kPa, stop at 880 kPa
+        if not self.compressor and pressure < 780:
+            self.compressor = True
+        elif self.compressor and pressure >= 880:
+            self.compressor = False
         out = {
             "EB valve": "de-energised" if eb_loop_open else "energised",
             "rapid-brake valve": "de-energised" if rapid else "energised",
@@ -212,13 +277,25 @@ class Vehicle:
             "door-open relay": "acting" if relay else "released",
             "doors": doors,
             "neutral section": self.ns_phase,
+            "compressor": "running" if self.compressor else "stopped",
+            "passenger information": order("passenger information", "none"),
         }
+        for car in range(1, self.train.cfg.cars + 1):
+            out[f"car{car}.air conditioning"] = order(f"car{car}.air conditioning", "on")
+            out[f"car{car}.lighting"] = order(f"car{car}.lighting", "on")
         for u in self.units:
             out[f"unit{u}.VCB"] = "open" if vcb_open[u] else "closed"
+            out[f"unit{u}.pantograph"] = order(f"unit{u}.pantograph", "up")
+            # tertiary supply switching: a unit whose VCB is open takes its auxiliary supply from a unit
+            # whose VCB is closed (the extension supply), if there is one
+            others = [o for o in self.units if o != u and not vcb_open[o]]
+            out[f"unit{u}.auxiliary supply"] = "own" if not vcb_open[u] else ("extended" if others else "none")
         for u, cars in self.units.items():
             for car in cars:
                 if f"car{car}.CI contactor" in self.outputs_spec:
-                    cut = bool(self.unit_faults[u] & {"converter"}) or vcb_open[u]
+                    cut_out = order(f"car{car}.CI cut-out", "in") == "cut out"
+                    out[f"car{car}.CI cut-out"] = "cut out" if cut_out else "in"
+                    cut = bool(self.unit_faults[u] & {"converter"}) or vcb_open[u] or cut_out
                     out[f"car{car}.CI contactor"] = "open" if cut else "closed"
                     out[f"car{car}.CI gates"] = "blocked" if cut else "enabled"
         out["traction"] = "permitted" if self._permitted(eb_loop_open, rapid, doors) else "blocked"

@@ -1,0 +1,81 @@
+"""What the cab monitor shows and how it gets there: display points in status data (DECISIONS.md, "Display").
+
+Every display point has an owner node, the LCU of the car where the state is measured (train-wide readings
+such as speed and main pipe pressure: car 1's LCU; a traction unit's: its first motor car's LCU). The owner
+puts the point's current value in its status data; the monitor decodes it when the status data arrives, so
+what the driver sees is at most one status cycle old. Equipment orders from the monitor travel the other
+way in the commanding CCU's status data and stay there until the monitor shows them done.
+"""
+from __future__ import annotations
+
+from dataclasses import dataclass
+from typing import TYPE_CHECKING, Any
+
+if TYPE_CHECKING:
+    from sut.reference.node import RingNode
+    from sut.reference.train import Train
+
+# numeric readings: name -> (unit shown, scale on the wire)
+NUMERIC = {"speed": ("km/h", 10), "main pipe pressure": ("kPa", 10), "mileage": ("km", 1000)}
+
+
+@dataclass(frozen=True)
+class Point:
+    id: int
+    name: str
+    owner: str                  # node name
+    values: tuple[str, ...]     # allowed states; empty for a numeric reading
+
+
+class DisplayTable:
+    def __init__(self, train: "Train"):
+        self.train = train
+        vehicle = train.vehicle
+        per = train.cfg.cars_per_set
+        points: list[Point] = []
+        for name in list(NUMERIC) + sorted(vehicle.outputs_spec):
+            points.append(Point(len(points) + 1, name, self._owner(name, per), vehicle.outputs_spec.get(name, ())))
+        self.points = points
+        self.by_name = {p.name: p for p in points}
+        self.by_id = {p.id: p for p in points}
+        self.by_owner: dict[str, list[Point]] = {}
+        for p in points:
+            self.by_owner.setdefault(p.owner, []).append(p)
+
+    def _owner(self, name: str, per: int) -> str:
+        head = name.split(".", 1)[0]
+        if head.startswith("car"):
+            return f"{head}.LCU"
+        if head.startswith("unit"):
+            cars = self.train.vehicle.units[int(head[4:])]
+            motors = [c for c in cars if c in self.train.cfg.motor_cars()] or cars
+            return f"car{motors[0]}.LCU"
+        return "car1.LCU"
+
+    # -- owner side -----------------------------------------------------------------------------
+    def points_for(self, node: "RingNode") -> list[dict[str, int]]:
+        return [{"id": p.id, "value": self.encode(p, self.current(p.name))} for p in self.by_owner.get(node.name, ())]
+
+    def current(self, name: str) -> Any:
+        vehicle = self.train.vehicle
+        return vehicle.reading(name) if name in NUMERIC else vehicle.output(name)
+
+    def encode(self, point: Point, value: Any) -> int:
+        if not point.values:
+            return round(value * NUMERIC[point.name][1])
+        return point.values.index(value)
+
+    # -- monitor side ---------------------------------------------------------------------------
+    def decode(self, raw: dict) -> tuple[str, Any] | None:
+        point = self.by_id.get(raw["id"])
+        if point is None:
+            return None
+        if not point.values:
+            return point.name, raw["value"] / NUMERIC[point.name][1]
+        if not 0 <= raw["value"] < len(point.values):
+            return None
+        return point.name, point.values[raw["value"]]
+
+    def order(self, name: str, value: str) -> dict[str, int]:
+        point = self.by_name[name]
+        return {"id": point.id, "value": point.values.index(value)}
