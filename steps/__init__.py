@@ -12,4 +12,5 @@ STEP_MODULES = [
     "steps.commands",
     "steps.network",
     "steps.vehicle",
+    "steps.monitor",
 ]

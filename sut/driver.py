@@ -204,8 +204,9 @@ class TrainDriver(abc.ABC):
     def lamp(self, cab: int, name: str) -> bool: ...
 
     @abc.abstractmethod
-    def block_store(self, node: str) -> dict[str, bytes]:
-        """Records received as block data at `node`, by sending node."""
+    def block_store(self, node: str) -> dict[str, list[bytes]]:
+        """Complete records received as block data at `node`, by sending node, oldest first (236-byte
+        blocks, so a record is padded with zero bytes to whole blocks)."""
 
     @abc.abstractmethod
     def describe(self) -> dict[str, str]:

@@ -38,7 +38,7 @@ def command_frame(**over) -> frames.Frame:
 
 def status_frame() -> frames.Frame:
     return data_frame(K_STATUS, 3, BROADCAST, P_STATUS, node=3, car=1, unit=2, health=0b11111, ports=3,
-                      block_request=0, grant=0, seq=9)
+                      block_request=0, grant=0, seq=9, points=[{"id": 1, "value": -5}], orders=[])
 
 
 # -- check sequences ------------------------------------------------------------------------------
@@ -240,6 +240,12 @@ def test_payload_sizes():
     assert status_frame().data_bytes == 240
     assert len(command_frame().wire) == 5 + 12 + 2       # soh sid did did2 il + data + crc
     assert len(status_frame().wire) == 5 + 240 + 2
+
+
+def test_status_points_round_trip():
+    data = status_frame().wire[5:-2]
+    fields = decode_payload(data)
+    assert [dict(p) for p in fields["points"]] == [{"id": 1, "value": -5}] and list(fields["orders"]) == []
 
 
 def test_payload_round_trip_through_a_packet():

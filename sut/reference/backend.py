@@ -257,7 +257,19 @@ class ReferenceTrain(TrainDriver):
     def monitor(self, cab: int) -> dict[str, Any]:
         view = self._cab(cab).monitor_view(stale_us=self._cfg.timing.token_loss_us)
         view["faults"] = sorted(view["faults"] + self.train.vehicle.monitor_alarms())
+        view["maintenance"] = self._fault_history()
         return view
+
+    def _fault_history(self) -> list[str]:
+        """The maintenance view: fault records held at the master, oldest first (DECISIONS.md)."""
+        entries = []
+        for records in self.train.records().values():
+            for record in records:
+                text = record.rstrip(b"\0").decode("ascii", "replace")
+                if text.startswith("F|"):
+                    _, t_ms, node, board, event = text.split("|")
+                    entries.append((int(t_ms), f"{t_ms} ms {node}.{board} {event}"))
+        return [line for _, line in sorted(entries)]
 
     def status_table(self, node: str) -> dict[str, int | None]:
         me = self._node(node)
@@ -271,18 +283,11 @@ class ReferenceTrain(TrainDriver):
             raise UnknownName("cab lamp", name, lamps)
         return lamps[name]
 
-    def block_store(self, node: str) -> dict[str, bytes]:
+    def block_store(self, node: str) -> dict[str, list[bytes]]:
         me = self._node(node)
         if me is not self.train.block_master():
             return {}
-        out = {}
-        for owner, blocks in self.train.block_records.items():
-            data, i = b"", 0
-            while i in blocks:
-                data += blocks[i]
-                i += 1
-            out[self.train.node_by_number(owner).name] = data
-        return out
+        return self.train.records()
 
     def describe(self) -> dict[str, str]:
         out = {"SUT backend": self.backend_name, "SUT class": f"{type(self).__module__}.{type(self).__qualname__}",

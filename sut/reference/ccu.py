@@ -49,6 +49,7 @@ class Txc:
             self.failsafe = True
             train.emit(self.name, "txc.failsafe", group1=mine.as_dict(), group2=theirs.as_dict(),
                        group1_healthy=healthy)
+            self.system.board_changed()
             return None
         return mine
 
@@ -63,6 +64,8 @@ class CcuSystem(RingNode):
         self.txc = Txc(self, txc_supply)
         self.last_status: dict[int, dict] = {}
         self.cmd_seq = 0
+        self._health_seen = self.health_byte()
+        self.txc.board.listeners.append(self.board_changed)
 
     def board(self, short: str) -> Board | None:
         return {"CPU3": self.cpu3, "MDM8": self.mdm8, "TXC": self.txc.board}.get(short)

@@ -28,11 +28,12 @@ class CommandDevice:
         self.last: dict | None = None
 
     def take(self, path: int, *, traction: int | None, brake: int | None, traction_step: str | None,
-             brake_step: str | None, seq: int | None) -> None:
+             brake_step: str | None, seq: int | None, direction: int | None = None) -> None:
         self.last = dict(path=path, traction=traction, brake=brake, traction_step=traction_step,
                          brake_step=brake_step, t=self.train.kernel.now)
+        direction_name = None if direction is None else ("neutral", "forward", "reverse")[direction]
         self.train.emit(self.name, "cmd.in", path=path, traction=traction, brake=brake,
-                        traction_step=traction_step, brake_step=brake_step, seq=seq)
+                        traction_step=traction_step, brake_step=brake_step, seq=seq, direction=direction_name)
 
 
 class LoopDevice:

@@ -16,7 +16,11 @@ if TYPE_CHECKING:
     from sut.reference.train import Train
 
 # numeric readings: name -> (unit shown, scale on the wire)
-NUMERIC = {"speed": ("km/h", 10), "main pipe pressure": ("kPa", 10), "mileage": ("km", 1000)}
+NUMERIC = {"speed": ("km/h", 10), "main pipe pressure": ("kPa", 10), "mileage": ("km", 1000),
+           "traction notch": ("", 1), "brake step": ("", 1)}
+# the running state: what car 1's LCU last received over the network from the commanding cab
+RUNNING = {"traction notch": "traction", "brake step": "brake", "direction": "direction"}
+DIRECTIONS = ("neutral", "forward", "reverse")
 
 
 @dataclass(frozen=True)
@@ -33,8 +37,9 @@ class DisplayTable:
         vehicle = train.vehicle
         per = train.cfg.cars_per_set
         points: list[Point] = []
-        for name in list(NUMERIC) + sorted(vehicle.outputs_spec):
-            points.append(Point(len(points) + 1, name, self._owner(name, per), vehicle.outputs_spec.get(name, ())))
+        for name in list(NUMERIC) + ["direction"] + sorted(vehicle.outputs_spec):
+            values = DIRECTIONS if name == "direction" else vehicle.outputs_spec.get(name, ())
+            points.append(Point(len(points) + 1, name, self._owner(name, per), values))
         self.points = points
         self.by_name = {p.name: p for p in points}
         self.by_id = {p.id: p for p in points}
@@ -54,9 +59,15 @@ class DisplayTable:
 
     # -- owner side -----------------------------------------------------------------------------
     def points_for(self, node: "RingNode") -> list[dict[str, int]]:
-        return [{"id": p.id, "value": self.encode(p, self.current(p.name))} for p in self.by_owner.get(node.name, ())]
+        return [{"id": p.id, "value": self.encode(p, self.current(p.name, node))}
+                for p in self.by_owner.get(node.name, ())]
 
-    def current(self, name: str) -> Any:
+    def current(self, name: str, node: "RingNode") -> Any:
+        if name in RUNNING:
+            latest = getattr(node, "fresh_command", lambda: None)()
+            if name == "direction":
+                return DIRECTIONS[latest["direction"]] if latest else "neutral"
+            return latest[RUNNING[name]] if latest else 0
         vehicle = self.train.vehicle
         return vehicle.reading(name) if name in NUMERIC else vehicle.output(name)
 

@@ -43,6 +43,7 @@ class Rxc:
         if self.group1.failed or self.group2.failed:
             self.failsafe = True
             self.train.emit(self.name, "rxc.failsafe")
+            self.lcu.board_changed()
             return False
         return True
 
@@ -89,6 +90,9 @@ class Lcu(RingNode):
         self.loop_devices: list[LoopDevice] = []
         self.latest: dict | None = None
         self.latest_us = -1
+        self._health_seen = self.health_byte()
+        for board in (self.mdm9, self.rxc.board):
+            board.listeners.append(self.board_changed)
 
     def board(self, short: str) -> Board | None:
         return {"CPU3": self.cpu3, "MDM8": self.mdm8, "MDM9": self.mdm9, "RXC": self.rxc.board}.get(short)
@@ -116,13 +120,17 @@ class Lcu(RingNode):
         self.latest, self.latest_us = fields, self.kernel.now
         self.kernel.call_later(self.train.cfg.timing.rxc_loop_us, self.rxc.from_loop, fields, self.mdm9.alive)
 
+    def fresh_command(self) -> dict | None:
+        """The last ring command, if it is still fresh enough to act on."""
+        if self.latest is None or self.kernel.now - self.latest_us >= self.train.cfg.timing.rxc_fallback_us:
+            return None
+        return self.latest
+
     def _poll(self) -> None:
         """MDM9 polls CI and BCU over HDLC (fibre) every 10 ms with the freshest ring command."""
-        if not self.mdm9.alive or self.latest is None:
+        cmd = self.fresh_command()
+        if not self.mdm9.alive or cmd is None:
             return
-        if self.kernel.now - self.latest_us >= self.train.cfg.timing.rxc_fallback_us:
-            return
-        cmd = self.latest
         for device in self.command_devices:
             device.take(1, traction=cmd["traction"], brake=cmd["brake"], traction_step=None, brake_step=None,
-                        seq=cmd["seq"])
+                        seq=cmd["seq"], direction=cmd["direction"])

@@ -53,9 +53,8 @@ class RingNode:
         # status data and block data
         self.status_seq = 0
         self.heard: dict[int, int] = {}       # node number -> time of its last status data here
-        self.pending_blocks: list[bytes] = []
-        self.block_total = 0
-        self.block_sent = 0
+        self.pending_blocks: list[tuple[int, int, int, bytes]] = []   # (record, index, total, 236 bytes)
+        self.records_made = 0
         self._block_timer: "Timer | None" = None
         self.granted = False
         self.mdm8.listeners.append(self._optics_changed)
@@ -87,6 +86,22 @@ class RingNode:
             if self.board_healthy(board):
                 bits |= 1 << i
         return bits
+
+    def board_changed(self) -> None:
+        """CPU3 writes a fault record (block data to the master) for every board that failed or recovered
+        (DECISIONS.md, "Fault records"); a dead CPU3 writes nothing."""
+        health = self.health_byte()
+        last = getattr(self, "_health_seen", health)
+        self._health_seen = health
+        if health == last or not self.cpu3.alive:
+            return
+        for i, board in enumerate(fr.HEALTH_BITS):
+            was, now = bool(last >> i & 1), bool(health >> i & 1)
+            if was != now:
+                event = "recovered" if now else "failed"
+                line = f"F|{self.kernel.now // 1000}|{self.name}|{board}|{event}"
+                self.emit("fault.record", at=f"{self.name}.CPU3", board=board, event=event)
+                self.queue_record(line.encode())
 
     def board_healthy(self, short: str) -> bool:
         """What this node reports of a board in its status data (absent boards count as healthy)."""
@@ -267,10 +282,10 @@ class RingNode:
     def queue_record(self, data: bytes) -> None:
         size = fr.BLOCK_SIZE
         blocks = [data[i:i + size].ljust(size, b"\0") for i in range(0, len(data), size)] or [bytes(size)]
-        self.pending_blocks.extend(blocks)
-        self.block_total = len(blocks)
-        self.block_sent = 0
-        self.emit("block.queued", at=f"{self.name}.CPU3", blocks=len(blocks), bytes=len(data))
+        self.records_made = (self.records_made + 1) & 0xFFFF
+        record = self.records_made
+        self.pending_blocks.extend((record, i, len(blocks), block) for i, block in enumerate(blocks))
+        self.emit("block.queued", at=f"{self.name}.CPU3", record=record, blocks=len(blocks), bytes=len(data))
 
     @property
     def block_busy(self) -> bool:
@@ -284,15 +299,13 @@ class RingNode:
         self._block_timer = None
         if not self.pending_blocks or not self.cpu3.alive:
             return
-        block = self.pending_blocks.pop(0)
+        record, index, total, block = self.pending_blocks.pop(0)
         master = self.train.block_master()
-        index = self.block_sent
-        self.block_sent += 1
-        self.emit("block.tx", at=f"{self.name}.CPU3", index=index, total=self.block_total,
+        self.emit("block.tx", at=f"{self.name}.CPU3", record=record, index=index, total=total,
                   to=master.name if master else None)
         if master is not None:
             frame = fr.data_frame(fr.K_BLOCK, self.number, master.number, fr.P_BLOCK, owner=self.number,
-                                  index=index, total=self.block_total, data=block)
+                                  record=record, index=index, total=total, data=block)
             self.train.ring.broadcast(self, frame)
         if self.pending_blocks:
             self._block_timer = self.kernel.call_later(self.train.cfg.timing.block_spacing_us,

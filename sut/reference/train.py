@@ -61,7 +61,8 @@ class Train:
         # PRO-06 block transfer bookkeeping at the master node
         self.block_queue: list[int] = []
         self.block_granted = 0
-        self.block_records: dict[int, dict[int, bytes]] = {}
+        self.block_records: dict[tuple[int, int], dict[int, bytes]] = {}   # (owner, record) -> blocks
+        self.block_totals: dict[tuple[int, int], int] = {}
         self.vehicle = Vehicle(self)
         self.display = DisplayTable(self)
 
@@ -145,10 +146,22 @@ class Train:
     def block_received(self, node: RingNode, fields: dict, src: int) -> None:
         if node is not self.block_master():
             return
-        owner = fields["owner"]
-        self.block_records.setdefault(owner, {})[fields["index"]] = fields["data"]
-        self.emit(f"{node.name}.CPU3", "block.rx", owner=self.node_by_number(owner).name, index=fields["index"],
-                  total=fields["total"], bytes=len(fields["data"]))
+        key = (fields["owner"], fields["record"])
+        self.block_records.setdefault(key, {})[fields["index"]] = fields["data"]
+        self.block_totals[key] = fields["total"]
+        self.emit(f"{node.name}.CPU3", "block.rx", owner=self.node_by_number(key[0]).name, record=key[1],
+                  index=fields["index"], total=fields["total"], bytes=len(fields["data"]))
+
+    def records(self) -> dict[str, list[bytes]]:
+        """Complete records held at the master, by owner, in the order they were made."""
+        out: dict[str, list[bytes]] = {}
+        for (owner, record) in sorted(self.block_records):
+            blocks = self.block_records[(owner, record)]
+            total = self.block_totals[(owner, record)]
+            if len(blocks) == total:
+                out.setdefault(self.node_by_number(owner).name, []).append(
+                    b"".join(blocks[i] for i in range(total)))
+        return out
 
     # -- the cab monitor's equipment orders (DECISIONS.md, "Display") ----------------------------
     def orders_for(self, node: RingNode) -> list[dict[str, int]]:

@@ -361,6 +361,7 @@ class Vehicle:
             "brakes": not (emergency or rapid),                                        # (3)
             "doors": doors == "closed" or inp["door bypass"] == "on",                  # (4)
             "braking": not braking,                                                    # brake outranks traction
+            "neutral section": self.ns_phase not in ("warned", "passing"),   # ILK-04: no traction into it
         }
         return all(ok for name, ok in conditions.items() if name not in b.ilk08_ignored)
 

@@ -1,0 +1,97 @@
+"""The cab monitor as the driver and the maintainer see it: displayed values, equipment orders, the fault
+history; and the readings behind them (mileage).
+
+What the monitor displays arrives in status data, so every "within" here is measured from the action to
+the `display.change` the monitor recorded.
+"""
+from __future__ import annotations
+
+from pytest_bdd import given, parsers, then, when
+
+from sut.driver import TrainDriver
+from steps import analysis
+from steps.analysis import ms
+
+
+def _us(ms_value: float) -> int:
+    return round(ms_value * 1000)
+
+
+def _same(shown: object, want: str) -> bool:
+    try:
+        return float(shown) == float(want)          # numbers compare as numbers ("4" == 4.0)
+    except (TypeError, ValueError):
+        return shown == want
+
+
+@given(parsers.parse('"{name}" has been ordered to "{value}" on the cab {cab:d} monitor'))
+@when(parsers.parse('the driver orders "{name}" to "{value}" on the cab {cab:d} monitor'), target_fixture="t_action")
+def _(sut: TrainDriver, name: str, value: str, cab: int) -> int:
+    sut.monitor_order(cab, name, value)
+    return sut.now_us
+
+
+@then(parsers.parse('the cab {cab:d} monitor displays "{name}" as "{value}"'))
+def _(sut: TrainDriver, cab: int, name: str, value: str) -> None:
+    shown = sut.monitor(cab)["display"].get(name)
+    assert _same(shown, value), f"the cab {cab} monitor displays {name} as {shown!r}, not {value!r}"
+
+
+@then(parsers.parse('the cab {cab:d} monitor displays "{name}" as "{value}" within {bound:g} ms'))
+def _(sut: TrainDriver, t_action: int, cab: int, name: str, value: str, bound: float) -> None:
+    shown = sut.monitor(cab)["display"].get(name)
+    assert _same(shown, value), f"the cab {cab} monitor displays {name} as {shown!r}, not {value!r}"
+    changes = [ev for ev in sut.trace.select(kind="display.change", source=f"car{cab}.monitor", since=t_action,
+                                             name=name) if _same(ev["value"], value)]
+    if changes:
+        delay = changes[0].t - t_action
+        assert delay <= _us(bound), f"{name} was displayed as {value} after {ms(delay)}, limit {bound} ms"
+
+
+@then(parsers.parse('the cab {cab:d} monitor displays "{name}" between {lo:g} and {hi:g}'))
+def _(sut: TrainDriver, cab: int, name: str, lo: float, hi: float) -> None:
+    shown = sut.monitor(cab)["display"].get(name)
+    assert shown is not None and lo <= float(shown) <= hi, f"the cab {cab} monitor displays {name} as {shown!r}"
+
+
+@then(parsers.parse('the cab {cab:d} monitor displays "{name}" between {lo:g} and {hi:g} within {bound:g} ms'))
+def _(sut: TrainDriver, t_action: int, cab: int, name: str, lo: float, hi: float, bound: float) -> None:
+    changes = sut.trace.select(kind="display.change", source=f"car{cab}.monitor", since=t_action, name=name)
+    hit = next((ev for ev in changes if lo <= float(ev["value"]) <= hi), None)
+    assert hit is not None, f"{name} was never displayed between {lo:g} and {hi:g}: {analysis.describe(changes)}"
+    assert hit.t - t_action <= _us(bound), f"{name} reached the band after {ms(hit.t - t_action)}"
+
+
+@then(parsers.parse("the mileage is between {lo:g} and {hi:g} km"))
+def _(sut: TrainDriver, lo: float, hi: float) -> None:
+    km = sut.reading("mileage")
+    assert lo <= km <= hi, f"the mileage is {km:.6f} km, outside {lo:g}..{hi:g} km"
+
+
+@then(parsers.parse('the maintenance view of cab {cab:d} lists "{text}"'))
+def _(sut: TrainDriver, cab: int, text: str) -> None:
+    history = sut.monitor(cab)["maintenance"]
+    assert any(text in line for line in history), f"the maintenance view lists {history or 'nothing'}"
+
+
+@then(parsers.parse('the maintenance view of cab {cab:d} lists "{first}" before "{second}"'))
+def _(sut: TrainDriver, cab: int, first: str, second: str) -> None:
+    history = sut.monitor(cab)["maintenance"]
+    where = {t: next((i for i, line in enumerate(history) if t in line), None) for t in (first, second)}
+    assert None not in where.values(), f"the maintenance view lists {history or 'nothing'}"
+    assert where[first] < where[second], f"{second!r} is listed before {first!r}: {history}"
+
+
+@then(parsers.parse('"{master}" holds a fault record of "{node}" saying "{board}" {event:w}'))
+def _(sut: TrainDriver, master: str, node: str, board: str, event: str) -> None:
+    records = [r.rstrip(b"\0").decode("ascii", "replace") for r in sut.block_store(master).get(node, [])]
+    want = f"|{node}|{board}|{event}"
+    assert any(r.startswith("F|") and r.endswith(want) for r in records), f"{master} holds {records} from {node}"
+
+
+@then(parsers.parse('every CI receives direction "{direction}" within {bound:g} ms'))
+def _(sut: TrainDriver, t_action: int, direction: str, bound: float) -> None:
+    for device in [d for d in analysis.command_devices(sut) if d.endswith(".CI")]:
+        got = sut.trace.first(kind="cmd.in", source=device, since=t_action, until=t_action + _us(bound),
+                              direction=direction)
+        assert got is not None, f"{device} did not receive direction {direction} within {bound} ms"
