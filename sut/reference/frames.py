@@ -239,7 +239,16 @@ def decode_payload(data: bytes) -> dict[str, Any]:
         parsed = layout.parse(data)
     except ConstructError as exc:
         raise FrameError(f"{KIND_NAMES[data[0]]} payload: {exc}") from None
-    return {k: v for k, v in parsed.items() if not k.startswith("_")}
+    return _plain(parsed)
+
+
+def _plain(value: Any) -> Any:
+    """construct's Containers as plain dicts and lists, without its private `_io` entries."""
+    if isinstance(value, dict):
+        return {k: _plain(v) for k, v in value.items() if not k.startswith("_")}
+    if isinstance(value, list):
+        return [_plain(v) for v in value]
+    return value
 
 
 def tx_time_us(frame_bytes: int, bitrate: int) -> int:
