@@ -17,7 +17,7 @@ from .requirements import REQ_ID
 ITEM_ID = re.compile(r"^(?P<cls>[A-Z]+)-(?P<cat>[A-Z]+)-(?P<nn>\d{2})$")
 KEBAB = re.compile(r"^[a-z0-9]+(-[a-z0-9]+)*$")
 CODE = re.compile(r"^[A-Z]+$")
-ITEM_KEYS = {"id", "class", "category", "title", "requirements", "partly", "feature"}
+ITEM_KEYS = {"id", "class", "category", "title", "requirements", "partly", "why", "feature"}
 
 
 @dataclass(frozen=True)
@@ -44,6 +44,7 @@ class Item:
     requirements: tuple[str, ...]
     feature: str
     partly: dict[str, str] = field(default_factory=dict)
+    why: str = ""               # why the item is in the outline, where the source does not name it
     line: int = 0
 
 
@@ -220,6 +221,7 @@ def _load_items(raw, classes: dict[str, TestClass], prefix: str, line: int, prob
             requirements=tuple(reqs),
             feature=str(entry["feature"]),
             partly={str(k): str(v) for k, v in partly.items()},
+            why=str(entry.get("why") or ""),
             line=where,
         )
     return items

@@ -13,4 +13,7 @@ STEP_MODULES = [
     "steps.network",
     "steps.vehicle",
     "steps.monitor",
+    "steps.extra_control",
+    "steps.extra_display",
+    "steps.extra_records",
 ]
