@@ -98,3 +98,37 @@ def test_unknown_backend_on_the_command_line_is_a_usage_error() -> None:
                             cwd=ROOT, capture_output=True, text=True, timeout=300)
     assert result.returncode == 4, result.stdout[-2000:] + result.stderr[-2000:]
     assert "no SUT backend named 'rig42'" in result.stdout + result.stderr
+
+
+@pytest.mark.parametrize(("name", "value", "words"), [
+    ("speed", -5, ["speed -5", "0..400 km/h"]),
+    ("speed", 450, ["speed 450", "0..400 km/h"]),
+    ("main pipe pressure", 1200, ["main pipe pressure 1200", "0..1000 kPa"]),
+    ("main pipe pressure", -1, ["main pipe pressure -1", "0..1000 kPa"]),
+    ("doors", "ajar", ["doors 'ajar'", "closed, open"]),
+    ("unit1.transformer", "melted", ["unit1.transformer 'melted'", "primary overcurrent"]),
+    ("car3.brake force", 200, ["car3.brake force 200", "0..150"]),
+])
+def test_vehicle_inputs_out_of_range(train, name, value, words) -> None:
+    with pytest.raises(OutOfRange) as err:
+        train.set_input(name, value)
+    for word in words:
+        assert word in str(err.value)
+
+
+def test_unknown_vehicle_names(train) -> None:
+    with pytest.raises(UnknownName, match="no vehicle input named 'neutral sektion signal'; did you mean"):
+        train.set_input("neutral sektion signal", "entry")
+    with pytest.raises(UnknownName, match="no vehicle output named 'EB valf'"):
+        train.output("EB valf")
+    with pytest.raises(UnknownName, match="no equipment the monitor can order named 'car3.doors'"):
+        train.monitor_order(1, "car3.doors", "open")
+    with pytest.raises(OutOfRange, match="order for car3.lighting 'dim'"):
+        train.monitor_order(1, "car3.lighting", "dim")
+
+
+def test_ramp_needs_a_positive_rate_and_a_number(train) -> None:
+    with pytest.raises(OutOfRange, match="ramp rate"):
+        train.ramp_input("speed", 100, 0)
+    with pytest.raises(OutOfRange, match="only numeric inputs ramp"):
+        train.ramp_input("doors", 1, 1)
