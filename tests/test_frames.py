@@ -295,3 +295,14 @@ def test_tx_time_rounds_up_to_whole_microseconds(n, bitrate):
 def test_frame_error_is_a_value_error():
     assert issubclass(FrameError, ValueError)
     assert re.search("length 509", str(pytest.raises(FrameError, encode_pac, 1, 1, bytes(509)).value))
+
+
+@settings(relaxed, max_examples=300)
+@given(fuzz_wire.filter(lambda w: w[:1] != bytes([EOT])))
+def test_fast_check_agrees_with_the_decoder(wire):
+    try:
+        decode_pac(wire)
+        decodes = True
+    except FrameError:
+        decodes = False
+    assert check_ok(wire) == decodes
