@@ -1,6 +1,7 @@
 # CRH2 conformance suite. `make` alone lists the targets.
 #   PYTEST_ARGS="..."  extra pytest arguments for the conformance run, e.g. PYTEST_ARGS="--item F-NET-03 -x"
 #   SUT=...            backend for --sut (reference, or package.module:Class); unset = the suite's default
+#   JOBS=N             pytest-xdist workers (default auto = one per core; JOBS=1 runs in one process)
 
 .DEFAULT_GOAL := help
 SHELL := bash
@@ -15,6 +16,9 @@ HTML := reports/html
 
 PYTEST_ARGS ?=
 SUT ?=
+# Scenarios are independent simulations: spread them over every core (JOBS=1 for a single process).
+JOBS ?= auto
+XDIST := $(if $(filter 1,$(JOBS)),-p no:xdist,-n $(JOBS))
 SUT_ARG := $(if $(SUT),--sut $(SUT))
 
 .PHONY: help report test check trace clean distclean
@@ -26,7 +30,7 @@ help: ## list the targets
 report: $(VENV_STAMP) $(NODE_STAMP) ## run every feature, build reports/html/index.html, print a summary
 	@rm -rf $(RESULTS) $(HTML) && mkdir -p $(RESULTS)
 	@# Keep pytest's status, still build the report, exit with that status at the end.
-	@$(PY) -m pytest features --alluredir $(RESULTS) $(SUT_ARG) $(PYTEST_ARGS); status=$$?; \
+	@$(PY) -m pytest features $(XDIST) --alluredir $(RESULTS) $(SUT_ARG) $(PYTEST_ARGS); status=$$?; \
 	npx --no-install allure generate $(RESULTS) --output $(HTML) >/dev/null || exit $$?; \
 	$(PY) -m outline.allure_html $(HTML)/index.html; \
 	echo "report: $(HTML)/index.html"; \
@@ -34,8 +38,8 @@ report: $(VENV_STAMP) $(NODE_STAMP) ## run every feature, build reports/html/ind
 	exit $$status
 
 test: $(VENV_STAMP) ## the project's own tests, then the whole conformance run; fails if either fails
-	@$(PY) -m pytest tests -n auto; t=$$?; \
-	$(PY) -m pytest features $(SUT_ARG) $(PYTEST_ARGS); f=$$?; \
+	@$(PY) -m pytest tests $(XDIST); t=$$?; \
+	$(PY) -m pytest features $(XDIST) $(SUT_ARG) $(PYTEST_ARGS); f=$$?; \
 	echo "make test: tests exit $$t, conformance run exit $$f"; \
 	[ $$t -eq 0 ] && [ $$f -eq 0 ]
 
