@@ -1,6 +1,6 @@
 """What a scenario leaves in the Allure report: the SUT's trace and its parameters.
 
-Two attachments per scenario: the key events (faults, desk inputs, token initialisation and formation,
+Three attachments per scenario: a timing diagram (steps/diagram.py), the key events (faults, desk inputs, token initialisation and formation,
 takeover, fail-safe cuts, path changes, discards, block transfer, lamps) as a CSV shown inline, and the
 whole trace, every event, as gzipped CSV. The periodic traffic (thousands of command and status frames a
 second) would make the inline table unreadable and the single-file report tens of megabytes.
@@ -12,6 +12,7 @@ import gzip
 import allure
 import pytest
 
+from steps.diagram import render_svg, wavejson as diagram_of
 from sut.driver import TrainDriver
 from sut.trace import Trace
 
@@ -30,7 +31,22 @@ def attach_run(driver: TrainDriver, request: pytest.FixtureRequest) -> None:
                   attachment_type=allure.attachment_type.CSV)
     allure.attach(gzip.compress(trace.to_csv().encode(), mtime=0), name=f"whole trace ({len(trace)} events)",
                   attachment_type="application/gzip", extension="csv.gz")
+    _attach_diagram(trace, key, driver.now_us)
     _write_environment(driver, request.config)
+
+
+def _attach_diagram(trace: Trace, key: Trace, now_us: int) -> None:
+    """Draw from just before the first action after power-up (a fault, an input, the desk, an order; else
+    the first thing that happened) to the end of the scenario."""
+    acts = ("fault.", "in.", "desk.", "order.", "mcr.")
+    moments = [ev.t for ev in key if ev.t > 0 and ev.kind.startswith(acts)] or [ev.t for ev in key if ev.t > 0]
+    if not moments:
+        return
+    first = min(moments)
+    start = max(0, first - max(10_000, (now_us - first) // 10))
+    diagram = diagram_of(trace, start, now_us)
+    if diagram is not None:
+        allure.attach(render_svg(diagram), name="timing diagram", attachment_type=allure.attachment_type.SVG)
 
 
 def _write_environment(driver: TrainDriver, config: pytest.Config) -> None:

@@ -216,8 +216,8 @@ class CommandsEvery12ms(ReferenceTrain):
 
 
 class EarlierFallback(ReferenceTrain):
-    """The RXC trusts the self-diagnostic line after 40 ms without ring commands (a project decision)."""
-    TIMING = {"rxc_fallback_us": 40 * MS}
+    """The RXC trusts the self-diagnostic line after 60 ms without ring commands (a project decision)."""
+    TIMING = {"rxc_fallback_us": 60 * MS}
 
 
 FAULTY = [

@@ -27,7 +27,8 @@ class Timing:
     poll_us: int = 10 * MS               # NET-09 CI/BCU polling cycle
     txc_loop_us: int = 500               # DECISIONS: TXC -> MDM8 20 mA loop transfer
     rxc_loop_us: int = 500               # DECISIONS: LCU MDM8 -> RXC 20 mA loop transfer
-    rxc_fallback_us: int = 50 * MS       # DECISIONS: RXC trusts the self-diagnostic line after this silence
+    rxc_fallback_us: int = 80 * MS       # DECISIONS: RXC trusts the self-diagnostic line after this silence
+    command_stale_us: int = 50 * MS      # DECISIONS: MDM9 stops passing on a ring command this old
     selfdiag_bitrate: int = 38_400       # NET-10 secondary sources: HDLC at 38.4 kbit/s
     current_loop_periods_us: tuple[tuple[str, int], ...] = (("ACS", 100 * MS), ("PID", 200 * MS), ("APU", 50 * MS))
 

@@ -122,7 +122,7 @@ class Lcu(RingNode):
 
     def fresh_command(self) -> dict | None:
         """The last ring command, if it is still fresh enough to act on."""
-        if self.latest is None or self.kernel.now - self.latest_us >= self.train.cfg.timing.rxc_fallback_us:
+        if self.latest is None or self.kernel.now - self.latest_us >= self.train.cfg.timing.command_stale_us:
             return None
         return self.latest
 

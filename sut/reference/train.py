@@ -84,6 +84,7 @@ class Train:
 
     def start(self) -> None:
         self.emit("train", "power.on", cars=self.cfg.cars, nodes=self.ring.size)
+        self.vehicle.announce()
         for node in self.ring.nodes:
             node.start()
         for ccu in self.ccus.values():

@@ -172,6 +172,12 @@ class Vehicle:
             raise UnknownName("vehicle output", name, self.outputs)
         return self.outputs[name]
 
+    def announce(self) -> None:
+        """At power-up every output is stated once, so the trace says where each one started."""
+        inp = self.inputs
+        for name, value in self.outputs.items():
+            self.train.emit(name, "out.change", value=value, speed=inp["speed"], pressure=inp["main pipe pressure"])
+
     def desk_changed(self) -> None:
         self._evaluate()
 

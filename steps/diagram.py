@@ -1,0 +1,113 @@
+"""A timing diagram of a scenario (WaveJSON, rendered to SVG offline by `wavedrom`) for the report.
+
+One lane per thing that changed: vehicle outputs, the CCU systems putting commands on the ring (high while
+they send), each RXC's command source, and an events lane for injected faults, takeovers, fail-safe cuts
+and token formation. Time is cut into at most ~100 equal slots so a 50 ms takeover and a 20 s pressure
+ramp both fit one picture; the header says the slot length.
+"""
+from __future__ import annotations
+
+import json
+
+from sut.trace import Trace, TraceEvent
+
+MAX_SLOTS = 100
+NICE_MS = (1, 2, 5, 10, 20, 50, 100, 200, 500, 1000, 2000, 5000)
+EVENT_KINDS = ("fault.", "ccu.takeover", "txc.failsafe", "rxc.failsafe", "token.form", "token.init", "in.set",
+               "in.ramp", "desk.")
+MAX_LANES = 14
+
+
+def _slot_ms(duration_ms: float) -> int:
+    for nice in NICE_MS:
+        if duration_ms / nice <= MAX_SLOTS:
+            return nice
+    return NICE_MS[-1]
+
+
+def _runs(wave: list[str]) -> str:
+    """WaveJSON draws every repeated level as a new cycle; '.' continues the one before."""
+    out = []
+    for i, ch in enumerate(wave):
+        out.append("." if i and ch == wave[i - 1] and ch in "01x" else ch)
+    return "".join(out)
+
+
+def _data_lane(name: str, changes: list[tuple[int, str]], slots: int) -> dict:
+    wave, data, current = [], [], None
+    by_slot = dict(changes)                        # last change in a slot wins
+    for i in range(slots):
+        if i in by_slot and by_slot[i] != current:
+            current = by_slot[i]
+            wave.append("=")
+            data.append(str(current))
+        else:
+            wave.append("." if current is not None else "x")
+    return {"name": name, "wave": "".join(wave), "data": data}
+
+
+def _label(ev: TraceEvent) -> str:
+    short = ev.source.replace(".MDM8", "").replace(".CPU3", "")
+    if ev.kind.startswith("in."):
+        return f"{ev['name']}={ev.get('value', ev.get('to'))}"
+    if ev.kind.startswith("desk."):
+        return f"{short} {ev.kind[5:]}"
+    return f"{short} {ev.kind.split('.', 1)[-1]}"
+
+
+def wavejson(trace: Trace, start_us: int, end_us: int) -> dict | None:
+    """The diagram of [start_us, end_us], or None when nothing worth drawing happened."""
+    duration_ms = max(1.0, (end_us - start_us) / 1000)
+    slot_ms = _slot_ms(duration_ms)
+    slot_us = slot_ms * 1000
+    slots = int(duration_ms // slot_ms) + 1
+
+    def slot(ev: TraceEvent) -> int:
+        return min(slots - 1, (ev.t - start_us) // slot_us)
+
+    lanes: list[dict] = []
+    outputs: dict[str, list[tuple[int, str]]] = {}
+    senders: dict[str, set[int]] = {}
+    rxc: dict[str, list[tuple[int, str]]] = {}
+    events: list[tuple[int, str]] = []
+    for ev in trace.select(kind="out.change", until=start_us):
+        outputs.setdefault(ev.source, [(0, ev["value"])])[0] = (0, ev["value"])   # the state at the start
+    for ev in trace.select(since=start_us, until=end_us):
+        if ev.kind == "out.change":
+            outputs.setdefault(ev.source, []).append((slot(ev), ev["value"]))
+        elif ev.kind == "cmd.tx":
+            senders.setdefault(ev.source.rsplit(".", 1)[0], set()).add(slot(ev))
+        elif ev.kind == "rxc.source":
+            rxc.setdefault(ev.source, []).append((slot(ev), ev["source"]))
+        elif ev.kind.startswith(EVENT_KINDS):
+            events.append((slot(ev), _label(ev)))
+    if events:
+        wave, data, seen = [], [], {}
+        for s, label in events:
+            seen.setdefault(s, label)
+        for i in range(slots):
+            if i in seen:
+                wave.append("=")
+                data.append(seen[i])
+            else:
+                wave.append("0")
+        lanes.append({"name": "events", "wave": _runs(wave), "data": data})
+    for node, hits in sorted(senders.items()):
+        lanes.append({"name": f"cmd {node}", "wave": _runs(["1" if i in hits else "0" for i in range(slots)])})
+    for name, changes in sorted(outputs.items()):
+        if len({value for _, value in changes}) > 1:          # an output that never changed says nothing
+            lanes.append(_data_lane(name, changes, slots))
+    for name, changes in sorted(rxc.items()):
+        if any(value != "idle" for _, value in changes):      # an RXC that stayed idle says nothing
+            lanes.append(_data_lane(f"{name} source", changes, slots))
+    if len(lanes) <= 1 and not outputs and not rxc:
+        return None
+    return {"signal": lanes[:MAX_LANES],
+            "head": {"text": f"from {start_us / 1000:.0f} ms, one slot = {slot_ms} ms"},
+            "config": {"hscale": 1}}
+
+
+def render_svg(diagram: dict) -> str:
+    import wavedrom
+
+    return wavedrom.render(json.dumps(diagram)).tostring()
