@@ -167,7 +167,9 @@ class Train:
     # -- the cab monitor's equipment orders (DECISIONS.md, "Display") ----------------------------
     def orders_for(self, node: RingNode) -> list[dict[str, int]]:
         ccu = self.commanding_ccu()
-        if ccu is None or node is not ccu.systems[ccu.master - 1]:
+        # Orders come from the monitor, so they ride in the status data of the system feeding it (the
+        # master's CPU3 may be dead while its TXC still commands the train).
+        if ccu is None or node is not ccu.monitor_source():
             return []
         return [self.display.order(name, value) for name, value in ccu.orders.items()]
 
