@@ -62,6 +62,19 @@ def record(size: int) -> bytes:
     return bytes((i * 7 + 3) & 0xFF for i in range(size))
 
 
+def us(ms_value: float) -> int:
+    """Milliseconds from a sentence as the SUT's integer microseconds."""
+    return round(ms_value * 1000)
+
+
+def same_value(shown: object, want: str) -> bool:
+    """A displayed value against a sentence's text: numbers compare as numbers ("4" == 4.0)."""
+    try:
+        return float(shown) == float(want)
+    except (TypeError, ValueError):
+        return shown == want
+
+
 def ms(us: int) -> str:
     return f"{us / 1000:.3f} ms"
 

@@ -7,17 +7,13 @@ from pytest_bdd import parsers, then
 
 from sut.driver import TrainDriver
 from steps import analysis
-from steps.analysis import ms
-
-
-def _us(ms_value: float) -> int:
-    return round(ms_value * 1000)
+from steps.analysis import ms, us
 
 
 # -- on the ring ------------------------------------------------------------------------------------
 @then(parsers.parse("every LCU receives every command within {bound:g} ms of its transmission"))
 def _(sut: TrainDriver, t_action: int, bound: float) -> None:
-    trace, limit = sut.trace, _us(bound)
+    trace, limit = sut.trace, us(bound)
     sent = trace.select(kind="cmd.tx", since=t_action, until=sut.now_us - limit)
     assert sent, f"no command left a CCU between {ms(t_action)} and {ms(sut.now_us - limit)}"
     got = {(d.node, d.system, d.sent): d for d in analysis.command_deliveries(trace, since=t_action)}
@@ -34,7 +30,7 @@ def _(sut: TrainDriver, t_action: int, bound: float) -> None:
     deliveries = analysis.command_deliveries(sut.trace, since=t_action)
     assert deliveries, "no command deliveries to examine"
     worst = max(deliveries, key=lambda d: d.latency / d.hops)
-    assert worst.latency <= worst.hops * _us(bound), (
+    assert worst.latency <= worst.hops * us(bound), (
         f"command seq {worst.seq} took {ms(worst.latency)} over {worst.hops} nodes to {worst.node}: "
         f"{ms(worst.latency // worst.hops)} per node, more than {bound} ms")
 
@@ -48,7 +44,7 @@ def _(sut: TrainDriver, t_action: int, bound: float) -> None:
     for node, times in by_node.items():
         gaps = analysis.intervals(times)
         assert len(gaps) >= 5, f"{node} sent only {len(times)} commands"
-        assert min(gaps) >= _us(bound), f"{node} sent two commands {ms(min(gaps))} apart, less than {bound} ms"
+        assert min(gaps) >= us(bound), f"{node} sent two commands {ms(min(gaps))} apart, less than {bound} ms"
 
 
 @then(parsers.parse('only "{node}" puts commands on the ring'))
@@ -65,14 +61,14 @@ def _(sut: TrainDriver, t_action: int, node: str) -> None:
 
 @then(parsers.parse('"{node}" puts no commands on the ring from {after:g} ms on'))
 def _(sut: TrainDriver, t_action: int, node: str, after: float) -> None:
-    found = sut.trace.select(kind="cmd.tx", source=f"{node}.MDM8", since=t_action + _us(after))
+    found = sut.trace.select(kind="cmd.tx", source=f"{node}.MDM8", since=t_action + us(after))
     assert not found, f"{node} sent commands: {analysis.describe(found)}"
 
 
 @then(parsers.parse('"{txc}" puts nothing on the ring or the self-diagnostic line from {after:g} ms on'))
 def _(sut: TrainDriver, t_action: int, txc: str, after: float) -> None:
     system = txc.rsplit(".", 1)[0]
-    since = t_action + _us(after)
+    since = t_action + us(after)
     ring = sut.trace.select(kind="cmd.tx", source=f"{system}.MDM8", since=since)
     line = sut.trace.select(kind="sd.rx", since=since, frm=txc)
     assert not ring and not line, f"{txc} kept transmitting: {analysis.describe(ring + line)}"
@@ -80,7 +76,7 @@ def _(sut: TrainDriver, t_action: int, txc: str, after: float) -> None:
 
 @then(parsers.parse("from {after:g} ms on every command carries traction notch {notch:d} and brake step {step:d}"))
 def _(sut: TrainDriver, t_action: int, after: float, notch: int, step: int) -> None:
-    sent = sut.trace.select(kind="cmd.tx", since=t_action + _us(after))
+    sent = sut.trace.select(kind="cmd.tx", since=t_action + us(after))
     assert sent, "no command was transmitted"
     wrong = [ev for ev in sent if (ev["traction"], ev["brake"]) != (notch, step)]
     assert not wrong, f"commands with other values: {analysis.describe(wrong)}"
@@ -95,9 +91,9 @@ def _first_take(sut: TrainDriver, device: str, since: int, until: int, **want) -
 def _check_devices(sut: TrainDriver, devices: list[str], t_action: int, bound: float, what: str, **want) -> None:
     assert devices, "no CI or BCU to check"
     for device in devices:
-        t = _first_take(sut, device, t_action, t_action + _us(bound), **want)
+        t = _first_take(sut, device, t_action, t_action + us(bound), **want)
         if t is None:
-            last = sut.trace.last(kind="cmd.in", source=device, until=t_action + _us(bound))
+            last = sut.trace.last(kind="cmd.in", source=device, until=t_action + us(bound))
             seen = f"last took {dict(last.fields)} at {ms(last.t)}" if last else "took no command at all"
             raise AssertionError(f"{device} did not receive {what} within {bound} ms; it {seen}")
 
@@ -150,7 +146,7 @@ def _(sut: TrainDriver, t_action: int, car: int, step: str, path: int, bound: fl
 def _(sut: TrainDriver, t_action: int, after: float, car: int, notch: int) -> None:
     others = [d for d in analysis.command_devices(sut) if not d.startswith(f"car{car}.")]
     for device in others:
-        takes = sut.trace.select(kind="cmd.in", source=device, since=t_action + _us(after))
+        takes = sut.trace.select(kind="cmd.in", source=device, since=t_action + us(after))
         assert takes, f"{device} received nothing after {ms(t_action)}"
         odd = [ev for ev in takes if ev["path"] != 1 or ev["traction"] != notch]
         assert not odd, f"{device} left path 1 / notch {notch}: {analysis.describe(odd)}"
@@ -193,7 +189,7 @@ def _(sut: TrainDriver, t_action: int, bound: float) -> None:
         times = [t_action] + [ev.t for ev in sut.trace.select(kind="cmd.in", source=device, since=t_action)]
         times.append(sut.now_us)
         worst = max(analysis.intervals(times))
-        assert worst <= _us(bound), f"{device} went {ms(worst)} without a command (limit {bound} ms)"
+        assert worst <= us(bound), f"{device} went {ms(worst)} without a command (limit {bound} ms)"
 
 
 # -- RED-02: takeover --------------------------------------------------------------------------------
@@ -209,8 +205,8 @@ def _(sut: TrainDriver, t_action: int, new: int, old: int, lo: float, hi: float)
     first_new = sut.trace.first(kind="cmd.tx", since=t_action, system=new)
     assert first_new is not None, f"system {new} never put a command on the ring"
     gap = first_new.t - last_old.t
-    top = _us(hi) + interval
-    assert _us(lo) <= gap <= top, (f"system {new} followed system {old} after {ms(gap)}, outside {lo} ms.."
+    top = us(hi) + interval
+    assert us(lo) <= gap <= top, (f"system {new} followed system {old} after {ms(gap)}, outside {lo} ms.."
                                    f"{ms(top)} (command interval {ms(interval)})")
 
 

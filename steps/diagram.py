@@ -100,7 +100,7 @@ def wavejson(trace: Trace, start_us: int, end_us: int) -> dict | None:
     for name, changes in sorted(rxc.items()):
         if any(value != "idle" for _, value in changes):      # an RXC that stayed idle says nothing
             lanes.append(_data_lane(f"{name} source", changes, slots))
-    if len(lanes) <= 1 and not outputs and not rxc:
+    if not lanes or (len(lanes) == 1 and lanes[0]["name"] == "events"):
         return None
     return {"signal": lanes[:MAX_LANES],
             "head": {"text": f"from {start_us / 1000:.0f} ms, one slot = {slot_ms} ms"},

@@ -1,2 +1,200 @@
-"""Step sentences added for the extra_records features (see steps/__init__.py)."""
+"""Step sentences added for the extra_records features (see steps/__init__.py): the function-class items
+on mileage, service equipment, device interfaces, data recording, maintenance and diagnosis.
+
+Watching the cab monitor: what the monitor shows as faults is a snapshot (`sut.monitor(cab)["faults"]`),
+not a trace event, so "shows it within N ms" needs the monitor looked at while time passes. The When step
+"the cab N monitor is watched for M ms" lets the time pass in 1 ms steps and notes what was shown at each
+step; the Then steps read those notes. Several watches in one scenario add up (same cab).
+"""
 from __future__ import annotations
+
+from typing import Any
+
+import pytest
+from pytest_bdd import parsers, then, when
+
+from sut.driver import TrainDriver
+from steps import analysis
+from steps.analysis import ms, us
+
+WATCH_STEP_US = 1000
+
+
+# -- watching the cab monitor -------------------------------------------------------------------------
+@pytest.fixture
+def monitor_watch() -> dict[str, Any] | None:
+    """What a watched cab monitor showed: {'cab': n, 'samples': [(t_us, (fault, ...)), ...]}; None if the
+    scenario watched nothing."""
+    return None
+
+
+def _watched(watch: dict[str, Any] | None, cab: int) -> list[tuple[int, tuple[str, ...]]]:
+    assert watch is not None, "nobody watched the cab monitor (When the cab N monitor is watched for M ms)"
+    assert watch["cab"] == cab, f"the cab {watch['cab']} monitor was watched, not the cab {cab} monitor"
+    assert watch["samples"], "the watch saw nothing"
+    return watch["samples"]
+
+
+@when(parsers.parse("the cab {cab:d} monitor is watched for {span:d} ms"), target_fixture="monitor_watch")
+def _(sut: TrainDriver, monitor_watch: dict[str, Any] | None, cab: int, span: int) -> dict[str, Any]:
+    if monitor_watch is not None and monitor_watch["cab"] == cab:
+        samples = list(monitor_watch["samples"])
+    else:
+        samples = []
+    end = sut.now_us + us(span)
+    while True:
+        samples.append((sut.now_us, tuple(sut.monitor(cab)["faults"])))
+        if sut.now_us >= end:
+            break
+        sut.advance(min(WATCH_STEP_US, end - sut.now_us))
+    return {"cab": cab, "samples": samples}
+
+
+@then(parsers.parse('the cab {cab:d} monitor showed "{text}" within {bound:g} ms'))
+def _(monitor_watch: dict[str, Any] | None, t_action: int, cab: int, text: str, bound: float) -> None:
+    """Measured from the last action; if the text was already shown when the watch began, the watch's
+    start counts as the moment it appeared (an upper bound of the delay)."""
+    samples = [(t, shown) for t, shown in _watched(monitor_watch, cab) if t >= t_action]
+    hit = next((t for t, shown in samples if text in shown), None)
+    assert hit is not None, (f"the cab {cab} monitor never showed {text!r} in {ms(samples[-1][0] - t_action)}; "
+                             f"it showed {sorted({f for _, shown in samples for f in shown}) or 'no faults'}")
+    assert hit - t_action <= us(bound), f"{text!r} was shown {ms(hit - t_action)} after the action, limit {bound} ms"
+
+
+@then(parsers.parse('the cab {cab:d} monitor stopped showing "{text}" within {bound:g} ms'))
+def _(monitor_watch: dict[str, Any] | None, t_action: int, cab: int, text: str, bound: float) -> None:
+    samples = [(t, shown) for t, shown in _watched(monitor_watch, cab) if t >= t_action]
+    assert samples and text not in samples[-1][1], f"the cab {cab} monitor still shows {text!r}"
+    shown_at = [t for t, shown in samples if text in shown]
+    gone = t_action if not shown_at else next(t for t, shown in samples if t > shown_at[-1])
+    assert gone - t_action <= us(bound), f"{text!r} was shown until {ms(gone - t_action)} after the action, limit {bound} ms"
+
+
+@then(parsers.parse('the cab {cab:d} monitor never showed "{text}"'))
+def _(monitor_watch: dict[str, Any] | None, cab: int, text: str) -> None:
+    shown_at = [t for t, shown in _watched(monitor_watch, cab) if text in shown]
+    assert not shown_at, f"the cab {cab} monitor showed {text!r} at {ms(shown_at[0])}"
+
+
+@then(parsers.parse("the cab {cab:d} monitor never showed a fault"))
+def _(monitor_watch: dict[str, Any] | None, cab: int) -> None:
+    odd = [(t, shown) for t, shown in _watched(monitor_watch, cab) if shown]
+    assert not odd, f"the cab {cab} monitor showed {list(odd[0][1])} at {ms(odd[0][0])}"
+
+
+@then(parsers.parse('the cab {cab:d} monitor showed no fault but "{text}"'))
+def _(monitor_watch: dict[str, Any] | None, cab: int, text: str) -> None:
+    others = sorted({f for _, shown in _watched(monitor_watch, cab) for f in shown if f != text})
+    assert not others, f"the cab {cab} monitor also showed {others}"
+
+
+@then(parsers.parse('the cab {cab:d} monitor does not show "{text}"'))
+def _(sut: TrainDriver, cab: int, text: str) -> None:
+    faults = sut.monitor(cab)["faults"]
+    assert text not in faults, f"the cab {cab} monitor shows {text!r}"
+
+
+# -- vehicle-level interfaces (NET-09) ------------------------------------------------------------------
+def _hdlc_polls(sut: TrainDriver, devices: list[str], since: int, lo: float, hi: float) -> None:
+    assert devices, "no CI or BCU to check"
+    for device in devices:
+        times = [ev.t for ev in sut.trace.select(kind="cmd.in", source=device, since=since, path=1)]
+        assert len(times) >= 3, f"{device} was polled over HDLC {len(times)} times since {ms(since)}"
+        gaps = analysis.intervals(times)
+        assert us(lo) <= min(gaps) and max(gaps) <= us(hi), (
+            f"{device} polled over HDLC every {ms(min(gaps))}..{ms(max(gaps))}, outside {lo}..{hi} ms")
+
+
+@then(parsers.parse("every CI and BCU is polled over HDLC every {lo:g} to {hi:g} ms"))
+def _(sut: TrainDriver, t_action: int, lo: float, hi: float) -> None:
+    _hdlc_polls(sut, analysis.command_devices(sut), t_action, lo, hi)
+
+
+@then(parsers.parse("every CI and BCU outside car {car:d} is polled over HDLC every {lo:g} to {hi:g} ms"))
+def _(sut: TrainDriver, t_action: int, car: int, lo: float, hi: float) -> None:
+    others = [d for d in analysis.command_devices(sut) if not d.startswith(f"car{car}.")]
+    _hdlc_polls(sut, others, t_action, lo, hi)
+
+
+@then(parsers.parse("car {car:d} has no {device:w}"))
+def _(sut: TrainDriver, car: int, device: str) -> None:
+    got = sut.devices(car)
+    assert f"car{car}.{device}" not in got, f"car {car} has a {device}: {sorted(got)}"
+
+
+@then(parsers.parse("the {device:w} of every car is polled every {lo:g} to {hi:g} ms"))
+def _(sut: TrainDriver, t_action: int, device: str, lo: float, hi: float) -> None:
+    for car in analysis.cars(sut):
+        name = f"car{car}.{device}"
+        assert name in sut.devices(car), f"car {car} has no {device}: {sorted(sut.devices(car))}"
+        polls = sut.trace.select(kind="loop.poll", source=name, since=t_action)
+        assert len(polls) >= 3, f"{name} was polled {len(polls)} times"
+        unanswered = [ev for ev in polls if not ev["reply"]]
+        assert not unanswered, f"{name} did not answer: {analysis.describe(unanswered)}"
+        gaps = analysis.intervals(ev.t for ev in polls)
+        assert us(lo) <= min(gaps) and max(gaps) <= us(hi), (
+            f"{name} polled every {ms(min(gaps))}..{ms(max(gaps))}, outside {lo}..{hi} ms")
+
+
+@then(parsers.parse('"{device}" is on a {milliamps:d} mA current loop'))
+def _(sut: TrainDriver, t_action: int, device: str, milliamps: int) -> None:
+    loops = {ev["loop"] for ev in sut.trace.select(kind="loop.*", source=device, since=t_action)}
+    assert loops, f"nothing went over {device}'s current loop"
+    assert loops == {f"{milliamps}mA"}, f"{device} is on a {', '.join(sorted(loops))} loop, not {milliamps} mA"
+
+
+def _one_way(sut: TrainDriver, since: int, device: str, kind: str, lo: float, hi: float) -> None:
+    events = sut.trace.select(kind="loop.*", source=device, since=since)
+    assert events, f"nothing went over {device}'s current loop"
+    wrong = [ev for ev in events if ev.kind != kind or ev["reply"]]
+    assert not wrong, f"{device} is not one-way ({kind}): {analysis.describe(wrong)}"
+    assert len(events) >= 3, f"only {len(events)} transfers with {device}"
+    gaps = analysis.intervals(ev.t for ev in events)
+    assert us(lo) <= min(gaps) and max(gaps) <= us(hi), (
+        f"{device} transfers every {ms(min(gaps))}..{ms(max(gaps))}, outside {lo}..{hi} ms")
+
+
+@then(parsers.parse('"{device}" only receives from its LCU, every {lo:g} to {hi:g} ms'))
+def _(sut: TrainDriver, t_action: int, device: str, lo: float, hi: float) -> None:
+    _one_way(sut, t_action, device, "loop.send", lo, hi)
+
+
+@then(parsers.parse('"{device}" only sends to its LCU, every {lo:g} to {hi:g} ms'))
+def _(sut: TrainDriver, t_action: int, device: str, lo: float, hi: float) -> None:
+    _one_way(sut, t_action, device, "loop.report", lo, hi)
+
+
+# -- fault records and the maintenance view -------------------------------------------------------------
+def _fault_records(sut: TrainDriver, master: str, node: str) -> list[list[str]]:
+    """Fault records `F|<t ms>|<node>|<board>|<event>` of `node` held at `master` (DECISIONS.md)."""
+    texts = [r.rstrip(b"\0").decode("ascii", "replace") for r in sut.block_store(master).get(node, [])]
+    return [t.split("|") for t in texts if t.startswith("F|")]
+
+
+@then(parsers.parse('"{master}" holds {count:d} fault record(s) of "{node}"'))
+def _(sut: TrainDriver, master: str, count: int, node: str) -> None:
+    records = _fault_records(sut, master, node)
+    assert len(records) == count, f"{master} holds {len(records)} fault records of {node}: {records}"
+
+
+@then(parsers.parse('"{master}" holds a fault record of "{node}" saying "{board}" {event:w}, stamped within '
+                    '{bound:g} ms of it'))
+def _(sut: TrainDriver, t_action: int, master: str, node: str, board: str, event: str, bound: float) -> None:
+    records = [r for r in _fault_records(sut, master, node) if r[3:] == [board, event]]
+    assert records, f"{master} holds no record of {node} saying {board} {event}: {_fault_records(sut, master, node)}"
+    stamp_us = int(records[-1][1]) * 1000              # whole milliseconds
+    assert t_action - 1000 < stamp_us <= t_action + us(bound), (
+        f"the record is stamped {records[-1][1]} ms; the {event} happened at {ms(t_action)} (limit {bound} ms)")
+
+
+@then(parsers.parse("the maintenance view of cab {cab:d} holds {count:d} line(s)"))
+def _(sut: TrainDriver, cab: int, count: int) -> None:
+    history = sut.monitor(cab)["maintenance"]
+    assert len(history) == count, f"the maintenance view of cab {cab} holds {len(history)} lines: {history}"
+
+
+@then(parsers.parse('the maintenance view of cab {cab:d} does not list "{text}"'))
+def _(sut: TrainDriver, cab: int, text: str) -> None:
+    history = sut.monitor(cab)["maintenance"]
+    odd = [line for line in history if text in line]
+    assert not odd, f"the maintenance view of cab {cab} lists {odd}"

@@ -10,18 +10,7 @@ from pytest_bdd import given, parsers, then, when
 
 from sut.driver import TrainDriver
 from steps import analysis
-from steps.analysis import ms
-
-
-def _us(ms_value: float) -> int:
-    return round(ms_value * 1000)
-
-
-def _same(shown: object, want: str) -> bool:
-    try:
-        return float(shown) == float(want)          # numbers compare as numbers ("4" == 4.0)
-    except (TypeError, ValueError):
-        return shown == want
+from steps.analysis import ms, same_value, us
 
 
 @given(parsers.parse('"{name}" has been ordered to "{value}" on the cab {cab:d} monitor'))
@@ -34,18 +23,18 @@ def _(sut: TrainDriver, name: str, value: str, cab: int) -> int:
 @then(parsers.parse('the cab {cab:d} monitor displays "{name}" as "{value}"'))
 def _(sut: TrainDriver, cab: int, name: str, value: str) -> None:
     shown = sut.monitor(cab)["display"].get(name)
-    assert _same(shown, value), f"the cab {cab} monitor displays {name} as {shown!r}, not {value!r}"
+    assert same_value(shown, value), f"the cab {cab} monitor displays {name} as {shown!r}, not {value!r}"
 
 
 @then(parsers.parse('the cab {cab:d} monitor displays "{name}" as "{value}" within {bound:g} ms'))
 def _(sut: TrainDriver, t_action: int, cab: int, name: str, value: str, bound: float) -> None:
     shown = sut.monitor(cab)["display"].get(name)
-    assert _same(shown, value), f"the cab {cab} monitor displays {name} as {shown!r}, not {value!r}"
+    assert same_value(shown, value), f"the cab {cab} monitor displays {name} as {shown!r}, not {value!r}"
     changes = [ev for ev in sut.trace.select(kind="display.change", source=f"car{cab}.monitor", since=t_action,
-                                             name=name) if _same(ev["value"], value)]
+                                             name=name) if same_value(ev["value"], value)]
     if changes:
         delay = changes[0].t - t_action
-        assert delay <= _us(bound), f"{name} was displayed as {value} after {ms(delay)}, limit {bound} ms"
+        assert delay <= us(bound), f"{name} was displayed as {value} after {ms(delay)}, limit {bound} ms"
 
 
 @then(parsers.parse('the cab {cab:d} monitor displays "{name}" between {lo:g} and {hi:g}'))
@@ -59,7 +48,7 @@ def _(sut: TrainDriver, t_action: int, cab: int, name: str, lo: float, hi: float
     changes = sut.trace.select(kind="display.change", source=f"car{cab}.monitor", since=t_action, name=name)
     hit = next((ev for ev in changes if lo <= float(ev["value"]) <= hi), None)
     assert hit is not None, f"{name} was never displayed between {lo:g} and {hi:g}: {analysis.describe(changes)}"
-    assert hit.t - t_action <= _us(bound), f"{name} reached the band after {ms(hit.t - t_action)}"
+    assert hit.t - t_action <= us(bound), f"{name} reached the band after {ms(hit.t - t_action)}"
 
 
 @then(parsers.parse("the mileage is between {lo:g} and {hi:g} km"))
@@ -68,7 +57,7 @@ def _(sut: TrainDriver, lo: float, hi: float) -> None:
     assert lo <= km <= hi, f"the mileage is {km:.6f} km, outside {lo:g}..{hi:g} km"
 
 
-@then(parsers.parse('the maintenance view of cab {cab:d} lists "{text}"'))
+@then(parsers.re(r'the maintenance view of cab (?P<cab>\d+) lists "(?P<text>[^"]+)"'), converters={"cab": int})
 def _(sut: TrainDriver, cab: int, text: str) -> None:
     history = sut.monitor(cab)["maintenance"]
     assert any(text in line for line in history), f"the maintenance view lists {history or 'nothing'}"
@@ -92,6 +81,6 @@ def _(sut: TrainDriver, master: str, node: str, board: str, event: str) -> None:
 @then(parsers.parse('every CI receives direction "{direction}" within {bound:g} ms'))
 def _(sut: TrainDriver, t_action: int, direction: str, bound: float) -> None:
     for device in [d for d in analysis.command_devices(sut) if d.endswith(".CI")]:
-        got = sut.trace.first(kind="cmd.in", source=device, since=t_action, until=t_action + _us(bound),
+        got = sut.trace.first(kind="cmd.in", source=device, since=t_action, until=t_action + us(bound),
                               direction=direction)
         assert got is not None, f"{device} did not receive direction {direction} within {bound} ms"

@@ -5,11 +5,7 @@ from pytest_bdd import parsers, then
 
 from sut.driver import TrainDriver
 from steps import analysis
-from steps.analysis import ms
-
-
-def _us(ms_value: float) -> int:
-    return round(ms_value * 1000)
+from steps.analysis import ms, us
 
 
 def _node(source: str) -> str:
@@ -24,7 +20,7 @@ def _(sut: TrainDriver, lo: float, hi: float) -> None:
         inits.setdefault(_node(ev.source), ev.t)
     for node in sut.ring_nodes():
         assert node in inits, f"{node} never sent a token initialisation"
-        assert _us(lo) <= inits[node] <= _us(hi), f"{node} sent it at {ms(inits[node])}, outside {lo}..{hi} ms"
+        assert us(lo) <= inits[node] <= us(hi), f"{node} sent it at {ms(inits[node])}, outside {lo}..{hi} ms"
 
 
 @then(parsers.parse('the token is formed by "{node}" {lo:g} to {hi:g} ms after the first token initialisation'))
@@ -36,7 +32,7 @@ def _(sut: TrainDriver, t_action: int, node: str, lo: float, hi: float) -> None:
     first = forms[0]
     assert _node(first.source) == node, f"the token was formed by {_node(first.source)}, expected {node}"
     delay = first.t - init.t
-    assert _us(lo) <= delay <= _us(hi), f"formed {ms(delay)} after the initialisation, outside {lo}..{hi} ms"
+    assert us(lo) <= delay <= us(hi), f"formed {ms(delay)} after the initialisation, outside {lo}..{hi} ms"
     others = [ev for ev in forms[1:] if _node(ev.source) != node]
     assert not others, f"other nodes formed tokens too: {analysis.describe(others)}"
 
@@ -47,7 +43,7 @@ def _(sut: TrainDriver, t_action: int, lo: float, hi: float) -> None:
     assert len(arrivals) >= len(sut.ring_nodes()), f"only {len(arrivals)} token arrivals since {ms(t_action)}"
     for a, b in zip(arrivals, arrivals[1:]):
         gap = b.t - a.t
-        assert _us(lo) <= gap <= _us(hi), (f"{_node(a.source)} held the token {ms(gap)} before "
+        assert us(lo) <= gap <= us(hi), (f"{_node(a.source)} held the token {ms(gap)} before "
                                            f"{_node(b.source)} had it, outside {lo}..{hi} ms")
 
 
@@ -73,7 +69,7 @@ def _(sut: TrainDriver, t_action: int, node: str, lo: float, hi: float) -> None:
         arrived = trace.first(kind="token.rx", source=f"{sent['to']}.MDM8", since=sent.t)
         assert arrived is not None, f"the token {node} sent back never reached {sent['to']}"
         held = arrived.t - arrival.t
-        assert _us(lo) <= held <= _us(hi), (f"{node} held the token {ms(held)} before {sent['to']} had it, "
+        assert us(lo) <= held <= us(hi), (f"{node} held the token {ms(held)} before {sent['to']} had it, "
                                             f"outside {lo}..{hi} ms")
 
 
@@ -83,7 +79,7 @@ def _(sut: TrainDriver, t_action: int, bound: float) -> None:
         times = [t_action] + [ev.t for ev in sut.trace.select(kind="token.rx", source=f"{node}.MDM8",
                                                                 since=t_action)] + [sut.now_us]
         worst = max(analysis.intervals(times))
-        assert worst <= _us(bound), f"{node} went {ms(worst)} without the token (limit {bound} ms)"
+        assert worst <= us(bound), f"{node} went {ms(worst)} without the token (limit {bound} ms)"
 
 
 @then("no node sends a token initialisation")
@@ -100,7 +96,7 @@ def _(sut: TrainDriver, t_action: int, lo: float, hi: float) -> None:
     seen = trace.last(kind="token.rx", until=init.t)
     assert seen is not None, "no token was ever seen"
     gap = init.t - seen.t
-    assert _us(lo) <= gap <= _us(hi), f"token initialisation {ms(gap)} after the token was last seen, outside {lo}..{hi} ms"
+    assert us(lo) <= gap <= us(hi), f"token initialisation {ms(gap)} after the token was last seen, outside {lo}..{hi} ms"
 
 
 @then(parsers.parse("within {bound:g} ms one token circulates again through every node"))
@@ -111,7 +107,7 @@ def _(sut: TrainDriver, t_action: int, bound: float) -> None:
     nodes = sut.ring_nodes()
     for node in nodes:
         got = trace.first(kind="token.rx", source=f"{node}.MDM8", since=form.t)
-        assert got is not None and got.t <= t_action + _us(bound), f"{node} had no token within {bound} ms"
+        assert got is not None and got.t <= t_action + us(bound), f"{node} had no token within {bound} ms"
     assert len(sut.token_holder()) <= 1, f"several tokens: {sut.token_holder()}"
 
 
@@ -133,7 +129,7 @@ def _(sut: TrainDriver, t_action: int, cab: int, lo: float, hi: float) -> None:
         times = by_node.get(node, [])
         assert len(times) >= 3, f"the cab {cab} monitor got {len(times)} status frames from {node}"
         gaps = analysis.intervals(times)
-        assert _us(lo) <= min(gaps) and max(gaps) <= _us(hi), (
+        assert us(lo) <= min(gaps) and max(gaps) <= us(hi), (
             f"status data from {node} came every {ms(min(gaps))}..{ms(max(gaps))}, outside {lo}..{hi} ms")
 
 
@@ -146,12 +142,12 @@ def _(sut: TrainDriver, t_action: int, cab: int, bound: float) -> None:
             continue
         times = [t_action] + by_node.get(node, []) + [sut.now_us]
         worst = max(analysis.intervals(times))
-        assert worst <= _us(bound), f"no status data from {node} for {ms(worst)} (limit {bound} ms)"
+        assert worst <= us(bound), f"no status data from {node} for {ms(worst)} (limit {bound} ms)"
 
 
 @then(parsers.parse("the cab {cab:d} monitor receives no status data from other nodes after {after:g} ms"))
 def _(sut: TrainDriver, t_action: int, cab: int, after: float) -> None:
-    got = sut.trace.select(kind="status.rx", source=f"car{cab}.monitor", since=t_action + _us(after))
+    got = sut.trace.select(kind="status.rx", source=f"car{cab}.monitor", since=t_action + us(after))
     assert not got, f"status data still arrived: {analysis.describe(got)}"
 
 
@@ -170,14 +166,14 @@ def _(sut: TrainDriver, cab: int) -> None:
 @then(parsers.parse('"{node}" has status data from "{other}" no older than {bound:g} ms'))
 def _(sut: TrainDriver, node: str, other: str, bound: float) -> None:
     age = sut.status_table(node)[other]
-    assert age is not None and age <= _us(bound), (
+    assert age is not None and age <= us(bound), (
         f"{node} last heard {other} {'never' if age is None else ms(age) + ' ago'} (limit {bound} ms)")
 
 
 @then(parsers.parse('"{node}" has had no status data from "{other}" for at least {bound:g} ms'))
 def _(sut: TrainDriver, node: str, other: str, bound: float) -> None:
     age = sut.status_table(node)[other]
-    assert age is None or age >= _us(bound), f"{node} heard {other} only {ms(age)} ago"
+    assert age is None or age >= us(bound), f"{node} heard {other} only {ms(age)} ago"
 
 
 # -- frames on an analysed link ---------------------------------------------------------------------
@@ -214,15 +210,18 @@ def _(sut: TrainDriver, t_action: int, medium: str) -> None:
 
 @then(parsers.parse('on the analysed link no status or block frame of "{node}" goes ahead of a waiting command'))
 def _(sut: TrainDriver, t_action: int, node: str) -> None:
-    """NET-06 at the first hop: between a command's hand-over to the CCU's MDM8 (`cmd.tx`) and the moment
-    it starts on the fibre, no lower-priority frame of that node may start (one already on the fibre
-    finishes: frames are not pre-empted)."""
+    """NET-06 at one node: between a command reaching the node's MDM8 (handed over by its TXC, `cmd.tx`, or
+    arriving from the ring, `cmd.rx`) and the moment it leaves on the analysed fibre, no lower-priority
+    frame of that node may start (one already on the fibre finishes: frames are not pre-empted)."""
     sent = _tapped(sut, t_action)
     mine = [ev for ev in sent if ev["frm"] == node]
     commands = [ev for ev in mine if ev["frame"] == "command"]
     lower = [ev for ev in mine if ev["frame"] in ("status", "block")]
     assert commands and lower, f"the analyser saw {len(commands)} commands and {len(lower)} status/block frames of {node}"
-    for handed in sut.trace.select(kind="cmd.tx", source=f"{node}.MDM8", since=t_action):
+    handovers = [ev for ev in sut.trace.select(kind="cmd.*", source=f"{node}.MDM8", since=t_action)
+                 if ev.kind in ("cmd.tx", "cmd.rx")]
+    assert handovers, f"no command reached {node}"
+    for handed in handovers:
         start = next((ev["start_us"] for ev in commands if ev["start_us"] >= handed.t), None)
         if start is None:
             continue
@@ -262,7 +261,7 @@ def _(sut: TrainDriver, t_action: int, master: str, node: str, count: int, size:
     assert all(ev["bytes"] == size for ev in rx), f"block sizes {[ev['bytes'] for ev in rx]}"
     sent = [ev.t for ev in sut.trace.select(kind="block.tx", source=f"{node}.CPU3", since=t_action)]
     gaps = analysis.intervals(sent)
-    assert gaps and min(gaps) >= _us(gap), f"blocks sent {ms(min(gaps))} apart, less than {gap} ms"
+    assert gaps and min(gaps) >= us(gap), f"blocks sent {ms(min(gaps))} apart, less than {gap} ms"
 
 
 @then(parsers.parse('"{master}" holds the {size:d}-byte record of "{node}"'))
@@ -285,7 +284,7 @@ def _(sut: TrainDriver, t_action: int, device: str, lo: float, hi: float) -> Non
     times = [ev.t for ev in sut.trace.select(kind=kind, source=device, since=t_action)]
     assert len(times) >= 3, f"{device} was polled {len(times)} times"
     gaps = analysis.intervals(times)
-    assert _us(lo) <= min(gaps) and max(gaps) <= _us(hi), (
+    assert us(lo) <= min(gaps) and max(gaps) <= us(hi), (
         f"{device} polled every {ms(min(gaps))}..{ms(max(gaps))}, outside {lo}..{hi} ms")
 
 

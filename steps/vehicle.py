@@ -10,17 +10,13 @@ from pytest_bdd import given, parsers, then, when
 
 from sut.driver import TrainDriver
 from steps import analysis
-from steps.analysis import ms
+from steps.analysis import ms, us
 
 
 # An output value is words of lower-case letters and hyphens ("de-energised", "not commanded"), so a
 # sentence that goes on with "within 200 ms" can never be read as a longer value.
 VALUE = r"(?P<value>[a-z][a-z -]*[a-z])"
 NUMBER = r"\d+(?:\.\d+)?"
-
-
-def _us(ms_value: float) -> int:
-    return round(ms_value * 1000)
 
 
 # -- inputs -----------------------------------------------------------------------------------------
@@ -146,7 +142,7 @@ def _(sut: TrainDriver, t_action: int, output: str, value: str, bound: float) ->
     change = sut.trace.last(kind="out.change", source=output, until=sut.now_us)
     if change is not None and change.t >= t_action:
         delay = change.t - t_action
-        assert delay <= _us(bound), f"the {output} became {value} after {ms(delay)}, limit {bound} ms"
+        assert delay <= us(bound), f"the {output} became {value} after {ms(delay)}, limit {bound} ms"
 
 
 @then(parsers.re(rf'the "(?P<output>[^"]+)" stays {VALUE}'))
@@ -191,7 +187,7 @@ def _(sut: TrainDriver, t_action: int, a: str, b: str) -> None:
 
 @then(parsers.parse("no CI receives a traction notch above 0 from {after:g} ms on"))
 def _(sut: TrainDriver, t_action: int, after: float) -> None:
-    takes = [ev for ev in sut.trace.select(kind="cmd.in", source="*.CI", since=t_action + _us(after))]
+    takes = [ev for ev in sut.trace.select(kind="cmd.in", source="*.CI", since=t_action + us(after))]
     assert takes, "no CI received any command"
     odd = [ev for ev in takes if (ev["traction"] or 0) > 0 or ev["traction_step"] in ("A", "B")]
     assert not odd, f"traction reached a CI: {analysis.describe(odd)}"
@@ -200,7 +196,7 @@ def _(sut: TrainDriver, t_action: int, after: float) -> None:
 @then(parsers.parse("every CI receives traction notch {notch:d} within {bound:g} ms"))
 def _(sut: TrainDriver, t_action: int, notch: int, bound: float) -> None:
     for device in [d for d in analysis.command_devices(sut) if d.endswith(".CI")]:
-        got = sut.trace.first(kind="cmd.in", source=device, since=t_action, until=t_action + _us(bound),
+        got = sut.trace.first(kind="cmd.in", source=device, since=t_action, until=t_action + us(bound),
                               traction=notch)
         assert got is not None, f"{device} did not receive traction notch {notch} within {bound} ms"
 
@@ -208,7 +204,7 @@ def _(sut: TrainDriver, t_action: int, notch: int, bound: float) -> None:
 @then(parsers.parse("from {after:g} ms on every BCU receives brake step {step:d}"))
 def _(sut: TrainDriver, t_action: int, after: float, step: int) -> None:
     for device in [d for d in analysis.command_devices(sut) if d.endswith(".BCU")]:
-        takes = sut.trace.select(kind="cmd.in", source=device, since=t_action + _us(after))
+        takes = sut.trace.select(kind="cmd.in", source=device, since=t_action + us(after))
         assert takes, f"{device} received nothing"
         odd = [ev for ev in takes if ev["brake"] != step]
         assert not odd, f"{device} received other brake steps: {analysis.describe(odd)}"

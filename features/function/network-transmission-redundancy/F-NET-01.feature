@@ -1,6 +1,6 @@
-@item:F-NET-01 @profile:crh2
+@item:F-NET-01 @profile:crh2 @req:TST-04
 Feature: F-NET-01 Two-level network, its units and their boards
-  Requirements: NET-01 (primary), NET-02.
+  Requirements: NET-01 (primary), NET-02, TST-04.
   The train level is a ring joining every CCU and LCU; the vehicle level joins each unit to the devices
   of its car; the self-diagnostic line joins every unit as a backup.
 

@@ -1,6 +1,6 @@
-@item:F-NET-02 @profile:crh2
+@item:F-NET-02 @profile:crh2 @req:TST-04
 Feature: F-NET-02 Ring with one link fault
-  Requirements: NET-03 (primary), PRO-01.
+  Requirements: NET-03 (primary), PRO-01, TST-04.
   With one span cut, every node still reaches every other through the opposite direction.
 
   Background:

@@ -1,6 +1,6 @@
-@item:F-NET-03 @profile:crh2
+@item:F-NET-03 @profile:crh2 @req:TST-04
 Feature: F-NET-03 Ring split by two link faults
-  Requirements: NET-03 (primary), PRO-05, CMD-04.
+  Requirements: NET-03 (primary), PRO-05, CMD-04, TST-04.
   Two cut spans split the ring; the nodes of each segment keep communicating with each other, and a
   segment left without the token regenerates its own.
 

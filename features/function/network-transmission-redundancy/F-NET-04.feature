@@ -1,6 +1,6 @@
-@item:F-NET-04 @profile:crh2
+@item:F-NET-04 @profile:crh2 @req:TST-04
 Feature: F-NET-04 Whole ring down: the self-diagnostic line carries control commands only
-  Requirements: NET-04 (primary), CMD-04.
+  Requirements: NET-04 (primary), CMD-04, TST-04.
   With every ring span cut, traction and brake commands still reach every car over the self-diagnostic
   line (path 3), but no status data and no block data travel on it.
 

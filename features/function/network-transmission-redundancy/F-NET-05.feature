@@ -1,6 +1,6 @@
-@item:F-NET-05 @profile:crh2
+@item:F-NET-05 @profile:crh2 @req:TST-04
 Feature: F-NET-05 Frame check: a bad frame is discarded, a good one forwarded
-  Requirements: NET-05 (primary), NET-03.
+  Requirements: NET-05 (primary), NET-03, TST-04.
 
   Background:
     Given an 8-car CRH2 train set

@@ -1,6 +1,6 @@
-@item:F-NET-07 @profile:crh2
+@item:F-NET-07 @profile:crh2 @req:TST-04
 Feature: F-NET-07 ARCNET over fibre at 2.5 Mbit/s
-  Requirements: NET-07 (primary).
+  Requirements: NET-07 (primary), TST-04.
 
   @req:NET-07
   Scenario: F-NET-07 Every frame on a ring link goes at 2.5 Mbit/s

@@ -1,6 +1,6 @@
-@item:F-NET-08 @profile:crh2
+@item:F-NET-08 @profile:crh2 @req:TST-04
 Feature: F-NET-08 Coupling two sets couples the ring and the self-diagnostic line
-  Requirements: NET-08 (primary), PRO-01.
+  Requirements: NET-08 (primary), PRO-01, TST-04.
 
   Background:
     Given two 8-car CRH2 train sets coupled together

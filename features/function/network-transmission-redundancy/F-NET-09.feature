@@ -1,6 +1,6 @@
-@item:F-NET-09 @profile:crh2
+@item:F-NET-09 @profile:crh2 @req:TST-04
 Feature: F-NET-09 Vehicle-level links: polled HDLC to CI and BCU, current loops to other devices
-  Requirements: NET-09 (primary).
+  Requirements: NET-09 (primary), TST-04.
   CI and BCU are polled every 10 ms over fibre HDLC. Air-conditioning setter, passenger information
   display and auxiliary power unit are polled over 20 mA / 30 mA loops at periods of their own (the
   article gives none: DECISIONS.md); simple devices are one-way.

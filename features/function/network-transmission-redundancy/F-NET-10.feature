@@ -1,6 +1,6 @@
-@item:F-NET-10 @profile:crh2
+@item:F-NET-10 @profile:crh2 @req:TST-04
 Feature: F-NET-10 Control command broadcast: 12 bytes, at least 10 ms apart, at most 15 ms on the ring
-  Requirements: PRO-01 (primary), NET-06.
+  Requirements: PRO-01 (primary), NET-06, TST-04.
   The active cab's CCU broadcasts commands no other node can disturb; per-node pass-through 0.25 ms.
 
   Background:

@@ -1,6 +1,6 @@
-@item:F-NET-11 @profile:crh2
+@item:F-NET-11 @profile:crh2 @req:TST-04
 Feature: F-NET-11 Status data: every car broadcasts 240 bytes once per 120 ms cycle
-  Requirements: PRO-02 (primary).
+  Requirements: PRO-02 (primary), TST-04.
 
   @req:PRO-02
   Scenario: F-NET-11 An 8-car set cycles its status data in 120 ms

@@ -1,6 +1,6 @@
-@item:F-NET-12 @profile:crh2
+@item:F-NET-12 @profile:crh2 @req:TST-04
 Feature: F-NET-12 Token formation after power-up
-  Requirements: PRO-03 (primary).
+  Requirements: PRO-03 (primary), TST-04.
   No status data within 500 ms of power-up: every node sends a token initialisation; the token is formed
   at node number x 20 ms, so the lowest-numbered live node forms it.
 

@@ -1,6 +1,6 @@
-@item:F-NET-13 @profile:crh2
+@item:F-NET-13 @profile:crh2 @req:TST-04
 Feature: F-NET-13 Token holding, passing and return at a fault
-  Requirements: PRO-04 (primary), PRO-02.
+  Requirements: PRO-04 (primary), PRO-02, TST-04.
   Each node holds the token 10 ms and passes it to its neighbour; at a fault the node beside it sends
   the token back the other way after its holding time.
 

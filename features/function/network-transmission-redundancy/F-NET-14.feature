@@ -1,6 +1,6 @@
-@item:F-NET-14 @profile:crh2
+@item:F-NET-14 @profile:crh2 @req:TST-04
 Feature: F-NET-14 Token regeneration after 500 ms without a token
-  Requirements: PRO-05 (primary), PRO-03.
+  Requirements: PRO-05 (primary), PRO-03, TST-04.
 
   Background:
     Given an 8-car CRH2 train set

@@ -1,6 +1,6 @@
-@item:F-NET-15 @profile:crh2
+@item:F-NET-15 @profile:crh2 @req:TST-04
 Feature: F-NET-15 Block data: 236-byte blocks on request and grant, at least 10 ms apart
-  Requirements: PRO-06 (primary).
+  Requirements: PRO-06 (primary), TST-04.
   A node asks for a block transfer in its status data; the master node announces the granted node in its
   status data; the blocks follow at least 10 ms apart.
 

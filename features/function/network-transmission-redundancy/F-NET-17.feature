@@ -1,6 +1,6 @@
-@item:F-NET-17 @profile:crh2
+@item:F-NET-17 @profile:crh2 @req:TST-04
 Feature: F-NET-17 CCU systems 1 and 2: independent supplies, takeover after 50 ms of silence
-  Requirements: RED-02 (primary), RED-01.
+  Requirements: RED-02 (primary), RED-01, TST-04.
   Both systems' TXCs sample the desk; system 2 only watches the ring while system 1 is healthy and takes
   over when it has seen no data from system 1 for 50 ms. Takeover is timed where commands enter the ring,
   as the gap between system 1's last and system 2's first command: from 50 ms up to 50 ms plus one

@@ -1,6 +1,6 @@
-@item:F-NET-18 @profile:crh2
+@item:F-NET-18 @profile:crh2 @req:TST-04
 Feature: F-NET-18 Cab indicator lamps driven by both TXCs
-  Requirements: RED-03 (primary).
+  Requirements: RED-03 (primary), TST-04.
 
   Background:
     Given an 8-car CRH2 train set

@@ -1,6 +1,6 @@
-@item:F-NET-19 @profile:crh2
+@item:F-NET-19 @profile:crh2 @req:TST-04
 Feature: F-NET-19 Fail-safe command boards: two CPU groups, compare, cut on disagreement, inverted I/O
-  Requirements: FS-02 (primary), FS-01, FS-03, RED-02.
+  Requirements: FS-02 (primary), FS-01, FS-03, RED-02, TST-04.
 
   Background:
     Given an 8-car CRH2 train set

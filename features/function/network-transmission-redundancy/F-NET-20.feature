@@ -1,6 +1,6 @@
-@item:F-NET-20 @profile:crh2
+@item:F-NET-20 @profile:crh2 @req:TST-04
 Feature: F-NET-20 The driver's controller in each cab sets master control, direction and notches
-  Requirements: CMD-05 (primary), PRO-01.
+  Requirements: CMD-05 (primary), PRO-01, TST-04.
 
   Background:
     Given an 8-car CRH2 train set

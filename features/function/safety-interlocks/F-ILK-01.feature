@@ -1,6 +1,6 @@
-@item:F-ILK-01 @profile:crh2
+@item:F-ILK-01 @profile:crh2 @req:TST-04
 Feature: F-ILK-01 Train separation applies the emergency and the rapid brake together
-  Requirements: ILK-01 (primary), ILK-08.
+  Requirements: ILK-01 (primary), ILK-08, TST-04.
   When the train separates, the emergency-brake magnet valve loses power; emergency brake and rapid
   brake apply together.
 

@@ -1,6 +1,6 @@
-@item:F-ILK-02 @profile:crh2
+@item:F-ILK-02 @profile:crh2 @req:TST-04
 Feature: F-ILK-02 Low main air pipe pressure: emergency and rapid brake, anywhere in (590 +/- 10) kPa
-  Requirements: ILK-02 (primary).
+  Requirements: ILK-02 (primary), TST-04.
   Below the set point (590 +/- 10) kPa the emergency and rapid-brake magnet valves de-energise. A
   conforming train trips anywhere in 580..600 kPa: never above 600, always by 580. Once tripped it stays
   tripped until the pressure is back above 600 kPa and releases by 640 kPa (the project's hysteresis rule,

@@ -1,6 +1,6 @@
-@item:F-ILK-04 @profile:crh2
+@item:F-ILK-04 @profile:crh2 @req:TST-04
 Feature: F-ILK-04 Automatic neutral-section passing and its signal faults
-  Requirements: ILK-04 (primary).
+  Requirements: ILK-04 (primary), TST-04.
   Normal passing opens the VCBs on the advance warning and closes them on the exit signal. A severe
   device fault raises a network alarm and leaves passing to the driver; a faulty warning signal makes the
   network force automatic passing on the entry signal; a missing entry or exit signal hands the step to

@@ -1,6 +1,6 @@
-@item:F-ILK-06 @profile:crh2
+@item:F-ILK-06 @profile:crh2 @req:TST-04
 Feature: F-ILK-06 Main circuit protection: transformer faults, oil pump and oil temperature
-  Requirements: ILK-06 (primary).
+  Requirements: ILK-06 (primary), TST-04.
   Transformer over-currents open the VCB, the converter input contactors and block the gate pulses; earth
   faults open the VCB; a stopped oil pump or hot oil cuts the converters but leaves the VCB closed. Each
   traction unit (cars 1-4, cars 5-8) has its own transformer and VCB; the other unit is not touched.

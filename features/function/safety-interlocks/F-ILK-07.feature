@@ -1,6 +1,6 @@
-@item:F-ILK-07 @profile:crh2
+@item:F-ILK-07 @profile:crh2 @req:TST-04
 Feature: F-ILK-07 Only one cab's master control relay picks up
-  Requirements: ILK-07 (primary), CMD-05.
+  Requirements: ILK-07 (primary), CMD-05, TST-04.
 
   Background:
     Given an 8-car CRH2 train set

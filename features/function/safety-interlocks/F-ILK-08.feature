@@ -1,6 +1,6 @@
-@item:F-ILK-08 @profile:crh2
+@item:F-ILK-08 @profile:crh2 @req:TST-04
 Feature: F-ILK-08 Traction command permission: every condition alone blocks traction
-  Requirements: ILK-08 (primary), ILK-02, ILK-05.
+  Requirements: ILK-08 (primary), ILK-02, ILK-05, TST-04.
   A traction command is produced only if this cab's MCR is up, the direction switch is at forward or
   reverse, no rapid or emergency brake acts, and the side doors are closed or the door-interlock bypass
   switch is ON. Each scenario breaks one condition and checks that no converter gets traction.

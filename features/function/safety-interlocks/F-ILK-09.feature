@@ -1,6 +1,6 @@
-@item:F-ILK-09 @profile:crh2
+@item:F-ILK-09 @profile:crh2 @req:TST-04
 Feature: F-ILK-09 Braking outranks traction
-  Requirements: ILK-08 (primary).
+  Requirements: ILK-08 (primary), TST-04.
   Any brake command, from the brake handle or from the ATP, suppresses traction.
 
   Background:

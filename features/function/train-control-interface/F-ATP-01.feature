@@ -1,6 +1,6 @@
-@item:F-ATP-01 @profile:crh2
+@item:F-ATP-01 @profile:crh2 @req:TST-04
 Feature: F-ATP-01 ATP service brake command through the network
-  Requirements: ILK-08 (primary).
+  Requirements: ILK-08 (primary), TST-04.
   The ATP's service brake reaches every BCU as full service brake and suppresses traction.
 
   Background:

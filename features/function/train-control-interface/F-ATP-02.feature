@@ -1,6 +1,6 @@
-@item:F-ATP-02 @profile:crh2
+@item:F-ATP-02 @profile:crh2 @req:TST-04
 Feature: F-ATP-02 ATP emergency brake opens the emergency brake loop
-  Requirements: ILK-08 (primary).
+  Requirements: ILK-08 (primary), TST-04.
 
   Background:
     Given an 8-car CRH2 train set

@@ -1,6 +1,6 @@
-@item:F-ATP-03 @profile:crh2
+@item:F-ATP-03 @profile:crh2 @req:TST-04
 Feature: F-ATP-03 Releasing the ATP brake gives the driver traction back
-  Requirements: ILK-08 (primary).
+  Requirements: ILK-08 (primary), TST-04.
 
   Background:
     Given an 8-car CRH2 train set
