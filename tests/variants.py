@@ -179,6 +179,11 @@ class TwoMasterControllers(ReferenceTrain):
     BEHAVIOUR = {"mcr_exclusive": False}
 
 
+class LateCompressor(ReferenceTrain):
+    """Control: the compressor starts only below 700 kPa (the governor's 780 kPa is a project decision)."""
+    INTERLOCKS = {"compressor_start_kpa": 700.0}
+
+
 class TractionInNeutral(ReferenceTrain):
     """ILK-08: the direction switch is not part of the traction permission."""
     BEHAVIOUR = {"ilk08_ignored": ("direction",)}
@@ -255,6 +260,7 @@ FAULTY = [
     (DoorRelayAt10, "ILK-05", "F-ILK-05"),
     (OilFaultsIgnored, "ILK-06", "F-ILK-06"),
     (TwoMasterControllers, "ILK-07", "F-ILK-07"),
+    (LateCompressor, "TST-05", "F-CTL-09"),
     (TractionInNeutral, "ILK-08", "F-ILK-08"),
     (TractionThroughEmergencyBrake, "ILK-08", "F-ILK-08"),
     (TractionWithDoorsOpen, "ILK-08", "F-ILK-08"),

@@ -69,6 +69,8 @@ class Interlocks:
     brake_force_detect_us: int = 500 * MS   # ... for 500 ms
     ns_entry_timeout_us: int = 15_000 * MS  # DECISIONS: no entry signal 15 s after the warning
     ns_exit_timeout_us: int = 10_000 * MS   # DECISIONS: no exit signal 10 s after the entry
+    compressor_start_kpa: float = 780.0     # DECISIONS: compressor governor
+    compressor_stop_kpa: float = 880.0
 
 
 MOTOR_CARS_8 = (2, 3, 6, 7)       # CRH2A 4M4T: CI (main converter) in these cars of each set

@@ -303,7 +303,10 @@ class RingNode:
         master = self.train.block_master()
         self.emit("block.tx", at=f"{self.name}.CPU3", record=record, index=index, total=total,
                   to=master.name if master else None)
-        if master is not None:
+        if master is self:          # the master's own records go straight into its store
+            self.train.block_received(self, dict(owner=self.number, record=record, index=index, total=total,
+                                                 data=block), self.number)
+        elif master is not None:
             frame = fr.data_frame(fr.K_BLOCK, self.number, master.number, fr.P_BLOCK, owner=self.number,
                                   record=record, index=index, total=total, data=block)
             self.train.ring.broadcast(self, frame)

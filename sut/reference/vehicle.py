@@ -270,9 +270,9 @@ class Vehicle:
                     or order(f"unit{u}.VCB") == "open" or order(f"unit{u}.pantograph") == "down"
                     for u in self.units}
         # compressor governor (DECISIONS.md): start below 780 kPa, stop at 880 kPa
-        if not self.compressor and pressure < 780:
+        if not self.compressor and pressure < cfg.compressor_start_kpa:
             self.compressor = True
-        elif self.compressor and pressure >= 880:
+        elif self.compressor and pressure >= cfg.compressor_stop_kpa:
             self.compressor = False
         out = {
             "EB valve": "de-energised" if eb_loop_open else "energised",
