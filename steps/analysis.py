@@ -39,6 +39,18 @@ def command_deliveries(trace: Trace, since: int = 0, until: int | None = None) -
     return out
 
 
+def expect_taken(sut: TrainDriver, devices: list[str], t_action: int, bound: float, what: str, **want) -> None:
+    """Every device took a command with the `want` fields (path, traction, direction, ...) within `bound`
+    ms of the action; the failure says what each laggard took last."""
+    assert devices, "no CI or BCU to check"
+    until = t_action + us(bound)
+    for device in devices:
+        if sut.trace.first(kind="cmd.in", source=device, since=t_action, until=until, **want) is None:
+            last = sut.trace.last(kind="cmd.in", source=device, until=until)
+            seen = f"last took {dict(last.fields)} at {ms(last.t)}" if last else "took no command at all"
+            raise AssertionError(f"{device} did not receive {what} within {bound} ms; it {seen}")
+
+
 def intervals(times: Iterable[int]) -> list[int]:
     times = list(times)
     return [b - a for a, b in zip(times, times[1:])]

@@ -83,61 +83,46 @@ def _(sut: TrainDriver, t_action: int, after: float, notch: int, step: int) -> N
 
 
 # -- at CI and BCU ----------------------------------------------------------------------------------
-def _first_take(sut: TrainDriver, device: str, since: int, until: int, **want) -> int | None:
-    ev = sut.trace.first(kind="cmd.in", source=device, since=since, until=until, **want)
-    return None if ev is None else ev.t
-
-
-def _check_devices(sut: TrainDriver, devices: list[str], t_action: int, bound: float, what: str, **want) -> None:
-    assert devices, "no CI or BCU to check"
-    for device in devices:
-        t = _first_take(sut, device, t_action, t_action + us(bound), **want)
-        if t is None:
-            last = sut.trace.last(kind="cmd.in", source=device, until=t_action + us(bound))
-            seen = f"last took {dict(last.fields)} at {ms(last.t)}" if last else "took no command at all"
-            raise AssertionError(f"{device} did not receive {what} within {bound} ms; it {seen}")
-
-
 @then(parsers.parse("every CI and BCU receives traction notch {notch:d} over path 1 within {bound:g} ms"))
 def _(sut: TrainDriver, t_action: int, notch: int, bound: float) -> None:
-    _check_devices(sut, analysis.command_devices(sut), t_action, bound, f"notch {notch} over path 1",
+    analysis.expect_taken(sut, analysis.command_devices(sut), t_action, bound, f"notch {notch} over path 1",
                    path=1, traction=notch)
 
 
 @then(parsers.parse("the CI and BCU of car {car:d} receive traction notch {notch:d} over path 1 within {bound:g} ms"))
 def _(sut: TrainDriver, t_action: int, car: int, notch: int, bound: float) -> None:
-    _check_devices(sut, analysis.command_devices(sut, car), t_action, bound, f"notch {notch} over path 1",
+    analysis.expect_taken(sut, analysis.command_devices(sut, car), t_action, bound, f"notch {notch} over path 1",
                    path=1, traction=notch)
 
 
 @then(parsers.parse("every BCU receives brake step {step:d} over path 1 within {bound:g} ms"))
 def _(sut: TrainDriver, t_action: int, step: int, bound: float) -> None:
     bcus = [d for d in analysis.command_devices(sut) if d.endswith(".BCU")]
-    _check_devices(sut, bcus, t_action, bound, f"brake step {step} over path 1", path=1, brake=step)
+    analysis.expect_taken(sut, bcus, t_action, bound, f"brake step {step} over path 1", path=1, brake=step)
 
 
 @then(parsers.parse('every BCU receives brake step "{step}" over path {path:d} within {bound:g} ms'))
 def _(sut: TrainDriver, t_action: int, step: str, path: int, bound: float) -> None:
     bcus = [d for d in analysis.command_devices(sut) if d.endswith(".BCU")]
-    _check_devices(sut, bcus, t_action, bound, f"brake step {step} over path {path}", path=path,
+    analysis.expect_taken(sut, bcus, t_action, bound, f"brake step {step} over path {path}", path=path,
                    brake_step=step)
 
 
 @then(parsers.parse('every CI and BCU receives traction step "{step}" over path {path:d} within {bound:g} ms'))
 def _(sut: TrainDriver, t_action: int, step: str, path: int, bound: float) -> None:
-    _check_devices(sut, analysis.command_devices(sut), t_action, bound, f"traction step {step} over path {path}",
+    analysis.expect_taken(sut, analysis.command_devices(sut), t_action, bound, f"traction step {step} over path {path}",
                    path=path, traction_step=step)
 
 
 @then(parsers.parse('the CI and BCU of car {car:d} receive traction step "{step}" over path {path:d} within {bound:g} ms'))
 def _(sut: TrainDriver, t_action: int, car: int, step: str, path: int, bound: float) -> None:
-    _check_devices(sut, analysis.command_devices(sut, car), t_action, bound,
+    analysis.expect_taken(sut, analysis.command_devices(sut, car), t_action, bound,
                    f"traction step {step} over path {path}", path=path, traction_step=step)
 
 
 @then(parsers.parse('the BCU of car {car:d} receives brake step "{step}" over path {path:d} within {bound:g} ms'))
 def _(sut: TrainDriver, t_action: int, car: int, step: str, path: int, bound: float) -> None:
-    _check_devices(sut, [f"car{car}.BCU"], t_action, bound, f"brake step {step} over path {path}", path=path,
+    analysis.expect_taken(sut, [f"car{car}.BCU"], t_action, bound, f"brake step {step} over path {path}", path=path,
                    brake_step=step)
 
 

@@ -80,7 +80,5 @@ def _(sut: TrainDriver, master: str, node: str, board: str, event: str) -> None:
 
 @then(parsers.parse('every CI receives direction "{direction}" within {bound:g} ms'))
 def _(sut: TrainDriver, t_action: int, direction: str, bound: float) -> None:
-    for device in [d for d in analysis.command_devices(sut) if d.endswith(".CI")]:
-        got = sut.trace.first(kind="cmd.in", source=device, since=t_action, until=t_action + us(bound),
-                              direction=direction)
-        assert got is not None, f"{device} did not receive direction {direction} within {bound} ms"
+    cis = [d for d in analysis.command_devices(sut) if d.endswith(".CI")]
+    analysis.expect_taken(sut, cis, t_action, bound, f"direction {direction}", direction=direction)

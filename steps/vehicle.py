@@ -195,10 +195,8 @@ def _(sut: TrainDriver, t_action: int, after: float) -> None:
 
 @then(parsers.parse("every CI receives traction notch {notch:d} within {bound:g} ms"))
 def _(sut: TrainDriver, t_action: int, notch: int, bound: float) -> None:
-    for device in [d for d in analysis.command_devices(sut) if d.endswith(".CI")]:
-        got = sut.trace.first(kind="cmd.in", source=device, since=t_action, until=t_action + us(bound),
-                              traction=notch)
-        assert got is not None, f"{device} did not receive traction notch {notch} within {bound} ms"
+    cis = [d for d in analysis.command_devices(sut) if d.endswith(".CI")]
+    analysis.expect_taken(sut, cis, t_action, bound, f"traction notch {notch}", traction=notch)
 
 
 @then(parsers.parse("from {after:g} ms on every BCU receives brake step {step:d}"))
