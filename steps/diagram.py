@@ -2,16 +2,17 @@
 
 One lane per thing that changed: vehicle outputs, the CCU systems putting commands on the ring (high while
 they send), each RXC's command source, and an events lane for injected faults, takeovers, fail-safe cuts
-and token formation. Time is cut into at most ~100 equal slots so a 50 ms takeover and a 20 s pressure
+and token formation. Time is cut into at most ~48 equal slots so a 50 ms takeover and a 20 s pressure
 ramp both fit one picture; the header says the slot length.
 """
 from __future__ import annotations
 
 import json
+import re
 
 from sut.trace import Trace, TraceEvent
 
-MAX_SLOTS = 100
+MAX_SLOTS = 48
 NICE_MS = (1, 2, 5, 10, 20, 50, 100, 200, 500, 1000, 2000, 5000)
 EVENT_KINDS = ("fault.", "ccu.takeover", "txc.failsafe", "rxc.failsafe", "token.form", "token.init", "in.set",
                "in.ramp", "desk.")
@@ -93,7 +94,8 @@ def wavejson(trace: Trace, start_us: int, end_us: int) -> dict | None:
                 wave.append("0")
         lanes.append({"name": "events", "wave": _runs(wave), "data": data})
     for node, hits in sorted(senders.items()):
-        lanes.append({"name": f"cmd {node}", "wave": _runs(["1" if i in hits else "0" for i in range(slots)])})
+        if len(hits) < slots:                      # a sender that never paused says nothing
+            lanes.append({"name": f"cmd {node}", "wave": _runs(["1" if i in hits else "0" for i in range(slots)])})
     for name, changes in sorted(outputs.items()):
         if len({value for _, value in changes}) > 1:          # an output that never changed says nothing
             lanes.append(_data_lane(name, changes, slots))
@@ -107,7 +109,20 @@ def wavejson(trace: Trace, start_us: int, end_us: int) -> dict | None:
             "config": {"hscale": 1}}
 
 
+_DEF = re.compile(r'<g id="([^"]+)">.*?</g>', re.S)
+
+
 def render_svg(diagram: dict) -> str:
+    """WaveDrom's SVG carries its whole skin (~800 shapes) in <defs>; keep only the shapes the diagram
+    uses, which makes each picture a few kilobytes instead of ~50 in a single-file report."""
     import wavedrom
 
-    return wavedrom.render(json.dumps(diagram)).tostring()
+    svg = wavedrom.render(json.dumps(diagram)).tostring()
+    head, sep, rest = svg.partition("<defs>")
+    defs, sep2, tail = rest.partition("</defs>")
+    if not sep or not sep2:
+        return svg
+    used = set(re.findall(r'href="#([^"]+)"', tail))
+    kept = "".join(m.group(0) for m in _DEF.finditer(defs) if m.group(1) in used)
+    others = _DEF.sub("", defs)                # markers and styles that are not skin shapes
+    return f"{head}<defs>{kept}{others}</defs>{tail}"

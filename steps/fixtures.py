@@ -17,6 +17,17 @@ def pytest_addoption(parser: pytest.Parser) -> None:
     group.addoption("--sut", default=None, metavar="NAME",
                     help=f"SUT backend: one of {', '.join(BACKENDS)} or package.module:Class "
                          f"(default: ${ENV_VAR} or 'reference')")
+    group.addoption("--whole-trace", choices=("failed", "all"), default="failed",
+                    help="attach the whole SUT trace (gzipped CSV) to the report for failed scenarios only "
+                         "(default) or for all; the timing diagram and key events are always attached")
+
+
+@pytest.hookimpl(wrapper=True)
+def pytest_runtest_makereport(item: pytest.Item, call: pytest.CallInfo):
+    # Remember how each phase went, so the sut fixture's teardown knows whether the scenario failed.
+    report = yield
+    setattr(item, f"_crh2_{report.when}", report)
+    return report
 
 
 _SUT_CLASS = pytest.StashKey[type]()
@@ -39,8 +50,11 @@ def sut_class(request: pytest.FixtureRequest) -> type[TrainDriver]:
 def sut(sut_class: type[TrainDriver], request: pytest.FixtureRequest):
     driver = sut_class()
     yield driver
+    outcome = [getattr(request.node, f"_crh2_{phase}", None) for phase in ("setup", "call")]
+    failed = any(r is not None and r.failed for r in outcome)
+    whole = failed or request.config.getoption("--whole-trace") == "all"
     try:
-        report.attach_run(driver, request)
+        report.attach_run(driver, request, whole_trace=whole)
     finally:
         driver.shutdown()
 

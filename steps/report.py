@@ -1,8 +1,9 @@
 """What a scenario leaves in the Allure report: the SUT's trace and its parameters.
 
-Three attachments per scenario: a timing diagram (steps/diagram.py), the key events (faults, desk inputs, token initialisation and formation,
-takeover, fail-safe cuts, path changes, discards, block transfer, lamps) as a CSV shown inline, and the
-whole trace, every event, as gzipped CSV. The periodic traffic (thousands of command and status frames a
+Per scenario: a timing diagram (steps/diagram.py), the key events (faults, inputs, token initialisation and
+formation, takeover, fail-safe cuts, path changes, discards, block transfer, lamps, state changes) as a CSV
+shown inline, and, for a failed scenario (or every one with --whole-trace=all), the whole trace, every event,
+as gzipped CSV. The periodic traffic (thousands of command and status frames a
 second) would make the inline table unreadable and the single-file report tens of megabytes.
 """
 from __future__ import annotations
@@ -22,15 +23,23 @@ PERIODIC_KINDS = frozenset({
 })
 
 
-def attach_run(driver: TrainDriver, request: pytest.FixtureRequest) -> None:
+def _is_key(ev) -> bool:
+    if ev.kind in PERIODIC_KINDS:
+        return False
+    # a displayed number (speed, mileage, pressure) changes every status cycle: that is traffic, not news
+    return not (ev.kind == "display.change" and isinstance(ev.get("value"), (int, float)))
+
+
+def attach_run(driver: TrainDriver, request: pytest.FixtureRequest, whole_trace: bool = True) -> None:
     if not driver.powered:
         return
     trace = driver.trace
-    key = Trace([ev for ev in trace if ev.kind not in PERIODIC_KINDS])
+    key = Trace([ev for ev in trace if _is_key(ev)])
     allure.attach(key.to_csv(), name=f"key events ({len(key)} of {len(trace)}, t in ms)",
                   attachment_type=allure.attachment_type.CSV)
-    allure.attach(gzip.compress(trace.to_csv().encode(), mtime=0), name=f"whole trace ({len(trace)} events)",
-                  attachment_type="application/gzip", extension="csv.gz")
+    if whole_trace:
+        allure.attach(gzip.compress(trace.to_csv().encode(), mtime=0), name=f"whole trace ({len(trace)} events)",
+                      attachment_type="application/gzip", extension="csv.gz")
     _attach_diagram(trace, key, driver.now_us)
     _write_environment(driver, request.config)
 

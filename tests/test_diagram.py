@@ -1,0 +1,39 @@
+"""The report's timing diagram: what it draws from a trace, and a pruned SVG that still has every shape."""
+from __future__ import annotations
+
+import re
+
+from steps.diagram import render_svg, wavejson
+from sut.trace import Trace, TraceEvent
+
+
+def ev(t_ms: float, source: str, kind: str, **fields) -> TraceEvent:
+    return TraceEvent(round(t_ms * 1000), source, kind, fields)
+
+
+def test_nothing_changed_draws_nothing() -> None:
+    trace = Trace([ev(0, "EB valve", "out.change", value="energised")])
+    assert wavejson(trace, 0, 1_000_000) is None
+
+
+def test_outputs_senders_and_events_become_lanes() -> None:
+    trace = Trace([
+        ev(0, "EB valve", "out.change", value="energised"),
+        ev(100, "car1.CCU.sys1.MDM8", "cmd.tx", seq=1, system=1),
+        ev(400, "main pipe pressure", "fault.board", failed=True),
+        ev(500, "EB valve", "out.change", value="de-energised"),
+    ])
+    diagram = wavejson(trace, 0, 1_000_000)
+    lanes = {lane["name"]: lane for lane in diagram["signal"]}
+    assert set(lanes) == {"events", "cmd car1.CCU.sys1", "EB valve"}
+    assert lanes["EB valve"]["data"] == ["energised", "de-energised"]
+    assert len(lanes["EB valve"]["wave"]) <= 49 and "one slot = 50 ms" in diagram["head"]["text"]
+
+
+def test_pruned_svg_keeps_every_shape_it_uses() -> None:
+    diagram = {"signal": [{"name": "a", "wave": "x=.=", "data": ["on", "off"]}, {"name": "b", "wave": "1.0."}]}
+    svg = render_svg(diagram)
+    defined = set(re.findall(r'<g id="([^"]+)"', svg))
+    used = set(re.findall(r'href="#([^"]+)"', svg))
+    assert used <= defined
+    assert len(svg) < 20_000
