@@ -51,6 +51,15 @@ def expect_taken(sut: TrainDriver, devices: list[str], t_action: int, bound: flo
             raise AssertionError(f"{device} did not receive {what} within {bound} ms; it {seen}")
 
 
+def expect_period(times: Iterable[int], lo: float, hi: float, what: str, at_least: int = 3) -> None:
+    """`what` happened at least `at_least` times and every gap between two lies in lo..hi ms."""
+    times = list(times)
+    assert len(times) >= at_least, f"{what}: only {len(times)} times"
+    gaps = intervals(times)
+    assert us(lo) <= min(gaps) and max(gaps) <= us(hi), (
+        f"{what}: every {ms(min(gaps))}..{ms(max(gaps))}, outside {lo:g}..{hi:g} ms")
+
+
 def intervals(times: Iterable[int]) -> list[int]:
     times = list(times)
     return [b - a for a, b in zip(times, times[1:])]

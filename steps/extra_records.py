@@ -99,10 +99,7 @@ def _hdlc_polls(sut: TrainDriver, devices: list[str], since: int, lo: float, hi:
     assert devices, "no CI or BCU to check"
     for device in devices:
         times = [ev.t for ev in sut.trace.select(kind="cmd.in", source=device, since=since, path=1)]
-        assert len(times) >= 3, f"{device} was polled over HDLC {len(times)} times since {ms(since)}"
-        gaps = analysis.intervals(times)
-        assert us(lo) <= min(gaps) and max(gaps) <= us(hi), (
-            f"{device} polled over HDLC every {ms(min(gaps))}..{ms(max(gaps))}, outside {lo}..{hi} ms")
+        analysis.expect_period(times, lo, hi, f"{device} polled over HDLC since {ms(since)}")
 
 
 @then(parsers.parse("every CI and BCU is polled over HDLC every {lo:g} to {hi:g} ms"))
@@ -128,12 +125,9 @@ def _(sut: TrainDriver, t_action: int, device: str, lo: float, hi: float) -> Non
         name = f"car{car}.{device}"
         assert name in sut.devices(car), f"car {car} has no {device}: {sorted(sut.devices(car))}"
         polls = sut.trace.select(kind="loop.poll", source=name, since=t_action)
-        assert len(polls) >= 3, f"{name} was polled {len(polls)} times"
         unanswered = [ev for ev in polls if not ev["reply"]]
         assert not unanswered, f"{name} did not answer: {analysis.describe(unanswered)}"
-        gaps = analysis.intervals(ev.t for ev in polls)
-        assert us(lo) <= min(gaps) and max(gaps) <= us(hi), (
-            f"{name} polled every {ms(min(gaps))}..{ms(max(gaps))}, outside {lo}..{hi} ms")
+        analysis.expect_period((ev.t for ev in polls), lo, hi, f"{name} polled")
 
 
 @then(parsers.parse('"{device}" is on a {milliamps:d} mA current loop'))
@@ -148,10 +142,7 @@ def _one_way(sut: TrainDriver, since: int, device: str, kind: str, lo: float, hi
     assert events, f"nothing went over {device}'s current loop"
     wrong = [ev for ev in events if ev.kind != kind or ev["reply"]]
     assert not wrong, f"{device} is not one-way ({kind}): {analysis.describe(wrong)}"
-    assert len(events) >= 3, f"only {len(events)} transfers with {device}"
-    gaps = analysis.intervals(ev.t for ev in events)
-    assert us(lo) <= min(gaps) and max(gaps) <= us(hi), (
-        f"{device} transfers every {ms(min(gaps))}..{ms(max(gaps))}, outside {lo}..{hi} ms")
+    analysis.expect_period((ev.t for ev in events), lo, hi, f"transfers with {device}")
 
 
 @then(parsers.parse('"{device}" only receives from its LCU, every {lo:g} to {hi:g} ms'))

@@ -126,11 +126,7 @@ def _(sut: TrainDriver, t_action: int, cab: int, lo: float, hi: float) -> None:
     for node in sut.ring_nodes():
         if node == fed_by:
             continue
-        times = by_node.get(node, [])
-        assert len(times) >= 3, f"the cab {cab} monitor got {len(times)} status frames from {node}"
-        gaps = analysis.intervals(times)
-        assert us(lo) <= min(gaps) and max(gaps) <= us(hi), (
-            f"status data from {node} came every {ms(min(gaps))}..{ms(max(gaps))}, outside {lo}..{hi} ms")
+        analysis.expect_period(by_node.get(node, []), lo, hi, f"status data from {node} at the cab {cab} monitor")
 
 
 @then(parsers.parse("the cab {cab:d} monitor receives status data from every other node at least every {bound:g} ms"))
@@ -282,10 +278,7 @@ def _(sut: TrainDriver, master: str, node: str) -> None:
 def _(sut: TrainDriver, t_action: int, device: str, lo: float, hi: float) -> None:
     kind = "cmd.in" if device.endswith((".CI", ".BCU")) else "loop.poll"
     times = [ev.t for ev in sut.trace.select(kind=kind, source=device, since=t_action)]
-    assert len(times) >= 3, f"{device} was polled {len(times)} times"
-    gaps = analysis.intervals(times)
-    assert us(lo) <= min(gaps) and max(gaps) <= us(hi), (
-        f"{device} polled every {ms(min(gaps))}..{ms(max(gaps))}, outside {lo}..{hi} ms")
+    analysis.expect_period(times, lo, hi, f"{device} polled")
 
 
 @then(parsers.parse('"{device}" is connected one way and never answers'))
