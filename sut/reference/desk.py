@@ -4,13 +4,15 @@ from __future__ import annotations
 from dataclasses import asdict, dataclass
 from typing import TYPE_CHECKING
 
+from sut.driver import DIRECTIONS
 from sut.reference.boards import PowerSupply
 from sut.reference.config import BRAKE_STEPS
 
 if TYPE_CHECKING:
     from sut.reference.train import Train
 
-DIRECTION_CODES = {"neutral": 0, "forward": 1, "reverse": 2}
+# the command frame codes a direction by its place in the driver interface's list
+DIRECTION_CODES = {name: code for code, name in enumerate(DIRECTIONS)}
 
 
 @dataclass(frozen=True)

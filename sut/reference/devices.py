@@ -3,6 +3,8 @@ from __future__ import annotations
 
 from typing import TYPE_CHECKING
 
+from sut.driver import DIRECTIONS
+
 if TYPE_CHECKING:
     from sut.reference.boards import Board
     from sut.reference.train import Train
@@ -25,13 +27,10 @@ class CommandDevice:
     def __init__(self, train: "Train", name: str):
         self.train = train
         self.name = name
-        self.last: dict | None = None
 
     def take(self, path: int, *, traction: int | None, brake: int | None, traction_step: str | None,
              brake_step: str | None, seq: int | None, direction: int | None = None) -> None:
-        self.last = dict(path=path, traction=traction, brake=brake, traction_step=traction_step,
-                         brake_step=brake_step, t=self.train.kernel.now)
-        direction_name = None if direction is None else ("neutral", "forward", "reverse")[direction]
+        direction_name = None if direction is None else DIRECTIONS[direction]
         self.train.emit(self.name, "cmd.in", path=path, traction=traction, brake=brake,
                         traction_step=traction_step, brake_step=brake_step, seq=seq, direction=direction_name)
 

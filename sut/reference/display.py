@@ -11,6 +11,8 @@ from __future__ import annotations
 from dataclasses import dataclass
 from typing import TYPE_CHECKING, Any
 
+from sut.driver import DIRECTIONS
+
 if TYPE_CHECKING:
     from sut.reference.node import RingNode
     from sut.reference.train import Train
@@ -20,7 +22,6 @@ NUMERIC = {"speed": ("km/h", 10), "main pipe pressure": ("kPa", 10), "mileage": 
            "traction notch": ("", 1), "brake step": ("", 1)}
 # the running state: what car 1's LCU last received over the network from the commanding cab
 RUNNING = {"traction notch": "traction", "brake step": "brake", "direction": "direction"}
-DIRECTIONS = ("neutral", "forward", "reverse")
 
 
 @dataclass(frozen=True)

@@ -93,12 +93,19 @@ def encode_pac(sid: int, did: int, data: bytes) -> bytes:
     return body[:-2] + crc16_arc(body[1:-2]).to_bytes(2, "little")
 
 
+def _declared(wire: bytes) -> tuple[int, int]:
+    """(offset of the data, whole packet length) as the packet's length byte(s) declare them."""
+    if wire[4] == 0:
+        return 6, (512 - wire[5]) + 8          # long packet: 0x00 then 512 - n
+    return 5, (256 - wire[4]) + 7              # short packet: 256 - n
+
+
 def decode_pac(wire: bytes) -> tuple[int, int, bytes]:
     """(sid, did, data) of a packet; FrameError on a bad layout or check sequence."""
     if len(wire) < 8 or wire[0] != SOH:
         raise FrameError(f"not an ARCNET packet: {len(wire)} bytes starting {wire[:1].hex() or 'nothing'}")
     long = wire[4] == 0
-    declared = (512 - wire[5]) + 8 if long else (256 - wire[4]) + 7
+    _, declared = _declared(wire)
     if len(wire) != declared:
         raise FrameError(f"ARCNET packet length byte says {declared} bytes, the frame has {len(wire)}")
     try:
@@ -122,9 +129,16 @@ def check_ok(wire: bytes) -> bool:
     # The same checks as decode_pac, without building the parsed view: every node runs this on every frame.
     if len(wire) < 8 or wire[0] != SOH or wire[2] != wire[3]:
         return False
-    long = wire[4] == 0
-    declared = (512 - wire[5]) + 8 if long else (256 - wire[4]) + 7
-    return len(wire) == declared and crc16_arc(wire[1:-2]) == int.from_bytes(wire[-2:], "little")
+    return len(wire) == _declared(wire)[1] and crc16_arc(wire[1:-2]) == int.from_bytes(wire[-2:], "little")
+
+
+def payload_unchecked(wire: bytes) -> dict[str, Any]:
+    """What a receiver without a frame check would read from a packet (faulty variants only): the payload
+    where the length byte says it is, CRC ignored. FrameError if even that cannot be read."""
+    if len(wire) < 8 or wire[0] != SOH:
+        raise FrameError(f"not an ARCNET packet: {len(wire)} bytes")
+    offset, _ = _declared(wire)
+    return decode_payload(wire[offset:-2])
 
 
 # -- CRH2 payloads --------------------------------------------------------------------------------
@@ -208,7 +222,8 @@ class Frame:
         """Payload length (what PRO-01/02 call the data length), from the packet's length byte."""
         if self.kind == EOT:
             return 0
-        return 256 - self.wire[4] if self.wire[4] else 512 - self.wire[5]
+        offset, total = _declared(self.wire)
+        return total - offset - 2
 
     @property
     def name(self) -> str:

@@ -243,10 +243,8 @@ class RingNode:
         if frame.kind == fr.EOT:
             return {}
         try:
-            short = frame.wire[4] != 0
-            data = frame.wire[5:-2] if short else frame.wire[6:-2]
-            return fr.decode_payload(data)
-        except (fr.FrameError, IndexError):
+            return fr.payload_unchecked(frame.wire)
+        except fr.FrameError:
             return None
 
     # -- hooks for CCU/LCU ----------------------------------------------------------------------
