@@ -163,6 +163,42 @@ class TrainDriver(abc.ABC):
     def vehicle_names(self) -> dict[str, list[str]]:
         return {"inputs": [], "outputs": []}
 
+    # -- environment (hardware/software class, TST-02) -----------------------------------------
+    # Names: a supply as above or `train 110V` (the train supply feeding all of them); a unit is a ring
+    # node or `train`; a line is a ring link `a~b` (adjacent nodes) or `selfdiag`; a connector is a
+    # supply (its power contacts) or a ring link (its optical connectors). Times in microseconds.
+    def rated_limits(self) -> dict[str, Any]:
+        """The environment the SUT declares it works in (supply, temperature, bursts, insulation, ...)."""
+        raise NotSupported(f"{self.backend_name} declares no rated environment")
+
+    def set_supply_voltage(self, supply: str, volts: float) -> None:
+        """Feed `supply` (or every supply, `train 110V`) with `volts` from now on."""
+        raise NotSupported(f"{self.backend_name} cannot vary its supply voltage")
+
+    def interrupt_supply(self, supply: str, duration_us: int) -> None:
+        """Interrupt the input of `supply` (or `train 110V`) for `duration_us`, starting now."""
+        raise NotSupported(f"{self.backend_name} cannot interrupt its supply")
+
+    def set_temperature(self, unit: str, celsius: float) -> None:
+        """Bring a unit (ring node) or the whole `train` to `celsius` from now on."""
+        raise NotSupported(f"{self.backend_name} has no climatic chamber")
+
+    def interfere(self, line: str, level_kv: float, duration_us: int) -> None:
+        """Fast-transient bursts of `level_kv` coupled into a ring link `a~b` or `selfdiag` for `duration_us`."""
+        raise NotSupported(f"{self.backend_name} cannot inject interference")
+
+    def vibrate(self, connector: str, interruption_us: int, count: int, period_us: int) -> None:
+        """Vibration shakes `connector` open `count` times, `interruption_us` each, one every `period_us`."""
+        raise NotSupported(f"{self.backend_name} has no vibration table")
+
+    def withstand_test(self, unit: str, volts_rms: float, duration_us: int) -> None:
+        """Apply the dielectric test voltage to a unit, disconnected (unpowered) for the test's duration."""
+        raise NotSupported(f"{self.backend_name} cannot run withstand-voltage tests")
+
+    def insulation_resistance(self, unit: str) -> float:
+        """A unit's insulation resistance in MOhm, measured at 500 V DC."""
+        raise NotSupported(f"{self.backend_name} cannot measure insulation")
+
     # -- traffic -------------------------------------------------------------------------------
     @abc.abstractmethod
     def request_block_transfer(self, node: str, data: bytes) -> None:

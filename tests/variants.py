@@ -204,6 +204,67 @@ class TractionWhileBraking(ReferenceTrain):
     BEHAVIOUR = {"ilk08_ignored": ("braking",)}
 
 
+# -- faulty environment (hardware/software class, TST-02) ----------------------------------------------
+class NarrowDeclaredTemperature(ReferenceTrain):
+    """TST-02 characteristics: rated -10 .. +55 degC only, short of class OT3."""
+    ENVIRONMENT = {"temp_lo_c": -10.0, "temp_hi_c": 55.0}
+
+
+class LockoutAt80Percent(ReferenceTrain):
+    """TST-02 supply voltage: the undervoltage lockout acts at 0.8 Un, inside EN 50155's continuous range."""
+    ENVIRONMENT = {"continuous_lo": 0.80}
+
+
+class TalksWrongBelow60Percent(ReferenceTrain):
+    """FS-02: no undervoltage lockout; below 0.6 Un the boards run on and send damaged frames."""
+    BEHAVIOUR = {"undervoltage_lockout": False}
+
+
+class ResetsOn10msInterruption(ReferenceTrain):
+    """TST-02 interruption class S2: the hold-up bridges only 5 ms, so a 10 ms interruption resets."""
+    ENVIRONMENT = {"hold_up_us": 5 * MS}
+
+
+class NeverRestarts(ReferenceTrain):
+    """TST-02: a supply that dropped out stays off after its input is back in range."""
+    BEHAVIOUR = {"restart_after_dropout": False}
+
+
+class HotLimitAt60(ReferenceTrain):
+    """TST-02 temperature: the boards shut down above +60 degC, inside class OT3."""
+    ENVIRONMENT = {"temp_hi_c": 60.0}
+
+
+class LowBurstImmunity(ReferenceTrain):
+    """TST-02 interference: immune to 1 kV bursts only, EN 50121-3-2 asks 2 kV."""
+    ENVIRONMENT = {"burst_immunity_kv": 1.0}
+
+
+class SelfDiagWithoutFcsCheck(ReferenceTrain):
+    """NET-05: the RXC acts on self-diagnostic frames damaged by bursts (no frame check sequence test)."""
+    BEHAVIOUR = {"selfdiag_fcs_check": False}
+
+
+class ChatterResets(ReferenceTrain):
+    """TST-02 vibration: supply contact chatter of 1 ms resets the board (no hold-up at all)."""
+    ENVIRONMENT = {"hold_up_us": 0}
+
+
+class LightLossIsLinkFault(ReferenceTrain):
+    """TST-02 vibration: every light loss, however short, is a link fault (the MDM8 rides out nothing)."""
+    ENVIRONMENT = {"contact_bridged_us": 0}
+
+
+class LowInsulation(ReferenceTrain):
+    """TST-02 withstand voltage: 10 MOhm of insulation resistance, EN 50155 asks 20 MOhm."""
+    ENVIRONMENT = {"insulation_mohm": 10.0}
+
+
+class WeakInsulation(ReferenceTrain):
+    """TST-02 withstand voltage: the insulation breaks down at 1200 V rms, below the 1500 V test."""
+    ENVIRONMENT = {"breakdown_v": 1200.0}
+
+
 # -- in band: differ only where the requirements leave room ------------------------------------------
 class HoldCountedToSend(ReferenceTrain):
     """Holds 10 ms from receiving the token to sending it: the neighbour has it 10.25 ms later."""
@@ -265,6 +326,18 @@ FAULTY = [
     (TractionThroughEmergencyBrake, "ILK-08", "F-ILK-08"),
     (TractionWithDoorsOpen, "ILK-08", "F-ILK-08"),
     (TractionWhileBraking, "ILK-08", "F-ILK-09"),
+    (NarrowDeclaredTemperature, "TST-02", "H-CHR-03"),
+    (LockoutAt80Percent, "TST-02", "H-VLT-01"),
+    (TalksWrongBelow60Percent, "FS-02", "H-VLT-02"),
+    (ResetsOn10msInterruption, "TST-02", "H-PWR-01"),
+    (NeverRestarts, "TST-02", "H-PWR-02"),
+    (HotLimitAt60, "TST-02", "H-TMP-01"),
+    (LowBurstImmunity, "TST-02", "H-EMC-01"),
+    (SelfDiagWithoutFcsCheck, "NET-05", "H-EMC-03"),
+    (ChatterResets, "TST-02", "H-VIB-01"),
+    (LightLossIsLinkFault, "TST-02", "H-VIB-02"),
+    (LowInsulation, "TST-02", "H-WSV-01"),
+    (WeakInsulation, "TST-02", "H-WSV-02"),
 ]
 
 class PipeTripAt585(ReferenceTrain):
@@ -277,4 +350,10 @@ class DoorBandsNarrow(ReferenceTrain):
     INTERLOCKS = {"seal_on_kmh": 31.0, "seal_off_kmh": 29.0, "door_relay_kmh": 4.5}
 
 
-IN_BAND = [HoldCountedToSend, FasterNodes, CommandsEvery12ms, EarlierFallback, PipeTripAt585, DoorBandsNarrow]
+class RuggedBoards(ReferenceTrain):
+    """Rated beyond the standards: 20 ms hold-up, -40 .. +85 degC, a 150 ms restart."""
+    ENVIRONMENT = {"hold_up_us": 20 * MS, "temp_lo_c": -40.0, "temp_hi_c": 85.0, "restart_us": 150 * MS}
+
+
+IN_BAND = [HoldCountedToSend, FasterNodes, CommandsEvery12ms, EarlierFallback, PipeTripAt585, DoorBandsNarrow,
+           RuggedBoards]

@@ -16,6 +16,7 @@ from sut.driver import TrainDriver
 from sut.errors import OutOfRange, SutError, UnknownName
 from sut.reference.boards import Board, PowerSupply
 from sut.reference.config import BRAKE_STEPS, EMERGENCY, TRACTION_NOTCHES, TrainConfig
+from sut.reference.environment import TRAIN_SUPPLY, WHOLE_TRAIN, TrainEnvironment
 from sut.reference.frames import KIND_NAMES
 from sut.reference.node import RingNode
 from sut.reference.ring import Span
@@ -31,19 +32,22 @@ class ReferenceTrain(TrainDriver):
     BEHAVIOUR: ClassVar[dict[str, Any]] = {}
 
     INTERLOCKS: ClassVar[dict[str, Any]] = {}
+    ENVIRONMENT: ClassVar[dict[str, Any]] = {}
 
     def __init__(self) -> None:
         super().__init__()
         self._cfg = (TrainConfig().with_timing(**self.TIMING).with_behaviour(**self.BEHAVIOUR)
-                     .with_interlocks(**self.INTERLOCKS))
+                     .with_interlocks(**self.INTERLOCKS).with_environment(**self.ENVIRONMENT))
         self._train: Train | None = None
+        self._environment: TrainEnvironment | None = None
 
     # -- composition and life cycle ------------------------------------------------------------
     def configure(self, *, sets: int = 1, cars_per_set: int = 8) -> None:
         if self._train is not None:
             raise SutError("configure the composition before anything else is done to the train")
         self._cfg = TrainConfig(sets=sets, cars_per_set=cars_per_set, timing=self._cfg.timing,
-                                behaviour=self._cfg.behaviour, interlocks=self._cfg.interlocks)
+                                behaviour=self._cfg.behaviour, interlocks=self._cfg.interlocks,
+                                environment=self._cfg.environment)
 
     @property
     def train(self) -> Train:
@@ -223,6 +227,83 @@ class ReferenceTrain(TrainDriver):
     def vehicle_names(self) -> dict[str, list[str]]:
         v = self.train.vehicle
         return {"inputs": sorted(v.inputs_spec), "outputs": sorted(v.outputs)}
+
+    # -- environment (hardware/software class, TST-02) -----------------------------------------
+    @property
+    def environment(self) -> TrainEnvironment:
+        if self._environment is None:
+            self._environment = TrainEnvironment(self.train)
+        return self._environment
+
+    def _env_supply(self, name: str) -> str:
+        if name != TRAIN_SUPPLY and name not in self.train.supplies:
+            raise UnknownName("power supply", name, [TRAIN_SUPPLY, *self.train.supplies])
+        return name
+
+    def _env_unit(self, name: str, whole_train: bool) -> str:
+        if name == WHOLE_TRAIN and whole_train:
+            return name
+        if name not in self.environment.units:
+            raise UnknownName("unit", name, [WHOLE_TRAIN, *self.environment.units] if whole_train
+                              else self.environment.units)
+        return name
+
+    def _env_span(self, line: str) -> Span:
+        a, sep, b = line.partition("~")
+        if not sep:
+            raise UnknownName("line", line, ["selfdiag"] + [s.name for s in self.train.ring.spans])
+        return self._span(a.strip(), b.strip())
+
+    @staticmethod
+    def _env_number(what: str, value: Any, lo: float, hi: float, unit: str) -> float:
+        if isinstance(value, bool) or not isinstance(value, (int, float)) or not lo <= value <= hi:
+            raise OutOfRange(what, value, f"{lo:g} .. {hi:g} {unit}")
+        return float(value)
+
+    @staticmethod
+    def _env_us(what: str, value: Any, lo: int = 1) -> int:
+        if isinstance(value, bool) or not isinstance(value, int) or value < lo:
+            raise OutOfRange(what, value, f"a whole number of microseconds >= {lo}")
+        return value
+
+    def rated_limits(self) -> dict[str, Any]:
+        return self.environment.rated_limits()
+
+    def set_supply_voltage(self, supply: str, volts: float) -> None:
+        name = self._env_supply(supply)
+        un = self._cfg.environment.nominal_v
+        self.environment.set_voltage(name, self._env_number("supply voltage", volts, 0, 2 * un, "V"))
+
+    def interrupt_supply(self, supply: str, duration_us: int) -> None:
+        name = self._env_supply(supply)
+        self.environment.interrupt(name, self._env_us("interruption", duration_us))
+
+    def set_temperature(self, unit: str, celsius: float) -> None:
+        name = self._env_unit(unit, whole_train=True)
+        self.environment.set_temperature(name, self._env_number("temperature", celsius, -60, 125, "degC"))
+
+    def interfere(self, line: str, level_kv: float, duration_us: int) -> None:
+        span = None if line == "selfdiag" else self._env_span(line)
+        level = self._env_number("burst level", level_kv, 0.1, 8, "kV")
+        self.environment.burst(span, level, self._env_us("burst duration", duration_us))
+
+    def vibrate(self, connector: str, interruption_us: int, count: int, period_us: int) -> None:
+        length = self._env_us("contact interruption", interruption_us)
+        if isinstance(count, bool) or not isinstance(count, int) or count < 1:
+            raise OutOfRange("number of contact interruptions", count, ">= 1")
+        period = self._env_us("interruption period", period_us, lo=length + 1)
+        if "~" in connector:
+            self.environment.vibrate_link(self._env_span(connector), length, count, period)
+        else:
+            self.environment.vibrate_supply(self._env_supply(connector), length, count, period)
+
+    def withstand_test(self, unit: str, volts_rms: float, duration_us: int) -> None:
+        name = self._env_unit(unit, whole_train=False)
+        volts = self._env_number("test voltage", volts_rms, 100, 10_000, "V rms")
+        self.environment.withstand_test(name, volts, self._env_us("test duration", duration_us))
+
+    def insulation_resistance(self, unit: str) -> float:
+        return self.environment.insulation_mohm(self._env_unit(unit, whole_train=False))
 
     # -- traffic -------------------------------------------------------------------------------
     def request_block_transfer(self, node: str, data: bytes) -> None:

@@ -5,14 +5,29 @@ from typing import Callable
 
 
 class PowerSupply:
+    """Its output is up while it is switched on (power_off/restore_power) and its input side, run by
+    environment.py (voltage, interruptions, temperature, withstand tests), lets it be up."""
+
     def __init__(self, name: str):
         self.name = name
-        self.on = True
+        self.switched = True
+        self.input_ok = True
         self.listeners: list[Callable[[], None]] = []
 
+    @property
+    def on(self) -> bool:
+        return self.switched and self.input_ok
+
     def set(self, on: bool) -> None:
-        if on != self.on:
-            self.on = on
+        self._change(lambda: setattr(self, "switched", on))
+
+    def set_input_ok(self, ok: bool) -> None:
+        self._change(lambda: setattr(self, "input_ok", ok))
+
+    def _change(self, apply: Callable[[], None]) -> None:
+        was = self.on
+        apply()
+        if self.on != was:
             for notify in list(self.listeners):
                 notify()
 

@@ -54,6 +54,9 @@ class Behaviour:
     oil_protection: bool = True           # ILK-06 oil pump / oil temperature cut the converters
     ns_forced_passing: bool = True        # ILK-04 entry without warning forces automatic passing
     mcr_exclusive: bool = True            # ILK-07 only one cab's MCR picks up
+    undervoltage_lockout: bool = True     # FS-02 a supply below 0.6 Un past its hold-up switches off
+    restart_after_dropout: bool = True    # DECISIONS: a supply restarts once its input is back in range
+    selfdiag_fcs_check: bool = True       # NET-05 the RXC discards self-diagnostic frames with a bad FCS
 
 
 @dataclass(frozen=True)
@@ -73,6 +76,29 @@ class Interlocks:
     compressor_stop_kpa: float = 880.0
 
 
+@dataclass(frozen=True)
+class Environment:
+    """Rated environment of the boards (hardware/software class, TST-02; DECISIONS.md "Environment").
+    Voltages are fractions of Un; the features test the standards' ranges, not these figures."""
+
+    nominal_v: float = 110.0                # EN 50155 Un of the train's battery supply
+    continuous_lo: float = 0.70             # EN 50155 continuous 0.7 .. 1.25 Un (VDX-02: 70 .. 125 %)
+    continuous_hi: float = 1.25
+    dip_lo: float = 0.60                    # EN 50155 fluctuation: 0.6 Un for 0.1 s without deviation
+    dip_us: int = 100 * MS
+    surge_hi: float = 1.40                  # EN 50155 fluctuation: 1.4 Un for 1 s without deviation
+    surge_us: int = 1000 * MS
+    hold_up_us: int = 10 * MS               # EN 50155 interruption class S2: 10 ms without reset
+    restart_us: int = 300 * MS              # DECISIONS: supply soft start and board boot after a dropout
+    temp_lo_c: float = -25.0                # EN 50155 operating temperature class OT3
+    temp_hi_c: float = 70.0
+    burst_immunity_kv: float = 2.0          # EN 50121-3-2 fast transients on signal and power ports
+    contact_bridged_us: int = 1 * MS        # DECISIONS: MDM8 rides out light loss up to 1 ms (IEC 61373)
+    insulation_mohm: float = 200.0          # EN 50155 insulation at 500 V DC: at least 20 MOhm
+    withstand_v: float = 1500.0             # EN 50155 dielectric test of 110 V circuits: 1500 V rms, 1 min
+    breakdown_v: float = 3000.0             # DECISIONS: where the reference's insulation breaks down
+
+
 MOTOR_CARS_8 = (2, 3, 6, 7)       # CRH2A 4M4T: CI (main converter) in these cars of each set
 APU_CARS_8 = (2, 4, 6)            # DECISIONS: cars with an auxiliary power unit on a 30 mA loop
 
@@ -88,6 +114,7 @@ class TrainConfig:
     timing: Timing = field(default_factory=Timing)
     behaviour: Behaviour = field(default_factory=Behaviour)
     interlocks: Interlocks = field(default_factory=Interlocks)
+    environment: Environment = field(default_factory=Environment)
 
     def __post_init__(self) -> None:
         if self.sets not in (1, 2):
@@ -122,10 +149,14 @@ class TrainConfig:
     def with_interlocks(self, **changes) -> "TrainConfig":
         return replace(self, interlocks=replace(self.interlocks, **changes))
 
+    def with_environment(self, **changes) -> "TrainConfig":
+        return replace(self, environment=replace(self.environment, **changes))
+
     def describe(self) -> dict[str, str]:
         out = {"sets": str(self.sets), "cars per set": str(self.cars_per_set)}
         out.update({f"timing.{k}": str(v) for k, v in asdict(self.timing).items()})
         out.update({f"interlocks.{k}": str(v) for k, v in asdict(self.interlocks).items()})
+        out.update({f"environment.{k}": str(v) for k, v in asdict(self.environment).items()})
         changed = {k: v for k, v in asdict(self.behaviour).items() if v != getattr(Behaviour(), k)}
         out["behaviour"] = ", ".join(f"{k}={v}" for k, v in changed.items()) or "reference"
         return out

@@ -24,6 +24,7 @@ class SelfDiagLine:
         self.busy_until = 0
         self.queue: deque = deque()
         self._timer = None
+        self.disturbed_until = 0     # environment.py: bursts above the immunity level damage frames until then
 
     def _duration(self, payload: int) -> int:
         bits = (payload + HDLC_OVERHEAD) * 8
@@ -60,6 +61,11 @@ class SelfDiagLine:
     def _deliver(self, kind: str, sender: str, fields: dict) -> None:
         if not self.board.alive:
             return
+        if kind == "command" and self.disturbed_until > self.train.kernel.now:
+            if self.train.cfg.behaviour.selfdiag_fcs_check:
+                self.train.emit("selfdiag", "sd.discard", frame=kind, frm=sender, seq=fields.get("seq"))
+                return
+            fields = dict(fields, traction=fields["traction"] ^ 8)   # the damaged bit, taken as sent
         self.train.emit("selfdiag", "sd.rx", frame=kind, frm=sender, seq=fields.get("seq"))
         if kind == "command":
             for lcu in self.train.lcus:
