@@ -16,4 +16,5 @@ STEP_MODULES = [
     "steps.extra_control",
     "steps.extra_display",
     "steps.extra_records",
+    "steps.environment",
 ]

@@ -14,7 +14,7 @@ from sut.trace import Trace, TraceEvent
 
 MAX_SLOTS = 48
 NICE_MS = (1, 2, 5, 10, 20, 50, 100, 200, 500, 1000, 2000, 5000)
-EVENT_KINDS = ("fault.", "ccu.takeover", "txc.failsafe", "rxc.failsafe", "token.form", "token.init", "in.set",
+EVENT_KINDS = ("fault.", "env.", "supply.", "ccu.takeover", "txc.failsafe", "rxc.failsafe", "token.form", "token.init", "in.set",
                "in.ramp", "desk.")
 MAX_LANES = 14
 

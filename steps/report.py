@@ -47,7 +47,7 @@ def attach_run(driver: TrainDriver, request: pytest.FixtureRequest, whole_trace:
 def _attach_diagram(trace: Trace, key: Trace, now_us: int) -> None:
     """Draw from just before the first action after power-up (a fault, an input, the desk, an order; else
     the first thing that happened) to the end of the scenario."""
-    acts = ("fault.", "in.", "desk.", "order.", "mcr.")
+    acts = ("fault.", "env.", "in.", "desk.", "order.", "mcr.")
     moments = [ev.t for ev in key if ev.t > 0 and ev.kind.startswith(acts)] or [ev.t for ev in key if ev.t > 0]
     if not moments:
         return

@@ -1,0 +1,206 @@
+"""The hardware/software class (TST-02): the environment a rig would apply (supply voltage and
+interruptions, climatic chamber, burst generator, vibration table, withstand-voltage tester) and what the
+network does under it.
+
+Voltages are given as % of Un, the SUT's declared nominal supply voltage (EN 50155 states its ranges that
+way). Stimuli "outside the rated range" are placed relative to what the SUT itself declares, so a SUT
+rated wider than the standard is tested beyond its own limits, not failed for being better.
+"""
+from __future__ import annotations
+
+from pytest_bdd import given, parsers, then, when
+
+from sut.driver import TrainDriver
+from steps import analysis
+from steps.analysis import ms, us
+
+
+def _volts(sut: TrainDriver, pct: float) -> float:
+    return sut.rated_limits()["nominal supply voltage V"] * pct / 100
+
+
+# -- supply voltage and interruptions ---------------------------------------------------------------
+@given(parsers.parse('the input of supply "{supply}" is at {pct:g} % of Un'))
+@when(parsers.parse('the input of supply "{supply}" changes to {pct:g} % of Un'), target_fixture="t_action")
+def _(sut: TrainDriver, supply: str, pct: float) -> int:
+    sut.set_supply_voltage(supply, _volts(sut, pct))
+    return sut.now_us
+
+
+@when(parsers.parse('the input of supply "{supply}" stays at {pct:g} % of Un for {span:d} ms, then returns to '
+                    '100 % of Un'), target_fixture="t_action")
+def _(sut: TrainDriver, supply: str, pct: float, span: int) -> int:
+    start = sut.now_us
+    sut.set_supply_voltage(supply, _volts(sut, pct))
+    sut.advance_ms(span)
+    sut.set_supply_voltage(supply, _volts(sut, 100))
+    return start
+
+
+@when(parsers.parse('the supply "{supply}" is interrupted for {span:g} ms'), target_fixture="t_action")
+def _(sut: TrainDriver, supply: str, span: float) -> int:
+    sut.interrupt_supply(supply, us(span))
+    return sut.now_us
+
+
+# -- temperature ------------------------------------------------------------------------------------
+@given(parsers.parse('the temperature of "{unit}" is {celsius:g} °C'))
+@when(parsers.parse('the temperature of "{unit}" changes to {celsius:g} °C'), target_fixture="t_action")
+def _(sut: TrainDriver, unit: str, celsius: float) -> int:
+    sut.set_temperature(unit, celsius)
+    return sut.now_us
+
+
+@when(parsers.parse('the temperature of "{unit}" rises to {delta:g} °C above its rated maximum'),
+      target_fixture="t_action")
+def _(sut: TrainDriver, unit: str, delta: float) -> int:
+    sut.set_temperature(unit, sut.rated_limits()["operating temperature C"][1] + delta)
+    return sut.now_us
+
+
+@when(parsers.parse('the temperature of "{unit}" falls to {delta:g} °C below its rated minimum'),
+      target_fixture="t_action")
+def _(sut: TrainDriver, unit: str, delta: float) -> int:
+    sut.set_temperature(unit, sut.rated_limits()["operating temperature C"][0] - delta)
+    return sut.now_us
+
+
+# -- interference -----------------------------------------------------------------------------------
+@when(parsers.parse('bursts of {kv:g} kV hit the ring link between "{a}" and "{b}" for {span:d} ms'),
+      target_fixture="t_action")
+def _(sut: TrainDriver, kv: float, a: str, b: str, span: int) -> int:
+    sut.interfere(f"{a}~{b}", kv, us(span))
+    return sut.now_us
+
+
+@when(parsers.parse('bursts of {kv:g} kV hit the self-diagnostic line for {span:d} ms'), target_fixture="t_action")
+def _(sut: TrainDriver, kv: float, span: int) -> int:
+    sut.interfere("selfdiag", kv, us(span))
+    return sut.now_us
+
+
+@when(parsers.parse('bursts of {factor:g} times the rated immunity level hit the ring link between "{a}" and "{b}" '
+                    'for {span:d} ms'), target_fixture="t_action")
+def _(sut: TrainDriver, factor: float, a: str, b: str, span: int) -> int:
+    sut.interfere(f"{a}~{b}", factor * sut.rated_limits()["burst immunity kV"], us(span))
+    return sut.now_us
+
+
+@when(parsers.parse('bursts of {factor:g} times the rated immunity level hit the self-diagnostic line for {span:d} ms'),
+      target_fixture="t_action")
+def _(sut: TrainDriver, factor: float, span: int) -> int:
+    sut.interfere("selfdiag", factor * sut.rated_limits()["burst immunity kV"], us(span))
+    return sut.now_us
+
+
+# -- vibration --------------------------------------------------------------------------------------
+@when(parsers.parse('vibration opens the contacts of supply "{supply}" {count:d} times for {length:g} ms every '
+                    '{period:g} ms'), target_fixture="t_action")
+def _(sut: TrainDriver, supply: str, count: int, length: float, period: float) -> int:
+    sut.vibrate(supply, us(length), count, us(period))
+    return sut.now_us
+
+
+@when(parsers.parse('vibration breaks the light on the ring link between "{a}" and "{b}" {count:d} times for '
+                    '{length:g} ms every {period:g} ms'), target_fixture="t_action")
+def _(sut: TrainDriver, a: str, b: str, count: int, length: float, period: float) -> int:
+    sut.vibrate(f"{a}~{b}", us(length), count, us(period))
+    return sut.now_us
+
+
+# -- withstand voltage and insulation ---------------------------------------------------------------
+@when(parsers.parse('"{unit}" is given a withstand-voltage test at {volts:g} V rms for {s:g} s'),
+      target_fixture="t_action")
+def _(sut: TrainDriver, unit: str, volts: float, s: float) -> int:
+    sut.withstand_test(unit, volts, us(s * 1000))
+    return sut.now_us
+
+
+@when(parsers.parse('"{unit}" is given a withstand-voltage test at {factor:g} times its rated test voltage for '
+                    '{s:g} s'), target_fixture="t_action")
+def _(sut: TrainDriver, unit: str, factor: float, s: float) -> int:
+    sut.withstand_test(unit, factor * sut.rated_limits()["withstand voltage V rms"], us(s * 1000))
+    return sut.now_us
+
+
+@then(parsers.parse('the insulation resistance of "{unit}" is at least {mohm:g} MOhm'))
+def _(sut: TrainDriver, unit: str, mohm: float) -> None:
+    got = sut.insulation_resistance(unit)
+    assert got >= mohm, f"{unit} has {got:g} MOhm of insulation resistance, less than {mohm:g} MOhm"
+
+
+@then(parsers.parse('the insulation resistance of "{unit}" is below {mohm:g} MOhm'))
+def _(sut: TrainDriver, unit: str, mohm: float) -> None:
+    got = sut.insulation_resistance(unit)
+    assert got < mohm, f"{unit} still has {got:g} MOhm of insulation resistance after its insulation broke down"
+
+
+# -- what the SUT declares --------------------------------------------------------------------------
+def _rated(sut: TrainDriver, name: str):
+    limits = sut.rated_limits()
+    assert name in limits, f"the SUT declares no rated {name!r}; it declares {sorted(limits)}"
+    return limits[name]
+
+
+@then(parsers.parse('the rated "{name}" covers {lo:g} to {hi:g}'))
+def _(sut: TrainDriver, name: str, lo: float, hi: float) -> None:
+    got_lo, got_hi = _rated(sut, name)
+    assert got_lo <= lo and hi <= got_hi, f"the rated {name} is {got_lo:g} .. {got_hi:g}, not all of {lo:g} .. {hi:g}"
+
+
+@then(parsers.parse('the rated "{name}" is at least {value:g}'))
+def _(sut: TrainDriver, name: str, value: float) -> None:
+    got = _rated(sut, name)
+    assert got >= value, f"the rated {name} is {got:g}, less than {value:g}"
+
+
+@then(parsers.parse('the rated "{name}" is at most {value:g}'))
+def _(sut: TrainDriver, name: str, value: float) -> None:
+    got = _rated(sut, name)
+    assert got <= value, f"the rated {name} is {got:g}, more than {value:g}"
+
+
+# -- what the network does --------------------------------------------------------------------------
+_TALK = ("status.tx", "cmd.tx", "token.pass", "token.init", "token.form", "block.tx")
+
+
+@then(parsers.parse('"{node}" sends nothing on the ring from {start:g} ms to {end:g} ms after the action'))
+def _(sut: TrainDriver, t_action: int, node: str, start: float, end: float) -> None:
+    """Fail-safe (FS-02): a board outside its rated environment stops talking rather than talk wrong."""
+    assert sut.now_us >= t_action + us(end), f"the scenario ran only {ms(sut.now_us - t_action)} after the action"
+    said = [ev for ev in sut.trace.select(source=node, since=t_action + us(start), until=t_action + us(end))
+            if ev.kind in _TALK]
+    assert not said, f"{node} kept talking: {analysis.describe(said)}"
+
+
+@then(parsers.parse('"{node}" sends status data again within {bound:g} ms'))
+def _(sut: TrainDriver, t_action: int, node: str, bound: float) -> None:
+    first = sut.trace.first(kind="status.tx", source=f"{node}.CPU3", since=t_action)
+    assert first is not None, f"{node} sent no status data in the {ms(sut.now_us - t_action)} after the action"
+    assert first.t - t_action <= us(bound), f"{node} sent status data again {ms(first.t - t_action)} after the action"
+
+
+@then(parsers.parse('the nodes beside the ring link between "{a}" and "{b}" discard the damaged frames'))
+def _(sut: TrainDriver, t_action: int, a: str, b: str) -> None:
+    for node, peer in ((a, b), (b, a)):
+        found = sut.trace.select(kind="frame.discard", source=f"{node}.MDM8", since=t_action, frm=peer)
+        assert found, f"{node} discarded no frame from {peer}"
+
+
+@then("no node discards a frame")
+def _(sut: TrainDriver, t_action: int) -> None:
+    found = sut.trace.select(kind="frame.discard", since=t_action)
+    assert not found, f"frames were discarded: {analysis.describe(found)}"
+
+
+@then("the damaged frames on the self-diagnostic line are discarded")
+def _(sut: TrainDriver, t_action: int) -> None:
+    found = sut.trace.select(kind="sd.discard", since=t_action)
+    assert found, "no self-diagnostic frame was discarded"
+
+
+@then(parsers.parse('no CI or BCU receives a traction step other than "{step}"'))
+def _(sut: TrainDriver, t_action: int, step: str) -> None:
+    takes = [ev for ev in sut.trace.select(kind="cmd.in", since=t_action) if ev["traction_step"] is not None]
+    odd = [ev for ev in takes if ev["traction_step"] != step]
+    assert not odd, f"devices received other traction steps: {analysis.describe(odd)}"
