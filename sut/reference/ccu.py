@@ -75,12 +75,20 @@ class CcuSystem(RingNode):
             return self.txc.alive and not self.txc.failsafe
         return super().board_healthy(short)
 
+    def counters(self) -> dict[str, int]:
+        return dict(super().counters(), **{"commands sent": self.cmd_seq})
+
+    def _clock_ms(self) -> int:
+        if self.train.cfg.behaviour.clock_from_us32:          # faulty variants only
+            return (self.kernel.now & 0xFFFF_FFFF) // 1000
+        return self.kernel.now // 1000
+
     # -- commands out (PRO-01) ------------------------------------------------------------------
     def put_command(self, sample: Sample) -> None:
         """TXC -> 20 mA loop -> MDM8 -> ring, and TXC -> self-diagnostic line."""
-        self.cmd_seq = (self.cmd_seq + 1) & 0xFF
+        self.cmd_seq += 1               # unbounded here; the wire carries it modulo 256 (frames.py)
         fields = dict(seq=self.cmd_seq, cab=self.car, system=self.index, **sample.wire_fields(),
-                      clock_ms=(self.kernel.now // 1000) & 0xFFFFFFFF)
+                      clock_ms=self._clock_ms())
         self.kernel.call_later(self.train.cfg.timing.txc_loop_us, self._mdm8_send, fields)
         self.train.selfdiag.send_command(self.txc.name, fields)
 

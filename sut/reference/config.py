@@ -54,6 +54,8 @@ class Behaviour:
     oil_protection: bool = True           # ILK-06 oil pump / oil temperature cut the converters
     ns_forced_passing: bool = True        # ILK-04 entry without warning forces automatic passing
     mcr_exclusive: bool = True            # ILK-07 only one cab's MCR picks up
+    counter_bits: int = 32                # DECISIONS: diagnostic counters are 32-bit (TST-02, 72 h)
+    clock_from_us32: bool = False         # TST-02: a clock kept in 32-bit microseconds wraps at 71.6 min
     undervoltage_lockout: bool = True     # FS-02 a supply below 0.6 Un past its hold-up switches off
     restart_after_dropout: bool = True    # DECISIONS: a supply restarts once its input is back in range
     selfdiag_fcs_check: bool = True       # NET-05 the RXC discards self-diagnostic frames with a bad FCS

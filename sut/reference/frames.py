@@ -7,7 +7,6 @@ ring is checked, so the table version is used and tests/test_frames.py holds it 
 """
 from __future__ import annotations
 
-import itertools
 from dataclasses import dataclass
 from typing import Any
 
@@ -195,7 +194,10 @@ KIND_NAMES = {K_COMMAND: "command", K_STATUS: "status", K_TOKEN_INIT: "token-ini
 # Priorities (NET-06): 0 is the token itself, which carries no data.
 P_TOKEN, P_COMMAND, P_STATUS, P_BLOCK = 0, 1, 2, 3
 
-_uids = itertools.count(1)
+# Counters travel in the frames' `fields` as the sender keeps them (unbounded, so a count over 72 h is
+# exact and a bulk advance can extrapolate it); the wire carries them modulo the field width.
+_WIRE_MASKS = {K_COMMAND: {"seq": 0xFF, "clock_ms": 0xFFFF_FFFF}, K_STATUS: {"seq": 0xFFFF},
+               K_BLOCK: {"record": 0xFFFF}}
 
 
 @dataclass(eq=False, slots=True)
@@ -208,8 +210,19 @@ class Frame:
     prio: int
     wire: bytes
     fields: dict[str, Any]
-    uid: int = 0
+    uid: int = 0                      # one transmission; the ring numbers it when it is first sent
     _ok: bool | None = None
+
+    # For a bulk advance (bulk.py): the wire image follows from the fields, so only they are extrapolated.
+    BULK_DERIVED = ("wire", "_ok")
+
+    def bulk_steady(self) -> bool:
+        return self.ok                # a damaged frame in flight is not steady traffic
+
+    def bulk_rebuild(self) -> None:
+        if self.kind != EOT:
+            self.wire = encode_pac(self.src, self.dst, build_payload(self.kind, self.fields))
+        self._ok = None
 
     @property
     def ok(self) -> bool:
@@ -236,13 +249,18 @@ class Frame:
         return Frame(self.kind, self.src, self.dst, self.prio, bytes(wire), self.fields, self.uid)
 
 
+def build_payload(kind: int, fields: dict[str, Any]) -> bytes:
+    masks = _WIRE_MASKS.get(kind, {})
+    wire = {k: (v & masks[k] if k in masks else v) for k, v in fields.items()}
+    return _PAYLOADS[kind].build(dict(wire, kind=kind))
+
+
 def data_frame(kind: int, src: int, dst: int, prio: int, **fields: Any) -> Frame:
-    data = _PAYLOADS[kind].build(dict(fields, kind=kind))
-    return Frame(kind, src, dst, prio, encode_pac(src, dst, data), fields, next(_uids))
+    return Frame(kind, src, dst, prio, encode_pac(src, dst, build_payload(kind, fields)), fields)
 
 
 def token_frame(src: int, dst: int) -> Frame:
-    return Frame(EOT, src, dst, P_TOKEN, ITT.build(dict(did=dst, did2=dst)), {}, next(_uids))
+    return Frame(EOT, src, dst, P_TOKEN, ITT.build(dict(did=dst, did2=dst)), {})
 
 
 def decode_payload(data: bytes) -> dict[str, Any]:

@@ -9,10 +9,8 @@ and one place to add bulk advance. Processes that read like behaviour can still 
 Ordering: entries are (time, priority, sequence). The sequence counter makes ties deterministic, so two
 runs with the same inputs give the same trace.
 
-Bulk advance (needed later for 72 h runs): every steady periodic activity is registered as a `Cyclic`
-(`Kernel.every`) rather than as a self-rescheduling callback, and may give a `skip(n)` that leaves its owner
-in the state n ticks would. A bulk run can then jump over whole periods between state-changing events;
-the hooks are here, the jump itself is not implemented yet (see DECISIONS.md, "Kernel").
+Bulk advance (72 h runs) lives in bulk.py: it reads the whole train, timers included, and jumps whole
+steady periods; the kernel's part is that timers carry their own heap key and the heap can be rebuilt.
 """
 from __future__ import annotations
 
@@ -38,12 +36,15 @@ class Interrupt(Exception):
 
 
 class Timer:
-    """A scheduled callback that can be cancelled before it fires."""
+    """A scheduled callback that can be cancelled before it fires. It keeps its own heap key (time,
+    priority, sequence) so that the heap can be rebuilt from the live timers after a bulk advance."""
 
-    __slots__ = ("at", "fn", "args")
+    __slots__ = ("at", "prio", "seq", "fn", "args")
 
-    def __init__(self, at: int, fn: Callable, args: tuple):
+    def __init__(self, at: int, prio: int, seq: int, fn: Callable, args: tuple):
         self.at = at
+        self.prio = prio
+        self.seq = seq
         self.fn = fn
         self.args = args
 
@@ -141,21 +142,18 @@ class Process:
 
 @dataclass
 class Cyclic:
-    """A steady periodic activity: `tick()` every `period` us from `phase`.
-
-    `skip(n)` must leave the owner in the state `n` ticks would have left it in; `Kernel.run(bulk=True)`
-    calls it instead of `n` ticks when nothing else is due in between.
-    """
+    """A steady periodic activity: `tick()` every `period` us from `phase`. Their periods give the
+    train's steady period (bulk.py)."""
 
     period: int
     tick: Callable[[], None]
-    skip: Callable[[int], None] | None = None
     next_at: int = 0
     timer: Timer | None = None
 
 
 class Kernel:
     __slots__ = ("now", "_heap", "_seq", "events", "_cyclics")
+    BULK_SKIP = ("_heap",)        # bulk.py reads the live timers instead, and rebuilds the heap from them
 
     def __init__(self) -> None:
         self.now = 0
@@ -168,8 +166,8 @@ class Kernel:
     def call_at(self, at: int, fn: Callable, *args: Any, prio: int = NORMAL) -> Timer:
         if at < self.now:
             raise SimulationError(f"cannot schedule in the past: {at} us < now {self.now} us")
-        timer = Timer(at, fn, args)
         self._seq += 1
+        timer = Timer(at, prio, self._seq, fn, args)
         heapq.heappush(self._heap, (at, prio, self._seq, timer))
         return timer
 
@@ -178,8 +176,8 @@ class Kernel:
         if delay < 0:
             raise SimulationError(f"cannot schedule in the past: delay {delay} us")
         at = self.now + delay
-        timer = Timer(at, fn, args)
         self._seq += 1
+        timer = Timer(at, prio, self._seq, fn, args)
         heapq.heappush(self._heap, (at, prio, self._seq, timer))
         return timer
 
@@ -189,15 +187,17 @@ class Kernel:
     def signal(self) -> Signal:
         return Signal(self)
 
-    def every(self, period: int, tick: Callable[[], None], phase: int = 0,
-              skip: Callable[[int], None] | None = None) -> Cyclic:
+    def every(self, period: int, tick: Callable[[], None], phase: int = 0) -> Cyclic:
         """Run `tick` every `period` us starting at now + phase."""
         if period <= 0:
             raise SimulationError(f"period must be positive, got {period} us")
-        cyc = Cyclic(period, tick, skip, self.now + phase)
+        cyc = Cyclic(period, tick, self.now + phase)
         self._cyclics.append(cyc)
         cyc.timer = self.call_at(cyc.next_at, self._cyclic_tick, cyc)
         return cyc
+
+    def periods(self) -> list[int]:
+        return [c.period for c in self._cyclics]
 
     def stop_cyclic(self, cyc: Cyclic) -> None:
         if cyc.timer is not None:
@@ -238,3 +238,8 @@ class Kernel:
 
     def pending(self) -> Iterable[Timer]:
         return (entry[3] for entry in self._heap if entry[3].fn is not None)
+
+    def rebuild_heap(self) -> None:
+        """After a bulk advance moved the timers' keys: the heap again, from the live timers only."""
+        self._heap = [(t.at, t.prio, t.seq, t) for t in self.pending()]
+        heapq.heapify(self._heap)

@@ -90,6 +90,7 @@ class Lcu(RingNode):
         self.loop_devices: list[LoopDevice] = []
         self.latest: dict | None = None
         self.latest_us = -1
+        self.commands_received = 0
         self._health_seen = self.health_byte()
         for board in (self.mdm9, self.rxc.board):
             board.listeners.append(self.board_changed)
@@ -113,12 +114,18 @@ class Lcu(RingNode):
     def on_command(self, fields: dict, direction: str, hops: int) -> None:
         if not self.train.commanding_source_ok(fields):
             return
+        self.commands_received += 1
         self.emit("cmd.rx", seq=fields["seq"], system=fields["system"], cab=fields["cab"], dir=direction,
                   hops=hops)
         if not self.cpu3.alive and not self.train.cfg.behaviour.cmd_bypass_cpu3:
             return                       # a design that routed commands through CPU3 loses them here
         self.latest, self.latest_us = fields, self.kernel.now
         self.kernel.call_later(self.train.cfg.timing.rxc_loop_us, self.rxc.from_loop, fields, self.mdm9.alive)
+
+    def counters(self) -> dict[str, int]:
+        # The LCU's clock is set by the clock correction in every ring command (PRO-01 frame, CMD-02).
+        return dict(super().counters(), **{"commands received": self.commands_received,
+                                           "clock ms": self.latest["clock_ms"] if self.latest else 0})
 
     def fresh_command(self) -> dict | None:
         """The last ring command, if it is still fresh enough to act on."""

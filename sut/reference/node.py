@@ -51,7 +51,10 @@ class RingNode:
         self._watch: "Timer | None" = None
         self._forming: "Timer | None" = None
         # status data and block data
-        self.status_seq = 0
+        self.status_seq = 0                  # status frames sent (PRO-02), unbounded
+        self.tokens_received = 0
+        self.token_inits = 0
+        self.frames_discarded = 0            # NET-05, counted by the ring on arrival
         self.heard: dict[int, int] = {}       # node number -> time of its last status data here
         self.pending_blocks: list[tuple[int, int, int, bytes]] = []   # (record, index, total, 236 bytes)
         self.records_made = 0
@@ -153,6 +156,7 @@ class RingNode:
             self._token_init(reason="no token" if self.heard or self.ever_held else "no status data since power-up")
 
     def _token_init(self, reason: str) -> None:
+        self.token_inits += 1
         self.emit("token.init", reason=reason)
         self.train.ring.broadcast(self, fr.data_frame(fr.K_TOKEN_INIT, self.number, fr.BROADCAST,
                                                       fr.P_TOKEN, node=self.number))
@@ -182,6 +186,7 @@ class RingNode:
 
     def _take_token(self, direction: str, frm: str | None) -> None:
         self.has_token = self.ever_held = True
+        self.tokens_received += 1
         self.token_dir = direction
         self.emit("token.rx", frm=frm, dir=direction)
         self._arm_watch(self.train.cfg.timing.token_loss_us)
@@ -210,6 +215,11 @@ class RingNode:
         self.train.ring.send(self, fr.token_frame(self.number, nxt.number), direction)
 
     # -- frames in ------------------------------------------------------------------------------
+    def counters(self) -> dict[str, int]:
+        """Diagnostic counters as the node keeps them (TrainDriver.counters)."""
+        return {"status sent": self.status_seq, "tokens received": self.tokens_received,
+                "token initialisations": self.token_inits, "frames discarded": self.frames_discarded}
+
     def receive(self, frame: fr.Frame, direction: str, hops: int) -> None:
         fields = frame.fields if frame.ok else self._raw_fields(frame)
         if fields is None:
@@ -262,7 +272,7 @@ class RingNode:
     def hold_token(self) -> None:
         if not self.cpu3.alive:
             return
-        self.status_seq = (self.status_seq + 1) & 0xFFFF
+        self.status_seq += 1            # unbounded here; the wire carries it modulo 2**16 (frames.py)
         ports = (1 if self.port_ok(L) else 0) | (2 if self.port_ok(R) else 0)
         request = min(255, len(self.pending_blocks))
         grant = self.train.block_grant_for(self)
@@ -280,7 +290,7 @@ class RingNode:
     def queue_record(self, data: bytes) -> None:
         size = fr.BLOCK_SIZE
         blocks = [data[i:i + size].ljust(size, b"\0") for i in range(0, len(data), size)] or [bytes(size)]
-        self.records_made = (self.records_made + 1) & 0xFFFF
+        self.records_made += 1
         record = self.records_made
         self.pending_blocks.extend((record, i, len(blocks), block) for i, block in enumerate(blocks))
         self.emit("block.queued", at=f"{self.name}.CPU3", record=record, blocks=len(blocks), bytes=len(data))

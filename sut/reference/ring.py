@@ -13,7 +13,6 @@ receives a broadcast once, and with one span cut everyone still receives it (NET
 from __future__ import annotations
 
 import heapq
-import itertools
 from typing import TYPE_CHECKING
 
 from sut.reference.frames import BROADCAST, Frame, tx_time_us
@@ -33,6 +32,7 @@ class Span:
         self.cut = False
         self.corrupt: dict[tuple[str, int], int] = {}   # (sending node, frame kind) -> frames to corrupt
         self.tapped = False
+        self.was_usable = True            # what the end nodes last noticed (Train.span_changed)
 
     @property
     def name(self) -> str:
@@ -64,7 +64,8 @@ class Ring:
             node.ports = {R: self.spans[i], L: self.spans[i - 1]}
             node.out = {R: Link(self.spans[i], node, nodes[(i + 1) % self.size], R),
                         L: Link(self.spans[i - 1], node, nodes[i - 1], L)}
-        self._order = itertools.count()
+        self._order = 0                   # arrival order among equal priorities (a plain int: bulk.py)
+        self.uids = 0                     # transmissions numbered per train, so runs do not share a count
         timing, behaviour = train.cfg.timing, train.cfg.behaviour
         self.pass_through = timing.pass_through_us
         self.bitrate = timing.bitrate
@@ -79,7 +80,13 @@ class Ring:
         return None
 
     # -- sending --------------------------------------------------------------------------------
+    def _number(self, frame: Frame) -> None:
+        if not frame.uid:
+            self.uids += 1
+            frame.uid = self.uids
+
     def broadcast(self, node: "RingNode", frame: Frame) -> None:
+        self._number(frame)
         node.seen_add(frame.uid)
         for direction in ((R, L) if self.both_ways else (R,)):
             if node.port_ok(direction):
@@ -87,6 +94,7 @@ class Ring:
 
     def send(self, node: "RingNode", frame: Frame, direction: str) -> None:
         """Unicast toward frame.dst in one direction (the token goes to a neighbour this way)."""
+        self._number(frame)
         node.seen_add(frame.uid)
         if node.port_ok(direction):
             self._enqueue(node.out[direction], frame, 1)
@@ -97,7 +105,8 @@ class Ring:
             self._start(link, frame, hops)
             return
         key = frame.prio if self.by_priority else 0
-        heapq.heappush(link.queue, (key, next(self._order), frame, hops))
+        self._order += 1
+        heapq.heappush(link.queue, (key, self._order, frame, hops))
         if link.timer is None:
             link.timer = self.kernel.call_at(max(link.busy_until, now), self._link_free, link)
 
@@ -134,6 +143,7 @@ class Ring:
         if not link.span.usable:
             return
         if self.check and not frame.ok:
+            node.frames_discarded += 1
             node.emit("frame.discard", frame=frame.name, frm=link.src.name, hops=hops)
             return
         if frame.uid in node.seen:

@@ -9,7 +9,7 @@ from collections import deque
 from typing import TYPE_CHECKING
 
 from sut.reference.boards import Board, PowerSupply
-from sut.reference.frames import COMMAND, crc16_x25
+from sut.reference.frames import K_COMMAND, STATUS_SIZE, build_payload, crc16_x25
 
 if TYPE_CHECKING:
     from sut.reference.train import Train
@@ -33,14 +33,15 @@ class SelfDiagLine:
     def send_command(self, sender: str, fields: dict) -> None:
         if not self.board.alive:
             return
-        data = COMMAND.build(dict(fields, kind=0x11))
-        self._queue(("command", sender, fields, data + crc16_x25(data).to_bytes(2, "little")))
+        frame = build_payload(K_COMMAND, fields)
+        frame += crc16_x25(frame).to_bytes(2, "little")
+        self._queue(("command", sender, fields, len(frame)))
 
     def send_status(self, sender: str, src: int, fields: dict) -> None:
         """Only a faulty variant calls this (NET-04 says the line carries commands only); it talks
         politely, only on an idle line."""
         if self.board.alive and not self.queue and self.busy_until <= self.train.kernel.now:
-            self._queue(("status", sender, dict(fields, src=src), bytes(240)))
+            self._queue(("status", sender, dict(fields, src=src), STATUS_SIZE))
 
     def _queue(self, item: tuple) -> None:
         self.queue.append(item)
@@ -52,9 +53,9 @@ class SelfDiagLine:
         if not self.queue:
             return
         kernel = self.train.kernel
-        kind, sender, fields, wire = self.queue.popleft()
+        kind, sender, fields, size = self.queue.popleft()
         start = max(kernel.now, self.busy_until)
-        self.busy_until = start + self._duration(len(wire))
+        self.busy_until = start + self._duration(size)
         kernel.call_at(self.busy_until, self._deliver, kind, sender, fields)
         self._timer = kernel.call_at(self.busy_until, self._next)
 

@@ -23,6 +23,8 @@ from sut.trace import TraceEvent
 
 
 class Train:
+    BULK_SKIP = ("events",)           # the trace is history, not state (bulk.py)
+
     def __init__(self, cfg: TrainConfig):
         self.cfg = cfg
         self.kernel = Kernel()
@@ -56,7 +58,8 @@ class Train:
         for i, node in enumerate(nodes):
             node.number = i + 1
         self.ring = Ring(self, nodes, media)
-        self._span_state = {id(span): span.usable for span in self.ring.spans}
+        for span in self.ring.spans:
+            span.was_usable = span.usable
         self.selfdiag = SelfDiagLine(self)
         # PRO-06 block transfer bookkeeping at the master node
         self.block_queue: list[int] = []
@@ -96,9 +99,9 @@ class Train:
     def span_changed(self, span: Span) -> None:
         """Called when light on a span may have come or gone; the end nodes notice at once."""
         now_usable = span.usable
-        if self._span_state.get(id(span)) == now_usable:
+        if span.was_usable == now_usable:
             return
-        self._span_state[id(span)] = now_usable
+        span.was_usable = now_usable
         for node, side in ((span.a, "R"), (span.b, "L")):
             node.port_changed(side, now_usable)
 
