@@ -90,6 +90,24 @@ class TrainDriver(abc.ABC):
     @abc.abstractmethod
     def _advance(self, us: int) -> None: ...
 
+    # -- long runs (continuous power-on, TST-02) -----------------------------------------------
+    def soak(self, us: int, *, sample_every_us: int | None = None) -> None:
+        """Let `us` of train time pass in one long run (72 h of continuous power-on).
+
+        The result must be what `advance(us)` gives. A backend may skip steady traffic in closed form
+        (the reference does: sut/reference/bulk.py), but then the trace must still hold the traffic of one
+        steady sample after every `sample_every_us` and of the end of the run, and the `counters` must
+        count everything, skipped or not. A rig simply waits."""
+        if sample_every_us is not None and (not isinstance(sample_every_us, int) or sample_every_us <= 0):
+            raise OutOfRange("sample interval", sample_every_us, "a whole number of microseconds > 0")
+        self.advance(us)
+
+    def counters(self, node: str) -> dict[str, int]:
+        """A ring node's diagnostic counters: 'status sent', 'tokens received', 'token initialisations',
+        'frames discarded'; a CCU system adds 'commands sent', an LCU 'commands received' and 'clock ms'
+        (the clock the CCU's clock correction set, ms since power-up)."""
+        raise NotSupported(f"{self.backend_name} keeps no diagnostic counters")
+
     # -- driver desk (CMD-05) ------------------------------------------------------------------
     @abc.abstractmethod
     def insert_key(self, cab: int) -> None: ...

@@ -14,6 +14,7 @@ from typing import Any, ClassVar
 
 from sut.driver import TrainDriver
 from sut.errors import OutOfRange, SutError, UnknownName
+from sut.reference import bulk
 from sut.reference.boards import Board, PowerSupply
 from sut.reference.config import BRAKE_STEPS, EMERGENCY, TRACTION_NOTCHES, TrainConfig
 from sut.reference.environment import TRAIN_SUPPLY, WHOLE_TRAIN, TrainEnvironment
@@ -65,6 +66,21 @@ class ReferenceTrain(TrainDriver):
     def _advance(self, us: int) -> None:
         kernel = self.train.kernel
         kernel.run(kernel.now + us)
+
+    # -- long runs -----------------------------------------------------------------------------
+    def soak(self, us: int, *, sample_every_us: int | None = None) -> None:
+        super().soak(0, sample_every_us=sample_every_us)      # argument checks
+        if not isinstance(us, int) or us < 0:
+            raise OutOfRange("time step", us, "a whole number of microseconds >= 0")
+        self._require_power()
+        report = bulk.run(self.train, self.now_us + us, sample_every_us)
+        self._mark("train", "bulk.report", simulated_us=report.simulated_us, skipped_us=report.skipped_us,
+                   jumps=report.jumps, period_us=report.period_us)
+
+    def counters(self, node: str) -> dict[str, int]:
+        counts = self._node(node).counters()
+        mask = (1 << self._cfg.behaviour.counter_bits) - 1
+        return {name: value & mask for name, value in counts.items()}
 
     # -- names ---------------------------------------------------------------------------------
     def _node(self, name: str) -> RingNode:

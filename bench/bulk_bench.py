@@ -1,0 +1,90 @@
+"""Continuous power-on, 72 h of an 8-car train: bulk advance against frame-by-frame simulation.
+
+    PYTHONPATH=. python bench/bulk_bench.py [--hours 72] [--fbf-minutes 5] [--agree-minutes 0]
+
+Prints, from one run on this machine:
+  - frame by frame: wall seconds per simulated hour (measured over --fbf-minutes, then scaled), kernel
+    events and trace events per simulated hour;
+  - bulk (sut/reference/bulk.py) for --hours with one steady sample every 1 h and every 3 h: wall time,
+    how much was simulated and how much skipped, jumps, the trace it left, peak traced memory;
+  - with --agree-minutes N: the same N minutes both ways, and whether every leaf of the state agrees
+    (tests/test_bulk.py does this for 10 min with faults on the way).
+Target (issue 5): 72 h in <= 10 s of wall time.
+"""
+from __future__ import annotations
+
+import argparse
+import sys
+import time
+import tracemalloc
+from pathlib import Path
+
+sys.path.insert(0, str(Path(__file__).resolve().parents[1]))      # the project root: `tests` below
+
+from sut.reference import bulk                                      # noqa: E402
+from tests.test_bulk import S, powered   # noqa: E402  the same powered train the agreement test uses
+
+HOUR = 3600 * S
+
+
+def frame_by_frame(minutes: float) -> tuple[float, int, int]:
+    train = powered()
+    k0, t0 = train.train.kernel.events, len(train.train.events)
+    span = round(minutes * 60 * S)
+    wall = time.perf_counter()
+    train.advance(span)
+    wall = time.perf_counter() - wall
+    per_hour = HOUR / span
+    return wall * per_hour, round((train.train.kernel.events - k0) * per_hour), round((len(train.train.events) - t0) * per_hour)
+
+
+def bulk_run(hours: float, every_h: float) -> dict:
+    train = powered()
+    wall = time.perf_counter()
+    report = bulk.run(train.train, round(hours * HOUR), round(every_h * HOUR))
+    wall = time.perf_counter() - wall
+    return {"wall": wall, "report": report, "trace": len(train.train.events), "events": train.train.kernel.events}
+
+
+def peak_memory(hours: float, every_h: float) -> int:
+    tracemalloc.start()
+    train = powered()
+    bulk.run(train.train, round(hours * HOUR), round(every_h * HOUR))
+    peak = tracemalloc.get_traced_memory()[1]
+    tracemalloc.stop()
+    return peak
+
+
+def agree(minutes: float) -> bool:
+    exact, fast = powered(), powered()
+    exact.advance(round(minutes * 60 * S))
+    fast.soak(round(minutes * 60 * S), sample_every_us=10 * 60 * S)
+    a, b = bulk.snapshot(exact.train), bulk.snapshot(fast.train)
+    return a.shape == b.shape and a.ints == b.ints
+
+
+def main() -> None:
+    ap = argparse.ArgumentParser(description=__doc__.split("\n\n")[0])
+    ap.add_argument("--hours", type=float, default=72.0)
+    ap.add_argument("--fbf-minutes", type=float, default=5.0, help="frame-by-frame stretch to measure")
+    ap.add_argument("--agree-minutes", type=float, default=0.0, help="also run this long both ways and compare")
+    args = ap.parse_args()
+
+    wall_h, events_h, trace_h = frame_by_frame(args.fbf_minutes)
+    print(f"frame by frame   {wall_h:8.1f} s wall per simulated hour -> {wall_h * args.hours / 3600:.2f} h for "
+          f"{args.hours:g} h; {events_h:,} kernel events and {trace_h:,} trace events per simulated hour")
+    for every in (1.0, 3.0):
+        r = bulk_run(args.hours, every)
+        rep = r["report"]
+        print(f"bulk, sample/{every:g} h {r['wall']:6.2f} s wall for {args.hours:g} h "
+              f"({wall_h * args.hours / r['wall']:,.0f}x faster); simulated {rep.simulated_us / S:,.0f} s, "
+              f"skipped {rep.skipped_us / S:,.0f} s in {rep.jumps} jumps of whole {rep.period_us / S:g} s periods; "
+              f"trace {r['trace']:,} events; kernel events (counted, skipped included) "
+              f"{r['events'] / args.hours:,.0f} per hour")
+    print(f"peak traced memory, bulk {args.hours:g} h sampled every 3 h: {peak_memory(args.hours, 3.0) / 2**20:.0f} MiB")
+    if args.agree_minutes:
+        print(f"{args.agree_minutes:g} min both ways: state {'identical' if agree(args.agree_minutes) else 'DIFFERENT'}")
+
+
+if __name__ == "__main__":
+    main()

@@ -1,0 +1,285 @@
+"""Bulk advance: whole periods of steady traffic skipped in closed form (72 h continuous power-on).
+
+Frame by frame, 72 h of an 8-car train is about six hours of wall time. A train left alone settles into
+a steady state that repeats every P microseconds (P = the least common multiple of its cyclic periods and
+of one token rotation): after each period every clock has moved by P, every counter by its count per
+period, everything else is as it was. This module reads the whole train as a flat list of leaves (every
+int, float, string... reachable from the Train, the kernel's live timers included) and simulates two
+periods frame by frame: S0, S1, S2. If the structure is the same and every integer leaf moved by the same
+amount in both periods (d = S1 - S0 = S2 - S1), the train is on a straight line, and k periods later each
+leaf is S2 + k*d. Writing those values back is the jump.
+
+Nothing is assumed about what a leaf means: a new piece of state in the model is covered without being
+declared, and state that is not periodic (a ramp, a pending one-shot timer that would fire inside the
+skip, a counter that wraps) makes the check fail, so the train is simulated frame by frame instead. What
+the model must keep to make this sound: no behaviour that depends on elapsed time except through timers
+or through comparisons with bounds shorter than the two checked periods (every bound in config.py is),
+counters kept unbounded (frames.py masks them on the wire), and nothing outside the Train that changes.
+tests/test_bulk.py runs the same hour both ways and compares every leaf.
+"""
+from __future__ import annotations
+
+import enum
+import math
+import types
+from collections import deque
+from dataclasses import dataclass
+from typing import TYPE_CHECKING, Any
+
+from sut.reference.kernel import Timer
+
+if TYPE_CHECKING:
+    from sut.reference.train import Train
+
+
+class NotSteady(Exception):
+    """The train is not on a straight line over the checked periods (the reason says where)."""
+
+
+_SCALARS = (str, bytes, float, complex, type(None), bool, range, enum.Enum)
+_FUNCTIONS = (types.FunctionType, types.BuiltinFunctionType, types.MethodWrapperType, type)
+
+
+@dataclass
+class Snapshot:
+    """The train flattened: `shape` must match exactly between snapshots; `ints` may move linearly."""
+
+    at: int
+    shape: list
+    ints: list[int]
+    writers: list[tuple]          # how to put each int back: ("attr", obj, name), ("item", c, key), ...
+    rebuild: list                 # tuples (innermost first), sets, objects with bulk_rebuild()
+
+
+class _Reader:
+    def __init__(self) -> None:
+        self.shape: list = []
+        self.ints: list[int] = []
+        self.writers: list[tuple] = []
+        self.rebuild: list = []
+        self.refs: dict[int, int] = {}
+        self.keep: list = []      # holds what was read, so that ids stay unique while reading
+
+    def read(self, value: Any, writer: tuple) -> None:
+        t = type(value)
+        if t is int:
+            self.shape.append(int)
+            self.ints.append(value)
+            self.writers.append(writer)
+            return
+        if isinstance(value, _SCALARS):
+            self.shape.append(t)
+            self.shape.append(value)
+            return
+        ref = self.refs.get(id(value))
+        if ref is not None:
+            self.shape.append(("ref", ref))
+            return
+        if t is tuple:
+            # A tuple is a value: rebuilt from its items and handed to its owner when an item changes.
+            holder = [list(value), writer, False]
+            self.shape.append(("tuple", len(value)))
+            for i, item in enumerate(value):
+                self.read(item, ("tuple", holder, i))
+            self.rebuild.append(("tuple", holder))
+            return
+        self.refs[id(value)] = len(self.refs)
+        self.keep.append(value)
+        if t is list or t is deque:
+            self.shape.append((t, len(value)))
+            for i, item in enumerate(value):
+                self.read(item, ("item", value, i))
+        elif t is dict:
+            self.shape.append((dict, len(value)))
+            for key, item in value.items():
+                self.shape.append(key)            # a key that moves is a change of shape
+                self.read(item, ("item", value, key))
+        elif t is set or t is frozenset:
+            items = sorted(value) if all(type(v) is int for v in value) else sorted(value, key=repr)
+            holder = [items, value]
+            self.shape.append((t, len(value)))
+            for i, item in enumerate(items):
+                self.read(item, ("set", holder, i))
+            self.rebuild.append(("set", holder))
+        elif t is types.MethodType:
+            self.shape.append(value.__func__.__qualname__)
+            self.read(value.__self__, ("const",))
+        elif t is types.FunctionType and value.__closure__:
+            self.shape.append(value.__qualname__)
+            for cell in value.__closure__:
+                self.read(cell.cell_contents, ("cell", cell))
+        elif isinstance(value, _FUNCTIONS):
+            self.shape.append(getattr(value, "__qualname__", repr(value)))
+        else:
+            self._read_object(value, t)
+
+    def _read_object(self, obj: Any, t: type) -> None:
+        if not t.__module__.startswith("sut."):
+            raise NotSteady(f"cannot read a {t.__module__}.{t.__qualname__} inside the train")
+        skip = getattr(t, "BULK_SKIP", ()) + getattr(t, "BULK_DERIVED", ())
+        self.shape.append(t)
+        names = list(getattr(obj, "__dict__", {}))
+        for klass in t.__mro__:
+            names.extend(n for n in getattr(klass, "__slots__", ()) if n != "__dict__" and n != "__weakref__")
+        for name in names:
+            if name in skip or not hasattr(obj, name):
+                continue
+            self.shape.append(name)
+            self.read(getattr(obj, name), ("attr", obj, name))
+        steady = getattr(obj, "bulk_steady", None)
+        if steady is not None and not steady():
+            raise NotSteady(f"{t.__qualname__} {obj!r:.60} cannot be carried over a jump")
+        if hasattr(obj, "bulk_rebuild"):
+            self.rebuild.append(("object", obj))
+
+
+def snapshot(train: "Train") -> Snapshot:
+    kernel = train.kernel
+    reader = _Reader()
+    reader.read(train, ("const",))
+    # Timers in an order that does not depend on absolute time: what they call, on which object, how far
+    # ahead; the sequence number only separates timers that agree on all of that.
+    def key(timer: Timer) -> tuple:
+        fn = timer.fn
+        owner = reader.refs.get(id(getattr(fn, "__self__", None)), -1)
+        return (getattr(fn, "__qualname__", ""), owner, timer.at - kernel.now, timer.prio, timer.seq)
+    timers = sorted(kernel.pending(), key=key)
+    reader.read(timers, ("const",))
+    return Snapshot(kernel.now, reader.shape, reader.ints, reader.writers, reader.rebuild)
+
+
+def steady_period_us(train: "Train") -> int:
+    t = train.cfg.timing
+    period = train.ring.size * t.token_hold_us
+    for p in train.kernel.periods():
+        period = math.lcm(period, p)
+    return period
+
+
+def slope(s0: Snapshot, s1: Snapshot, s2: Snapshot) -> list[int]:
+    """Per-period change of every int leaf, if the train moved in a straight line from s0 over s2."""
+    if s0.shape != s1.shape or s1.shape != s2.shape:
+        first = next((i for i, (a, b) in enumerate(zip(s1.shape, s2.shape)) if a != b), None)
+        where = s2.shape[max(0, (first or 0) - 6):(first or 0) + 2] if first is not None else "length"
+        raise NotSteady(f"the train's state changed shape near {where!r}")
+    deltas = []
+    for a, b, c in zip(s0.ints, s1.ints, s2.ints):
+        d = b - a
+        if c - b != d:
+            raise NotSteady("a value did not move by the same amount in both periods")
+        deltas.append(d)
+    return deltas
+
+
+def jump(train: "Train", snap: Snapshot, deltas: list[int], periods: int) -> None:
+    """Put the train where `periods` more steady periods would have left it (snap is the current state)."""
+    dirty: set[int] = set()
+    for value, d, writer in zip(snap.ints, deltas, snap.writers):
+        if d:
+            _write(writer, value + d * periods, dirty)
+    for kind, item in snap.rebuild:
+        if kind == "tuple":
+            items, writer, _ = item
+            if id(item) in dirty:
+                _write(writer, tuple(items), dirty)
+        elif kind == "set":
+            items, target = item
+            if id(item) in dirty:
+                target.clear()
+                target.update(items)
+        else:
+            item.bulk_rebuild()
+    train.kernel.rebuild_heap()
+
+
+def _write(writer: tuple, value: Any, dirty: set[int]) -> None:
+    kind = writer[0]
+    if kind == "attr":
+        setattr(writer[1], writer[2], value)
+    elif kind == "item":
+        writer[1][writer[2]] = value
+    elif kind in ("tuple", "set"):
+        writer[1][0][writer[2]] = value           # rebuilt from its items once all are written
+        dirty.add(id(writer[1]))
+    elif kind == "cell":
+        writer[1].cell_contents = value
+    else:
+        raise NotSteady(f"a moving value cannot be written back ({kind})")
+
+
+def fixed_timer_limit(snap: Snapshot, deltas: list[int]) -> int | None:
+    """The earliest timer that does not move with the periods (a one-shot still to fire): the jump must
+    stop short of it so that it fires frame by frame."""
+    limit = None
+    for value, d, writer in zip(snap.ints, deltas, snap.writers):
+        if (writer[0] == "attr" and writer[2] == "at" and isinstance(writer[1], Timer) and d == 0
+                and writer[1].fn is not None):
+            limit = value if limit is None else min(limit, value)
+    return limit
+
+
+@dataclass
+class BulkReport:
+    """What one bulk run did, for the trace and the benchmark."""
+
+    simulated_us: int = 0          # frame by frame
+    skipped_us: int = 0            # jumped over
+    jumps: int = 0
+    checks: int = 0                # snapshots read
+    period_us: int = 0
+
+
+def run(train: "Train", until: int, sample_every_us: int | None = None) -> BulkReport:
+    """Advance to `until`: frame by frame until the train is steady, then in jumps of whole steady periods
+    P, simulating one period frame by frame after every `sample_every_us` of the run (a sample the trace
+    shows) and the last stretch before `until`. Every sample ends with a check that the train is still on
+    the line the jumps extrapolate; if it is not (something changed), it is simulated frame by frame until
+    it is steady again."""
+    kernel = train.kernel
+    period = steady_period_us(train)
+    report = BulkReport(period_us=period)
+    start = kernel.now
+    every = sample_every_us or (until - start)
+
+    def frame_by_frame(to: int) -> None:
+        report.simulated_us += to - kernel.now
+        kernel.run(to)
+
+    def read() -> Snapshot:
+        report.checks += 1
+        return snapshot(train)
+
+    snaps: list[Snapshot] = []
+    line: list[int] | None = None
+    while kernel.now < until:
+        now = kernel.now
+        if until - now < period:
+            frame_by_frame(until)
+            break
+        snaps.append(read())
+        if line is not None:
+            anchor, last = snaps[0], snaps[-1]
+            n = (last.at - anchor.at) // period
+            if last.shape != anchor.shape or last.ints != [v + d * n for v, d in zip(anchor.ints, line)]:
+                snaps, line = snaps[-1:], None        # off the line: find it again, frame by frame
+        if line is None and len(snaps) >= 3:
+            try:
+                line = slope(*snaps[-3:])
+                snaps = snaps[-1:]                    # the anchor every later check is measured from
+            except NotSteady:
+                snaps = snaps[-2:]
+        if line is not None:
+            # jump to the next sample (or to one period before the end), never past a one-shot timer
+            next_sample = start + ((now - start) // every + 1) * every
+            target = min(next_sample, until - period)
+            periods = (target - now) // period
+            limit = fixed_timer_limit(snaps[-1], line)
+            if limit is not None:
+                periods = min(periods, (limit - now) // period - 1)
+            if periods > 0:
+                jump(train, snaps[-1], line, periods)
+                report.jumps += 1
+                report.skipped_us += periods * period
+                train.emit("train", "time.skip", frm=now, to=kernel.now, periods=periods, period_us=period)
+        frame_by_frame(min(kernel.now + period, until))
+    return report
