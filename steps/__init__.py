@@ -17,4 +17,5 @@ STEP_MODULES = [
     "steps.extra_display",
     "steps.extra_records",
     "steps.environment",
+    "steps.longrun",
 ]

@@ -13,9 +13,10 @@ import re
 from sut.trace import Trace, TraceEvent
 
 MAX_SLOTS = 48
-NICE_MS = (1, 2, 5, 10, 20, 50, 100, 200, 500, 1000, 2000, 5000)
+NICE_MS = (1, 2, 5, 10, 20, 50, 100, 200, 500, 1000, 2000, 5000, 10_000, 20_000, 60_000, 120_000, 300_000,
+           600_000, 1_200_000, 3_600_000, 7_200_000, 18_000_000, 36_000_000)   # up to 10 h: 72 h runs
 EVENT_KINDS = ("fault.", "env.", "supply.", "ccu.takeover", "txc.failsafe", "rxc.failsafe", "token.form", "token.init", "in.set",
-               "in.ramp", "desk.")
+               "in.ramp", "desk.", "time.skip")
 MAX_LANES = 14
 
 
@@ -105,8 +106,15 @@ def wavejson(trace: Trace, start_us: int, end_us: int) -> dict | None:
     if not lanes or (len(lanes) == 1 and lanes[0]["name"] == "events"):
         return None
     return {"signal": lanes[:MAX_LANES],
-            "head": {"text": f"from {start_us / 1000:.0f} ms, one slot = {slot_ms} ms"},
+            "head": {"text": f"from {start_us / 1000:.0f} ms, one slot = {_duration(slot_ms)}"},
             "config": {"hscale": 1}}
+
+
+def _duration(ms: int) -> str:
+    for unit, size in (("h", 3_600_000), ("min", 60_000), ("s", 1000)):
+        if ms >= size and ms % size == 0:
+            return f"{ms // size} {unit}"
+    return f"{ms} ms"
 
 
 _DEF = re.compile(r'<g id="([^"]+)">.*?</g>', re.S)

@@ -286,7 +286,19 @@ class EarlierFallback(ReferenceTrain):
     TIMING = {"rxc_fallback_us": 60 * MS}
 
 
+class StatusCounter16(ReferenceTrain):
+    """TST-02: diagnostic counters kept in 16 bits wrap within 72 h (65,536 status frames = 2.2 h)."""
+    BEHAVIOUR = {"counter_bits": 16}
+
+
+class ClockInMicroseconds32(ReferenceTrain):
+    """TST-02: the clock correction counts microseconds in 32 bits, which wrap after 71.6 min."""
+    BEHAVIOUR = {"clock_from_us32": True}
+
+
 FAULTY = [
+    (StatusCounter16, "TST-02", "H-CPO-01"),
+    (ClockInMicroseconds32, "TST-02", "H-CPO-02"),
     # (variant, requirement it breaks, test item that must reject it)
     (SlowTakeover, "RED-02", "F-NET-17"),
     (StandbyTransmits, "RED-02", "F-NET-17"),

@@ -1,0 +1,213 @@
+"""Long runs: continuous power-on for hours of train time (TST-02), judged by counters and samples.
+
+A backend may skip steady traffic (TrainDriver.soak); it then says so in the trace with one `time.skip`
+event per skipped stretch (fields `frm`, `to`). Checks over the whole run use the node counters, which
+count skipped traffic too; checks of timing use the observed stretches only, and demand one per sample.
+"""
+from __future__ import annotations
+
+from dataclasses import dataclass, field
+
+import pytest
+from pytest_bdd import parsers, then, when
+
+from sut.driver import TrainDriver
+from sut.trace import Trace
+from steps.analysis import lcus, ms, us
+
+HOUR_US = 3_600_000_000
+
+
+@dataclass
+class LongRun:
+    start_us: int | None = None
+    end_us: int = 0
+    sample_every_us: int | None = None
+    before: dict[str, dict[str, int]] = field(default_factory=dict)
+    after: dict[str, dict[str, int]] = field(default_factory=dict)
+
+    def delta(self, node: str, counter: str) -> int:
+        return self.after[node][counter] - self.before[node][counter]
+
+    @property
+    def span_us(self) -> int:
+        assert self.start_us is not None, "no long run happened (a When step must run the train for hours)"
+        return self.end_us - self.start_us
+
+
+@pytest.fixture
+def long_run() -> LongRun:
+    return LongRun()
+
+
+def _counters(sut: TrainDriver) -> dict[str, dict[str, int]]:
+    return {node: sut.counters(node) for node in sut.ring_nodes()}
+
+
+def hours_us(hours: float) -> int:
+    if hours <= 0:
+        raise ValueError(f"a run of {hours:g} h: give a positive number of hours")
+    return round(hours * HOUR_US)
+
+
+@when(parsers.parse("the train runs for {hours:g} h, sampled for one steady period every {every:g} h"),
+      target_fixture="t_action")
+def _(sut: TrainDriver, long_run: LongRun, hours: float, every: float) -> int:
+    _run(sut, long_run, hours_us(hours), hours_us(every))
+    return sut.now_us
+
+
+@when(parsers.parse("the train runs for {hours:g} h"), target_fixture="t_action")
+def _(sut: TrainDriver, long_run: LongRun, hours: float) -> int:
+    _run(sut, long_run, hours_us(hours), long_run.sample_every_us)
+    return sut.now_us
+
+
+@when(parsers.parse("the train runs until {hours:g} h after power-up, sampled for one steady period every "
+                    "{every:g} h"), target_fixture="t_action")
+def _(sut: TrainDriver, long_run: LongRun, hours: float, every: float) -> int:
+    _run(sut, long_run, _until(sut, hours), hours_us(every))
+    return sut.now_us
+
+
+@when(parsers.parse("the train runs until {hours:g} h after power-up"), target_fixture="t_action")
+def _(sut: TrainDriver, long_run: LongRun, hours: float) -> int:
+    _run(sut, long_run, _until(sut, hours), long_run.sample_every_us)
+    return sut.now_us
+
+
+def _until(sut: TrainDriver, hours: float) -> int:
+    target = hours_us(hours)
+    if target <= sut.now_us:
+        raise ValueError(f"the train is already {sut.now_us / HOUR_US:g} h after power-up, past {hours:g} h")
+    return target - sut.now_us
+
+
+def _run(sut: TrainDriver, run: LongRun, span: int, every: int | None) -> None:
+    if run.start_us is None:
+        run.start_us, run.before, run.sample_every_us = sut.now_us, _counters(sut), every
+    sut.soak(span, sample_every_us=every)
+    run.end_us, run.after = sut.now_us, _counters(sut)
+
+
+# -- what the trace observed -----------------------------------------------------------------------
+def skips(trace: Trace) -> list[tuple[int, int]]:
+    return [(ev["frm"], ev["to"]) for ev in trace.select(kind="time.skip")]
+
+
+def stretches(trace: Trace, start: int, end: int) -> list[tuple[int, int]]:
+    """The parts of start..end that the trace observed (everything but the skips)."""
+    out, at = [], start
+    for frm, to in sorted(skips(trace)):
+        if to <= start or frm >= end:
+            continue
+        if frm > at:
+            out.append((at, frm))
+        at = max(at, to)
+    if at < end:
+        out.append((at, end))
+    return out
+
+
+# -- whole-run checks from the counters ------------------------------------------------------------
+@then("no node initialised the token during the run")
+def _(sut: TrainDriver, long_run: LongRun) -> None:
+    _ = long_run.span_us
+    again = {n: long_run.delta(n, "token initialisations") for n in long_run.after
+             if long_run.delta(n, "token initialisations")}
+    assert not again, f"token initialisations during the run: {again}"
+
+
+@then("no node discarded a frame during the run")
+def _(sut: TrainDriver, long_run: LongRun) -> None:
+    _ = long_run.span_us
+    bad = {n: long_run.delta(n, "frames discarded") for n in long_run.after if long_run.delta(n, "frames discarded")}
+    assert not bad, f"frames discarded during the run: {bad}"
+
+
+@then(parsers.parse("every node sent status data once every {lo:g} to {hi:g} ms over the whole run"))
+def _(sut: TrainDriver, long_run: LongRun, lo: float, hi: float) -> None:
+    _expect_count(long_run, "status sent", lo, hi, "sent status data")
+
+
+@then(parsers.parse("every node received the token once every {lo:g} to {hi:g} ms over the whole run"))
+def _(sut: TrainDriver, long_run: LongRun, lo: float, hi: float) -> None:
+    _expect_count(long_run, "tokens received", lo, hi, "received the token")
+
+
+def _expect_count(run: LongRun, counter: str, lo: float, hi: float, what: str) -> None:
+    """Each node's `counter` grew as a cycle of lo..hi ms allows over the whole run."""
+    span = run.span_us
+    fewest, most = span // us(hi), -(-span // us(lo)) + 1
+    for node in run.after:
+        got = run.delta(node, counter)
+        assert fewest <= got <= most, (
+            f"{node} {what} {got} times in {span / HOUR_US:g} h: a cycle of {lo:g}..{hi:g} ms gives {fewest}..{most}")
+
+
+@then(parsers.parse('every LCU received every command "{ccu}" sent during the run'))
+def _(sut: TrainDriver, long_run: LongRun, ccu: str) -> None:
+    sent = long_run.delta(ccu, "commands sent")
+    assert sent >= long_run.span_us // us(20), f"{ccu} sent only {sent} commands in the run"
+    for lcu in lcus(sut):
+        got = long_run.delta(lcu, "commands received")
+        # one command may be on its way at either end of the run
+        assert abs(got - sent) <= 1, f"{lcu} received {got} of the {sent} commands {ccu} sent"
+
+
+@then(parsers.parse("the clock of every LCU reads the time since power-up within {bound:g} ms"))
+def _(sut: TrainDriver, long_run: LongRun, bound: float) -> None:
+    _ = long_run.span_us
+    now_ms = sut.now_us / 1000
+    for lcu in lcus(sut):
+        clock = sut.counters(lcu)["clock ms"]
+        assert abs(clock - now_ms) <= bound, (
+            f"{lcu} clock reads {clock} ms at {now_ms:.0f} ms since power-up ({(now_ms - clock) / 1000:+.3f} s)")
+
+
+# -- timing in the samples -------------------------------------------------------------------------
+@then(parsers.parse("in every sample the cab {cab:d} monitor receives status data from every other node "
+                    "every {lo:g} to {hi:g} ms"))
+def _(sut: TrainDriver, long_run: LongRun, cab: int, lo: float, hi: float) -> None:
+    trace = sut.trace
+    observed = stretches(trace, long_run.start_us if long_run.start_us is not None else 0, long_run.end_us)
+    every = long_run.sample_every_us or long_run.span_us
+    assert len(observed) >= long_run.span_us // every, (
+        f"the trace observed {len(observed)} stretches of the {long_run.span_us / HOUR_US:g} h run; one sample "
+        f"every {every / HOUR_US:g} h needs {long_run.span_us // every}")
+    monitor = f"car{cab}.monitor"
+    for a, b in observed:
+        by_node: dict[str, list[int]] = {}
+        for ev in trace.select(kind="status.rx", source=monitor, since=a, until=b):
+            by_node.setdefault(ev["frm"], []).append(ev.t)
+        for node in sut.ring_nodes():
+            if node.startswith(f"car{cab}.CCU"):
+                continue
+            times = by_node.get(node, [])
+            assert len(times) >= 3, f"sample {ms(a)}..{ms(b)}: only {len(times)} status frames from {node}"
+            gaps = [y - x for x, y in zip(times, times[1:])]
+            assert us(lo) <= min(gaps) and max(gaps) <= us(hi), (
+                f"sample {ms(a)}..{ms(b)}: status data from {node} every {ms(min(gaps))}..{ms(max(gaps))}, "
+                f"outside {lo:g}..{hi:g} ms")
+
+
+# -- the recorder ----------------------------------------------------------------------------------
+@then(parsers.parse('"{master}" holds these fault records, oldest first, each stamped within {bound:g} ms:'))
+def _(sut: TrainDriver, master: str, bound: float, datatable: list[list[str]]) -> None:
+    header, *rows = datatable
+    want = [dict(zip(header, row)) for row in rows]
+    held = []
+    for node, records in sut.block_store(master).items():
+        for record in records:
+            text = record.rstrip(b"\0").decode("ascii", "replace")
+            if text.startswith("F|"):
+                _, t_ms, owner, board, event = text.split("|")
+                held.append((int(t_ms), owner, board, event))
+    held.sort()
+    assert len(held) == len(want), f"{master} holds {len(held)} fault records, expected {len(want)}: {held}"
+    for (t_ms, owner, board, event), row in zip(held, want):
+        at_ms = float(row["at h"]) * HOUR_US / 1000
+        assert (owner, board, event) == (row["node"], row["board"], row["event"]), (
+            f"record {t_ms} ms {owner} {board} {event} where {row} was expected")
+        assert at_ms <= t_ms <= at_ms + bound, (
+            f"record of {owner} {board} {event} stamped {t_ms} ms, the {event} happened at {at_ms:.0f} ms")
