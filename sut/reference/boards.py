@@ -12,24 +12,25 @@ class PowerSupply:
         self.name = name
         self.switched = True
         self.input_ok = True
-        self.listeners: list[Callable[[], None]] = []
-
-    @property
-    def on(self) -> bool:
-        return self.switched and self.input_ok
+        self.on = True            # switched and input_ok, kept rather than computed: read on every frame
+        self.boards: list[Board] = []
 
     def set(self, on: bool) -> None:
-        self._change(lambda: setattr(self, "switched", on))
+        self.switched = on
+        self._update()
 
     def set_input_ok(self, ok: bool) -> None:
-        self._change(lambda: setattr(self, "input_ok", ok))
+        self.input_ok = ok
+        self._update()
 
-    def _change(self, apply: Callable[[], None]) -> None:
-        was = self.on
-        apply()
+    def _update(self) -> None:
+        was, self.on = self.on, self.switched and self.input_ok
         if self.on != was:
-            for notify in list(self.listeners):
-                notify()
+            # every board it feeds is up to date before any of them tells anyone
+            for board in self.boards:
+                board.alive = not board.failed and self.on
+            for board in self.boards:
+                board.notify()
 
 
 class Board:
@@ -39,18 +40,16 @@ class Board:
         self.name = name
         self.supply = supply
         self.failed = False
+        self.alive = supply.on    # not failed and supply on, kept rather than computed (ring hot path)
         self.listeners: list[Callable[[], None]] = []
-        supply.listeners.append(self._changed)
-
-    @property
-    def alive(self) -> bool:
-        return not self.failed and self.supply.on
+        supply.boards.append(self)
 
     def set_failed(self, failed: bool) -> None:
         if failed != self.failed:
             self.failed = failed
-            self._changed()
+            self.alive = not failed and self.supply.on
+            self.notify()
 
-    def _changed(self) -> None:
+    def notify(self) -> None:
         for notify in list(self.listeners):
             notify()
