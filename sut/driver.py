@@ -98,9 +98,15 @@ class TrainDriver(abc.ABC):
         (the reference does: sut/reference/bulk.py), but then the trace must still hold the traffic of one
         steady sample after every `sample_every_us` and of the end of the run, and the `counters` must
         count everything, skipped or not. A rig simply waits."""
+        if not isinstance(us, int) or us < 0:
+            raise OutOfRange("time step", us, "a whole number of microseconds >= 0")
         if sample_every_us is not None and (not isinstance(sample_every_us, int) or sample_every_us <= 0):
             raise OutOfRange("sample interval", sample_every_us, "a whole number of microseconds > 0")
-        self.advance(us)
+        self._require_power()
+        self._soak(us, sample_every_us)
+
+    def _soak(self, us: int, sample_every_us: int | None) -> None:
+        self._advance(us)
 
     def counters(self, node: str) -> dict[str, int]:
         """A ring node's diagnostic counters: 'status sent', 'tokens received', 'token initialisations',

@@ -77,6 +77,27 @@ def test_time_cannot_run_backwards(train) -> None:
 def test_time_needs_power(train) -> None:
     with pytest.raises(NotPoweredUp):
         train.advance(1000)
+    with pytest.raises(NotPoweredUp):
+        train.soak(1000)
+
+
+@pytest.mark.parametrize(("call", "words"), [
+    (lambda t: t.soak(-5), ["time step -5"]),
+    (lambda t: t.soak(2.5), ["time step 2.5"]),
+    (lambda t: t.soak(10_000, sample_every_us=0), ["sample interval 0", "> 0"]),
+])
+def test_long_runs_out_of_range(train, call, words) -> None:
+    train.power_on()
+    with pytest.raises(OutOfRange) as err:
+        call(train)
+    for word in words:
+        assert word in str(err.value)
+
+
+def test_counters_of_an_unknown_node(train) -> None:
+    train.power_on()
+    with pytest.raises(UnknownName, match="no ring node named 'car9.LCU'"):
+        train.counters("car9.LCU")
 
 
 def test_composition_is_fixed_once_the_train_exists(train) -> None:

@@ -121,3 +121,26 @@ def test_a_state_that_does_not_move_in_a_straight_line_is_not_steady() -> None:
     s2 = bulk.snapshot(train.train)
     with pytest.raises(bulk.NotSteady):
         bulk.slope(s0, s1, s2)
+
+
+def test_a_sample_on_a_copy_shows_what_the_train_itself_does() -> None:
+    # Where the steady period is long (123 s for a 10.25 ms token hold), samples run on a copy (bulk._probe).
+    train = powered()
+    start, before = train.now_us, len(train.train.events)
+    end = bulk._probe(train.train, 3 * S, bulk.BulkReport())
+    sampled = [(ev.t, ev.source, ev.kind, ev.fields) for ev in train.train.events[before:]]
+    assert train.now_us == start and end == start + 3 * S, "the train itself must not move"
+    assert len(sampled) > 1000
+    train.advance(3 * S)
+    itself = [(ev.t, ev.source, ev.kind, ev.fields) for ev in train.train.events[before + len(sampled):]]
+    assert itself == sampled
+
+
+def test_a_token_hold_of_10_25_ms_makes_the_steady_period_123_s() -> None:
+    # 12 x 10.25 ms = 123 ms against the 1 s cycles: lcm 123 s, longer than a sample (bulk.SAMPLE_US)
+    class TenQuarterHold(ReferenceTrain):
+        TIMING = {"token_hold_us": 10_250}
+
+    train = TenQuarterHold()
+    train.power_on()
+    assert bulk.steady_period_us(train.train) == 123 * S > bulk.SAMPLE_US

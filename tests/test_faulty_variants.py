@@ -21,7 +21,7 @@ def run_features(variant: type, *args: str) -> subprocess.CompletedProcess:
     cmd = [sys.executable, "-m", "pytest", "features", "-q", "-p", "no:cacheprovider", "-p", "no:xdist",
            f"--sut=tests.variants:{variant.__name__}", "-o", "addopts=--strict-markers", *args]
     env = dict(os.environ, PYTHONDONTWRITEBYTECODE="1")
-    return subprocess.run(cmd, cwd=ROOT, capture_output=True, text=True, env=env, timeout=600)
+    return subprocess.run(cmd, cwd=ROOT, capture_output=True, text=True, env=env, timeout=1500)
 
 
 def test_at_least_twelve_requirements_have_a_faulty_variant() -> None:

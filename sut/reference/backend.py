@@ -68,11 +68,7 @@ class ReferenceTrain(TrainDriver):
         kernel.run(kernel.now + us)
 
     # -- long runs -----------------------------------------------------------------------------
-    def soak(self, us: int, *, sample_every_us: int | None = None) -> None:
-        super().soak(0, sample_every_us=sample_every_us)      # argument checks
-        if not isinstance(us, int) or us < 0:
-            raise OutOfRange("time step", us, "a whole number of microseconds >= 0")
-        self._require_power()
+    def _soak(self, us: int, sample_every_us: int | None) -> None:
         report = bulk.run(self.train, self.now_us + us, sample_every_us)
         self._mark("train", "bulk.report", simulated_us=report.simulated_us, skipped_us=report.skipped_us,
                    jumps=report.jumps, period_us=report.period_us)

@@ -19,6 +19,7 @@ tests/test_bulk.py runs the same hour both ways and compares every leaf.
 """
 from __future__ import annotations
 
+import copy
 import enum
 import math
 import types
@@ -231,55 +232,87 @@ class BulkReport:
 
 def run(train: "Train", until: int, sample_every_us: int | None = None) -> BulkReport:
     """Advance to `until`: frame by frame until the train is steady, then in jumps of whole steady periods
-    P, simulating one period frame by frame after every `sample_every_us` of the run (a sample the trace
-    shows) and the last stretch before `until`. Every sample ends with a check that the train is still on
-    the line the jumps extrapolate; if it is not (something changed), it is simulated frame by frame until
-    it is steady again."""
+    P, with a sample of frame-by-frame traffic (the trace shows it) near every `sample_every_us` of the
+    run and the last stretch before `until`.
+
+    A sample is one period P on the train itself, followed by a check that the train is still on the line
+    the jumps extrapolate (if not, something changed: it is simulated frame by frame until steady again).
+    Where P is longer than SAMPLE_US (a token rotation incommensurate with the 1 s cycles: 10.25 ms x 12
+    nodes gives P = 123 s), the sample is SAMPLE_US simulated on a copy of the train, which is cheaper
+    than P on the train; the last stretch before `until` is still simulated on the train itself."""
     kernel = train.kernel
     period = steady_period_us(train)
     report = BulkReport(period_us=period)
-    start = kernel.now
-    every = sample_every_us or (until - start)
+    every = sample_every_us or (until - kernel.now)
+    next_sample = kernel.now + every
 
     def frame_by_frame(to: int) -> None:
         report.simulated_us += to - kernel.now
         kernel.run(to)
 
-    def read() -> Snapshot:
-        report.checks += 1
-        return snapshot(train)
-
-    snaps: list[Snapshot] = []
+    snaps: list[Snapshot] = []          # [anchor, ...]: the anchor is where the line was found
     line: list[int] | None = None
+    jumped = False                      # the state is the line's own extrapolation: no need to read it
     while kernel.now < until:
         now = kernel.now
         if until - now < period:
             frame_by_frame(until)
             break
-        snaps.append(read())
-        if line is not None:
-            anchor, last = snaps[0], snaps[-1]
-            n = (last.at - anchor.at) // period
-            if last.shape != anchor.shape or last.ints != [v + d * n for v, d in zip(anchor.ints, line)]:
-                snaps, line = snaps[-1:], None        # off the line: find it again, frame by frame
-        if line is None and len(snaps) >= 3:
-            try:
-                line = slope(*snaps[-3:])
-                snaps = snaps[-1:]                    # the anchor every later check is measured from
-            except NotSteady:
-                snaps = snaps[-2:]
-        if line is not None:
-            # jump to the next sample (or to one period before the end), never past a one-shot timer
-            next_sample = start + ((now - start) // every + 1) * every
-            target = min(next_sample, until - period)
-            periods = (target - now) // period
-            limit = fixed_timer_limit(snaps[-1], line)
-            if limit is not None:
-                periods = min(periods, (limit - now) // period - 1)
-            if periods > 0:
-                jump(train, snaps[-1], line, periods)
-                report.jumps += 1
-                report.skipped_us += periods * period
-                train.emit("train", "time.skip", frm=now, to=kernel.now, periods=periods, period_us=period)
-        frame_by_frame(min(kernel.now + period, until))
+        base_is_current = not jumped
+        if not jumped:
+            snaps.append(snapshot(train))
+            report.checks += 1
+            if line is not None:
+                anchor, last = snaps[0], snaps[-1]
+                n = (last.at - anchor.at) // period
+                if last.shape != anchor.shape or last.ints != [v + d * n for v, d in zip(anchor.ints, line)]:
+                    snaps, line = snaps[-1:], None    # off the line: find it again, frame by frame
+                else:
+                    snaps = [anchor, last]
+            if line is None and len(snaps) >= 3:
+                try:
+                    line = slope(*snaps[-3:])
+                    snaps = snaps[-1:]
+                except NotSteady:
+                    snaps = snaps[-2:]
+        jumped = False
+        if line is None:
+            frame_by_frame(now + period)
+            continue
+        sampled_until = now
+        if now + period > next_sample:                # a sample is due within the coming period
+            next_sample += every * ((now + period - next_sample) // every + 1)
+            if period <= SAMPLE_US:
+                frame_by_frame(now + period)          # checked against the line next time round
+                continue
+            sampled_until = _probe(train, SAMPLE_US, report)
+        if not base_is_current:
+            frame_by_frame(now + period)
+            continue
+        # jump to the next sample (or to one period before the end), never past a one-shot timer
+        periods = (min(next_sample, until - period) - now) // period
+        limit = fixed_timer_limit(snaps[-1], line)
+        if limit is not None:
+            periods = min(periods, (limit - now) // period - 1)
+        if periods <= 0:
+            frame_by_frame(now + period)
+            continue
+        jump(train, snaps[-1], line, periods)
+        report.jumps += 1
+        report.skipped_us += periods * period
+        train.emit("train", "time.skip", frm=sampled_until, to=kernel.now, periods=periods, period_us=period)
+        jumped = period <= SAMPLE_US                  # a probing run reads the jumped state as its next base
     return report
+
+
+SAMPLE_US = 3_000_000
+
+
+def _probe(train: "Train", span: int, report: BulkReport) -> int:
+    """Simulate `span` frame by frame on a copy of the train and put what happened in the train's trace;
+    the train itself stays where it is. Returns the end of the sample."""
+    probe = copy.deepcopy(train, {id(train.events): []})
+    probe.kernel.run(probe.kernel.now + span)
+    train.events.extend(probe.events)
+    report.simulated_us += span
+    return probe.kernel.now
