@@ -1,0 +1,236 @@
+"""MVB frames of IEC 61375-3-1 (TCN-05, TCN-06, TCN-10): master frame, slave frame, check sequence.
+
+A frame body is the bytes between the start and the end delimiter, in transmission order (MSB first):
+a master frame is F_code (4 bits), address (12 bits) and one check byte; a slave frame is 16/32/64 data
+bits and one check byte, or for 128/256 bits a check byte after every 64 data bits. The delimiters are
+non-data Manchester symbols, not bytes, and the master and slave start delimiters differ; so the frame type
+is not in the body but in the function that decodes it (`decode_master` / `decode_slave`), as a receiver
+learns it from the start delimiter before the data.
+
+Check sequence: 7-bit CRC, generator x^7+x^6+x^5+x^2+1, zero start, MSB first over one group (16, 32 or 64
+data bits), then an even-parity bit over the group and the 7 CRC bits; all 8 bits are sent inverted.
+
+Sources used (public):
+- the sigrok MVB decoder by Libor Tomsik, github.com/yeckel/sigrok_mvb_decoder mvb/pd.py (commit d9bd4b8):
+  divisor 11100101, parity over data and remainder, the 8 bits inverted, one check per 64 bits of a long
+  slave frame, F_code names 0-4 PD 2/4/8/16/32 bytes, 8 master transfer, 9 general event, 12 MD,
+  13 group event, 14 single event, 15 device status, 5-7 and 10-11 reserved;
+- its real-bus captures decoded in github.com/yeckel/sigrok_mvb_test test/mvb/pd_*.output: all 1682 check
+  groups agree with this module (tests/test_mvb.py holds a sample as known answers); they also show
+  F_code 0-4 answered by 16/32/64/128/256-bit slave frames;
+- the BME MIT MVB VHDL stack (e_CRC_CALCULATOR: "the 7 bit remainder is extended by an even parity bit,
+  the eight bits are transmitted inverted").
+DreamSourceLab's C port of that decoder (PXView, "mvb_c") runs an 8-bit register with 0xE5 and XORs the
+parity into the inverted CRC; for the captured master frame 40 51 it computes 0x6c, not the 0xe8 on the
+bus, so it is not used.
+Slave frame sizes for F_code 8-15 (16 bits, 256 for message data) are IEC 61375-3-1's table; none of the
+public sources above states them.
+"""
+from __future__ import annotations
+
+from dataclasses import dataclass
+from enum import Enum
+from typing import NamedTuple
+
+
+class MvbFrameError(ValueError):
+    """A frame, or a field for one, that IEC 61375-3-1 does not allow; the message says what and where."""
+
+
+class DataClass(Enum):
+    PROCESS = "process data"            # cyclic, sent on the master's poll of a logical address
+    MESSAGE = "message data"            # numbered packets the destination acknowledges
+    SUPERVISORY = "supervisory data"    # device status, master transfer, event arbitration
+
+
+class FCode(NamedTuple):
+    name: str
+    data_class: DataClass
+    slave_size_bits: int
+
+
+F_CODES: dict[int, FCode] = {
+    0: FCode("process data 16", DataClass.PROCESS, 16),
+    1: FCode("process data 32", DataClass.PROCESS, 32),
+    2: FCode("process data 64", DataClass.PROCESS, 64),
+    3: FCode("process data 128", DataClass.PROCESS, 128),
+    4: FCode("process data 256", DataClass.PROCESS, 256),
+    8: FCode("master transfer", DataClass.SUPERVISORY, 16),
+    9: FCode("general event", DataClass.SUPERVISORY, 16),
+    12: FCode("message data", DataClass.MESSAGE, 256),
+    13: FCode("group event", DataClass.SUPERVISORY, 16),
+    14: FCode("single event", DataClass.SUPERVISORY, 16),
+    15: FCode("device status", DataClass.SUPERVISORY, 16),
+}
+
+SLAVE_SIZES_BITS = (16, 32, 64, 128, 256)
+GROUP_BITS = 64
+MASTER_FRAME_BYTES = 3
+MAX_ADDRESS = 0xFFF
+
+
+# -- check sequence -------------------------------------------------------------------------------
+# The `crc` package (8.0) cannot compute this CRC: its registers shift each input byte by (width - 8),
+# which is negative for width 7 (ValueError "negative shift count", plain and table-driven alike). So
+# the CRC is computed here, the 7-bit register held left-aligned in a byte so one table lookup per data
+# byte suffices; tests/test_mvb.py holds it equal to a bit-by-bit long division and to the `crc`
+# package run as an 8-bit CRC with the generator shifted left by one.
+_GENERATOR = 0x65       # x^7 + x^6 + x^5 + x^2 + 1 without the x^7 term
+
+
+def _crc_table() -> tuple[int, ...]:
+    table = []
+    for byte in range(256):
+        reg = byte
+        for _ in range(8):
+            reg = ((reg << 1) ^ (_GENERATOR << 1) if reg & 0x80 else reg << 1) & 0xFF
+        table.append(reg)
+    return tuple(table)
+
+
+_CRC_TABLE = _crc_table()
+
+
+def check_sequence(group: bytes) -> int:
+    """The check byte sent after `group` (2, 4 or 8 data bytes): CRC-7, even parity, inverted."""
+    reg = 0
+    for byte in group:
+        reg = _CRC_TABLE[reg ^ byte]
+    crc7 = reg >> 1
+    parity = (int.from_bytes(group, "big").bit_count() + crc7.bit_count()) & 1
+    return ~(crc7 << 1 | parity) & 0xFF
+
+
+# -- F_code ---------------------------------------------------------------------------------------
+def _f_code(f_code: int) -> FCode:
+    if not isinstance(f_code, int) or not 0 <= f_code <= 15:
+        raise MvbFrameError(f"F_code {f_code!r} out of range 0..15 (4 bits)")
+    if f_code not in F_CODES:
+        raise MvbFrameError(f"F_code {f_code} is reserved (IEC 61375-3-1 defines {sorted(F_CODES)})")
+    return F_CODES[f_code]
+
+
+def data_class(f_code: int) -> DataClass:
+    """The data class a master frame with this F_code asks for."""
+    return _f_code(f_code).data_class
+
+
+def slave_size_bits(f_code: int) -> int:
+    """Data bits of the slave frame that answers a master frame with this F_code."""
+    return _f_code(f_code).slave_size_bits
+
+
+# -- frames ---------------------------------------------------------------------------------------
+@dataclass(frozen=True)
+class MasterFrame:
+    f_code: int
+    address: int
+
+    def __post_init__(self) -> None:
+        _f_code(self.f_code)
+        if not isinstance(self.address, int) or not 0 <= self.address <= MAX_ADDRESS:
+            raise MvbFrameError(f"master frame address {self.address!r} out of range 0..{MAX_ADDRESS:#x} "
+                                "(12 bits)")
+
+    @property
+    def data_class(self) -> DataClass:
+        return data_class(self.f_code)
+
+    @property
+    def slave_size_bits(self) -> int:
+        return slave_size_bits(self.f_code)
+
+    def encode(self) -> bytes:
+        head = (self.f_code << 12 | self.address).to_bytes(2, "big")
+        return head + bytes([check_sequence(head)])
+
+
+@dataclass(frozen=True)
+class SlaveFrame:
+    data: bytes
+
+    def __post_init__(self) -> None:
+        if not isinstance(self.data, (bytes, bytearray, memoryview)):
+            raise MvbFrameError(f"slave frame data must be bytes, got {type(self.data).__name__}")
+        object.__setattr__(self, "data", bytes(self.data))
+        if len(self.data) * 8 not in SLAVE_SIZES_BITS:
+            raise MvbFrameError(f"slave frame data of {len(self.data)} bytes ({len(self.data) * 8} bits): "
+                                f"a slave frame carries {'/'.join(map(str, SLAVE_SIZES_BITS))} bits")
+
+    @property
+    def size_bits(self) -> int:
+        return len(self.data) * 8
+
+    def encode(self) -> bytes:
+        out = bytearray()
+        for group in _groups(self.data):
+            out += group
+            out.append(check_sequence(group))
+        return bytes(out)
+
+
+def _groups(data: bytes) -> list[bytes]:
+    step = GROUP_BITS // 8
+    return [data[i:i + step] for i in range(0, len(data), step)]
+
+
+def _frame_bytes(size_bits: int) -> int:
+    groups = -(-size_bits // GROUP_BITS)
+    return size_bits // 8 + groups
+
+
+_SIZE_BY_FRAME_BYTES = {_frame_bytes(bits): bits for bits in SLAVE_SIZES_BITS}     # 3/5/9/18/36 bytes
+
+
+def _as_bytes(raw: object, what: str) -> bytes:
+    if not isinstance(raw, (bytes, bytearray, memoryview)):
+        raise MvbFrameError(f"{what} must be bytes, got {type(raw).__name__}")
+    return bytes(raw)
+
+
+def decode_master(raw: bytes) -> MasterFrame:
+    """The master frame in `raw` (body after a master start delimiter); MvbFrameError if it is not one."""
+    raw = _as_bytes(raw, "master frame")
+    if len(raw) != MASTER_FRAME_BYTES:
+        raise MvbFrameError(f"master frame of {len(raw)} bytes: a master frame is {MASTER_FRAME_BYTES} bytes "
+                            "(F_code, address, check sequence)")
+    want = check_sequence(raw[:2])
+    if raw[2] != want:
+        raise MvbFrameError(f"master frame check sequence failed at raw[2]: received {raw[2]:#04x}, "
+                            f"computed {want:#04x}")
+    # The check comes first: a bit error in the F_code must read as a corrupt frame, not a reserved code.
+    word = int.from_bytes(raw[:2], "big")
+    return MasterFrame(word >> 12, word & MAX_ADDRESS)
+
+
+def decode_slave(raw: bytes, size_bits: int | None = None) -> SlaveFrame:
+    """The slave frame in `raw` (body after a slave start delimiter); MvbFrameError if it is not one.
+
+    `size_bits` is what the master frame asked for (`slave_size_bits(f_code)`). Pass it: without it the
+    size follows from the length, and a 128/256-bit frame cut after a whole 64-bit group and its check
+    byte reads as a valid shorter frame.
+    """
+    raw = _as_bytes(raw, "slave frame")
+    if size_bits is None:
+        if len(raw) not in _SIZE_BY_FRAME_BYTES:
+            raise MvbFrameError(f"slave frame of {len(raw)} bytes is not a valid frame size (3, 5, 9, 18 or "
+                                "36 bytes for 16/32/64/128/256 data bits)")
+        size_bits = _SIZE_BY_FRAME_BYTES[len(raw)]
+    elif not isinstance(size_bits, int) or size_bits not in SLAVE_SIZES_BITS:
+        raise MvbFrameError(f"slave frame size {size_bits!r} bits: a slave frame carries "
+                            f"{'/'.join(map(str, SLAVE_SIZES_BITS))} bits")
+    elif len(raw) != _frame_bytes(size_bits):
+        raise MvbFrameError(f"slave frame of {len(raw)} bytes: {size_bits} data bits make "
+                            f"{_frame_bytes(size_bits)} bytes with their check sequences")
+    step = min(size_bits, GROUP_BITS) // 8 + 1
+    count = len(raw) // step
+    data = bytearray()
+    for index, start in enumerate(range(0, len(raw), step)):
+        group, received = raw[start:start + step - 1], raw[start + step - 1]
+        want = check_sequence(group)
+        if received != want:
+            raise MvbFrameError(f"slave frame check sequence of group {index + 1} of {count} "
+                                f"(data raw[{start}:{start + step - 1}]) failed at raw[{start + step - 1}]: "
+                                f"received {received:#04x}, computed {want:#04x}")
+        data += group
+    return SlaveFrame(bytes(data))
