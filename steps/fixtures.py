@@ -17,6 +17,10 @@ def pytest_addoption(parser: pytest.Parser) -> None:
     group.addoption("--sut", default=None, metavar="NAME",
                     help=f"SUT backend: one of {', '.join(BACKENDS)} or package.module:Class "
                          f"(default: ${ENV_VAR} or 'reference')")
+    group.addoption("--profile", action="append", default=[], metavar="NAME[,NAME]",
+                    help="run only scenarios of these train profiles (@profile:<name>); default: every "
+                         "profile the SUT declares. Scenarios of a profile the SUT does not declare are "
+                         "skipped with that reason")
     group.addoption("--whole-trace", choices=("failed", "all"), default="failed",
                     help="attach the whole SUT trace (gzipped CSV) to the report for failed scenarios only "
                          "(default) or for all; the timing diagram and key events are always attached")
@@ -39,6 +43,37 @@ def pytest_configure(config: pytest.Config) -> None:
         config.stash[_SUT_CLASS] = resolve(config.getoption("--sut"))
     except Exception as exc:
         raise pytest.UsageError(f"--sut: {exc}") from None
+
+
+def _profiles_of(item: pytest.Item) -> list[str]:
+    return [str(arg) for mark in item.iter_markers("profile") for arg in mark.args]
+
+
+def pytest_collection_modifyitems(config: pytest.Config, items: list[pytest.Item]) -> None:
+    sut_class = config.stash[_SUT_CLASS]
+    declared = tuple(sut_class.PROFILES)
+    wanted = [p.strip() for value in config.getoption("--profile") for p in value.split(",") if p.strip()]
+    unknown = [p for p in wanted if p not in declared]
+    if unknown:
+        raise pytest.UsageError(f"--profile {', '.join(unknown)}: the SUT {sut_class.__qualname__} declares "
+                                f"{', '.join(declared) or 'no profile'}")
+    keep, drop = [], []
+    for item in items:
+        profiles = _profiles_of(item)
+        if not profiles:
+            keep.append(item)
+        elif not any(p in declared for p in profiles):
+            item.add_marker(pytest.mark.skip(
+                reason=f"profile {', '.join(profiles)}: the SUT {sut_class.__qualname__} declares "
+                       f"{', '.join(declared) or 'no profile'}"))
+            keep.append(item)
+        elif wanted and not any(p in wanted for p in profiles):
+            drop.append(item)
+        else:
+            keep.append(item)
+    if drop:
+        config.hook.pytest_deselected(items=drop)
+        items[:] = keep
 
 
 @pytest.fixture(scope="session")

@@ -27,6 +27,9 @@ class TrainDriver(abc.ABC):
     """A train under test: inputs, faults, time, observations."""
 
     backend_name = "abstract"
+    # The train profiles this backend implements (features carry @profile:<name>); a scenario of a profile
+    # its SUT does not declare is skipped with that reason, never run and never passed.
+    PROFILES: tuple[str, ...] = ()
 
     def __init__(self) -> None:
         self._powered = False

@@ -17,9 +17,9 @@ from tests.variants import FAULTY, IN_BAND
 ROOT = Path(__file__).resolve().parents[1]
 
 
-def run_features(variant: type, *args: str) -> subprocess.CompletedProcess:
+def run_features(variant: type, *args: str, sut: str | None = None) -> subprocess.CompletedProcess:
     cmd = [sys.executable, "-m", "pytest", "features", "-q", "-p", "no:cacheprovider", "-p", "no:xdist",
-           f"--sut=tests.variants:{variant.__name__}", "-o", "addopts=--strict-markers", *args]
+           f"--sut={sut or f'tests.variants:{variant.__name__}'}", "-o", "addopts=--strict-markers", *args]
     env = dict(os.environ, PYTHONDONTWRITEBYTECODE="1")
     return subprocess.run(cmd, cwd=ROOT, capture_output=True, text=True, env=env, timeout=1500)
 

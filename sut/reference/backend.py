@@ -29,6 +29,7 @@ FRAME_KINDS = {name: code for code, name in KIND_NAMES.items()}
 
 class ReferenceTrain(TrainDriver):
     backend_name = "reference"
+    PROFILES = ("crh2",)
     TIMING: ClassVar[dict[str, Any]] = {}
     BEHAVIOUR: ClassVar[dict[str, Any]] = {}
 
