@@ -49,6 +49,8 @@ def _data_lane(name: str, changes: list[tuple[int, str]], slots: int) -> dict:
 
 
 def _label(ev: TraceEvent) -> str:
+    if ev.kind == "time.skip":
+        return f"{(ev['to'] - ev['frm']) / 3.6e9:.3g} h skipped"
     short = ev.source.replace(".MDM8", "").replace(".CPU3", "")
     if ev.kind.startswith("in."):
         return f"{ev['name']}={ev.get('value', ev.get('to'))}"
@@ -94,9 +96,13 @@ def wavejson(trace: Trace, start_us: int, end_us: int) -> dict | None:
             else:
                 wave.append("0")
         lanes.append({"name": "events", "wave": _runs(wave), "data": data})
+    # a slot the backend skipped (time.skip) shows traffic as unknown, not as silence
+    skipped = {i for ev in trace.select(kind="time.skip", since=start_us, until=end_us)
+               for i in range(slots) if ev["frm"] <= start_us + i * slot_us and start_us + (i + 1) * slot_us <= ev["to"]}
     for node, hits in sorted(senders.items()):
-        if len(hits) < slots:                      # a sender that never paused says nothing
-            lanes.append({"name": f"cmd {node}", "wave": _runs(["1" if i in hits else "0" for i in range(slots)])})
+        if len(hits) + len(skipped - hits) < slots:    # a sender that never paused says nothing
+            wave = ["1" if i in hits else "x" if i in skipped else "0" for i in range(slots)]
+            lanes.append({"name": f"cmd {node}", "wave": _runs(wave)})
     for name, changes in sorted(outputs.items()):
         if len({value for _, value in changes}) > 1:          # an output that never changed says nothing
             lanes.append(_data_lane(name, changes, slots))

@@ -37,3 +37,19 @@ def test_pruned_svg_keeps_every_shape_it_uses() -> None:
     used = set(re.findall(r'href="#([^"]+)"', svg))
     assert used <= defined
     assert len(svg) < 20_000
+
+
+def test_a_long_run_is_drawn_in_hours_and_skipped_stretches_are_unknown_not_silent() -> None:
+    hour = 3_600_000.0                                  # ms
+    trace = Trace([
+        ev(1000, "car1.CCU.sys1.MDM8", "cmd.tx", seq=1, system=1),
+        ev(3 * hour, "train", "time.skip", frm=round(1 * hour * 1000), to=round(3 * hour * 1000)),
+        ev(3 * hour + 10, "car1.CCU.sys1.MDM8", "cmd.tx", seq=2, system=1),
+        ev(5 * hour, "car4.LCU.MDM9", "fault.board", failed=True),
+    ])
+    diagram = wavejson(trace, 0, round(6 * hour * 1000))
+    lanes = {lane["name"]: lane for lane in diagram["signal"]}
+    assert "one slot = 10 min" in diagram["head"]["text"]
+    assert "2 h skipped" in lanes["events"]["data"]
+    wave = lanes["cmd car1.CCU.sys1"]["wave"]
+    assert wave[0] == "1" and wave[6] == "x" and "x" not in wave[18:]    # 1 h .. 3 h: 10-min slots 6..17
