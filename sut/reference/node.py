@@ -214,12 +214,12 @@ class RingNode:
         self.emit("token.pass", to=nxt.name, dir=direction, reversed=reversed_)
         self.train.ring.send(self, fr.token_frame(self.number, nxt.number), direction)
 
-    # -- frames in ------------------------------------------------------------------------------
     def counters(self) -> dict[str, int]:
         """Diagnostic counters as the node keeps them (TrainDriver.counters)."""
         return {"status sent": self.status_seq, "tokens received": self.tokens_received,
                 "token initialisations": self.token_inits, "frames discarded": self.frames_discarded}
 
+    # -- frames in ------------------------------------------------------------------------------
     def receive(self, frame: fr.Frame, direction: str, hops: int) -> None:
         fields = frame.fields if frame.ok else self._raw_fields(frame)
         if fields is None:
