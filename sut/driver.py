@@ -79,8 +79,7 @@ class TrainDriver(abc.ABC):
 
     def advance(self, us: int) -> None:
         """Let `us` microseconds of train time pass."""
-        if not isinstance(us, int) or us < 0:
-            raise OutOfRange("time step", us, "a whole number of microseconds >= 0")
+        self.check_us("time step", us, 0)
         self._require_power()
         self._advance(us)
 
@@ -101,8 +100,7 @@ class TrainDriver(abc.ABC):
         (the reference does: sut/reference/bulk.py), but then the trace must still hold the traffic of one
         steady sample after every `sample_every_us` and of the end of the run, and the `counters` must
         count everything, skipped or not. A rig simply waits."""
-        if not isinstance(us, int) or us < 0:
-            raise OutOfRange("time step", us, "a whole number of microseconds >= 0")
+        self.check_us("time step", us, 0)
         if sample_every_us is not None and (not isinstance(sample_every_us, int) or sample_every_us <= 0):
             raise OutOfRange("sample interval", sample_every_us, "a whole number of microseconds > 0")
         self._require_power()
@@ -276,6 +274,13 @@ class TrainDriver(abc.ABC):
         """Parameters shown as the report's environment."""
 
     # -- shared argument checks ----------------------------------------------------------------
+    @staticmethod
+    def check_us(what: str, value: Any, lo: int = 1) -> int:
+        """A duration or time step: a whole number of microseconds, at least `lo`."""
+        if isinstance(value, bool) or not isinstance(value, int) or value < lo:
+            raise OutOfRange(what, value, f"a whole number of microseconds >= {lo}")
+        return value
+
     @staticmethod
     def check_direction(direction: str) -> str:
         if direction not in DIRECTIONS:

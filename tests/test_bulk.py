@@ -8,6 +8,7 @@ from __future__ import annotations
 import pytest
 
 from sut.reference import bulk
+from steps.longrun import skips
 from sut.reference.backend import ReferenceTrain
 
 S = 1_000_000
@@ -45,7 +46,7 @@ def assert_same(exact: ReferenceTrain, fast: ReferenceTrain) -> None:
 
 
 def skipped(train: ReferenceTrain) -> list[tuple[int, int]]:
-    return [(ev["frm"], ev["to"]) for ev in train.trace.select(kind="time.skip")]
+    return skips(train.trace)
 
 
 def test_ten_minutes_with_faults_and_commands_agree_both_ways() -> None:

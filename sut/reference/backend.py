@@ -41,7 +41,6 @@ class ReferenceTrain(TrainDriver):
         self._cfg = (TrainConfig().with_timing(**self.TIMING).with_behaviour(**self.BEHAVIOUR)
                      .with_interlocks(**self.INTERLOCKS).with_environment(**self.ENVIRONMENT))
         self._train: Train | None = None
-        self._environment: TrainEnvironment | None = None
 
     # -- composition and life cycle ------------------------------------------------------------
     def configure(self, *, sets: int = 1, cars_per_set: int = 8) -> None:
@@ -244,9 +243,7 @@ class ReferenceTrain(TrainDriver):
     # -- environment (hardware/software class, TST-02) -----------------------------------------
     @property
     def environment(self) -> TrainEnvironment:
-        if self._environment is None:
-            self._environment = TrainEnvironment(self.train)
-        return self._environment
+        return self.train.environment
 
     def _env_supply(self, name: str) -> str:
         if name != TRAIN_SUPPLY and name not in self.train.supplies:
@@ -273,11 +270,7 @@ class ReferenceTrain(TrainDriver):
             raise OutOfRange(what, value, f"{lo:g} .. {hi:g} {unit}")
         return float(value)
 
-    @staticmethod
-    def _env_us(what: str, value: Any, lo: int = 1) -> int:
-        if isinstance(value, bool) or not isinstance(value, int) or value < lo:
-            raise OutOfRange(what, value, f"a whole number of microseconds >= {lo}")
-        return value
+    _env_us = staticmethod(TrainDriver.check_us)
 
     def rated_limits(self) -> dict[str, Any]:
         return self.environment.rated_limits()

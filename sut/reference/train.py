@@ -13,6 +13,7 @@ from sut.reference.ccu import Ccu, CcuSystem
 from sut.reference.config import TrainConfig
 from sut.reference.devices import LoopDevice
 from sut.reference.display import DisplayTable
+from sut.reference.environment import TrainEnvironment
 from sut.reference.kernel import Kernel
 from sut.reference.lcu import Lcu
 from sut.reference.node import RingNode
@@ -68,6 +69,7 @@ class Train:
         self.block_totals: dict[tuple[int, int], int] = {}
         self.vehicle = Vehicle(self)
         self.display = DisplayTable(self)
+        self.environment = TrainEnvironment(self)
 
     def _add_loop_devices(self, lcu: Lcu) -> None:
         periods = dict(self.cfg.timing.current_loop_periods_us)
