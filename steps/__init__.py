@@ -18,4 +18,5 @@ STEP_MODULES = [
     "steps.extra_records",
     "steps.environment",
     "steps.longrun",
+    "steps.metro",
 ]

@@ -83,7 +83,8 @@ def sut_class(request: pytest.FixtureRequest) -> type[TrainDriver]:
 
 @pytest.fixture
 def sut(sut_class: type[TrainDriver], request: pytest.FixtureRequest):
-    driver = sut_class()
+    declared = [p for p in _profiles_of(request.node) if p in sut_class.PROFILES]
+    driver = sut_class.open(declared[0] if declared else None)
     yield driver
     outcome = [getattr(request.node, f"_crh2_{phase}", None) for phase in ("setup", "call")]
     failed = any(r is not None and r.failed for r in outcome)

@@ -13,7 +13,7 @@ from sut.driver import TrainDriver
 from sut.errors import SutError, UnknownName
 
 BACKENDS: dict[str, tuple[str, str]] = {
-    "reference": ("sut.reference.backend", "ReferenceTrain"),
+    "reference": ("sut.reference.profiles", "Reference"),
 }
 
 ENV_VAR = "CRH2_SUT"
@@ -37,5 +37,5 @@ def resolve(spec: str | None) -> type[TrainDriver]:
     return cls
 
 
-def open_backend(spec: str | None = None) -> TrainDriver:
-    return resolve(spec)()
+def open_backend(spec: str | None = None, profile: str | None = None) -> TrainDriver:
+    return resolve(spec).open(profile)

@@ -4,7 +4,11 @@ Policy lives here (argument checking, time conversion, shutdown, context manager
 primitives. Steps talk to a `TrainDriver` and nothing else. What a backend does not model raises
 `NotSupported`; it never pretends.
 
-Names used at this interface (a rig adapter maps them onto its wiring):
+Only the life cycle, time, the trace and `describe` are abstract; the rest belongs to one train profile
+or another (`PROFILES`) and raises `NotSupported` where a backend does not implement it.
+
+Names used at this interface for a CRH2 train (a rig adapter maps them onto its wiring; metro names are
+in the metro section below):
 - ring nodes: `car1.CCU.sys1`, `car1.CCU.sys2`, `car3.LCU`, ...
 - boards: `<node>.CPU3`, `<node>.MDM8`, `car1.CCU.sys1.TXC`, `car3.LCU.MDM9`, `car3.LCU.RXC`,
   CPU groups `...TXC.group2`, `...RXC.group2`; the line `selfdiag`
@@ -17,7 +21,7 @@ from __future__ import annotations
 import abc
 from typing import Any
 
-from sut.errors import NotPoweredUp, NotSupported, OutOfRange
+from sut.errors import NotPoweredUp, NotSupported, OutOfRange, UnknownName
 from sut.trace import Trace
 
 DIRECTIONS = ("neutral", "forward", "reverse")
@@ -34,6 +38,18 @@ class TrainDriver(abc.ABC):
     def __init__(self) -> None:
         self._powered = False
         self._shut_down = False
+
+    @classmethod
+    def open(cls, profile: str | None = None) -> "TrainDriver":
+        """A driver for a train of `profile` (None: the first declared). A backend of several profiles
+        returns the driver of that profile's train (python-can's `Bus(interface=...)` picks the class)."""
+        if profile is not None and profile not in cls.PROFILES:
+            raise UnknownName(f"profile of {cls.__qualname__}", profile, cls.PROFILES)
+        return cls()
+
+    @property
+    def profile(self) -> str | None:
+        return self.PROFILES[0] if self.PROFILES else None
 
     # -- composition and life cycle ------------------------------------------------------------
     @abc.abstractmethod
@@ -67,6 +83,10 @@ class TrainDriver(abc.ABC):
 
     def __exit__(self, *exc: Any) -> None:
         self.shutdown()
+
+    def _unsupported(self, method: str) -> NotSupported:
+        return NotSupported(f"{self.backend_name} ({', '.join(self.PROFILES) or 'no profile'}) does not "
+                            f"implement {method}()")
 
     def _require_power(self) -> None:
         if not self._powered:
@@ -116,28 +136,28 @@ class TrainDriver(abc.ABC):
         raise NotSupported(f"{self.backend_name} keeps no diagnostic counters")
 
     # -- driver desk (CMD-05) ------------------------------------------------------------------
-    @abc.abstractmethod
-    def insert_key(self, cab: int) -> None: ...
+    def insert_key(self, cab: int) -> None:
+        raise self._unsupported("insert_key")
 
-    @abc.abstractmethod
-    def remove_key(self, cab: int) -> None: ...
+    def remove_key(self, cab: int) -> None:
+        raise self._unsupported("remove_key")
 
-    @abc.abstractmethod
-    def set_direction(self, cab: int, direction: str) -> None: ...
+    def set_direction(self, cab: int, direction: str) -> None:
+        raise self._unsupported("set_direction")
 
-    @abc.abstractmethod
-    def set_traction(self, cab: int, notch: int) -> None: ...
+    def set_traction(self, cab: int, notch: int) -> None:
+        raise self._unsupported("set_traction")
 
-    @abc.abstractmethod
-    def set_brake(self, cab: int, step: int) -> None: ...
+    def set_brake(self, cab: int, step: int) -> None:
+        raise self._unsupported("set_brake")
 
     # -- faults --------------------------------------------------------------------------------
-    @abc.abstractmethod
     def cut_link(self, a: str, b: str) -> None:
         """Cut the ring span between adjacent nodes a and b (both fibres)."""
+        raise self._unsupported("cut_link")
 
-    @abc.abstractmethod
-    def restore_link(self, a: str, b: str) -> None: ...
+    def restore_link(self, a: str, b: str) -> None:
+        raise self._unsupported("restore_link")
 
     def cut_ring(self) -> None:
         """Cut every span of the ring (NET-04: the whole ring down)."""
@@ -145,21 +165,21 @@ class TrainDriver(abc.ABC):
         for a, b in zip(nodes, nodes[1:] + nodes[:1]):
             self.cut_link(a, b)
 
-    @abc.abstractmethod
     def corrupt_frames(self, a: str, b: str, kind: str, count: int = 1) -> None:
         """Corrupt the next `count` frames of `kind` going from node a to node b (one bit flipped)."""
+        raise self._unsupported("corrupt_frames")
 
-    @abc.abstractmethod
-    def fail(self, board: str) -> None: ...
+    def fail(self, board: str) -> None:
+        raise self._unsupported("fail")
 
-    @abc.abstractmethod
-    def repair(self, board: str) -> None: ...
+    def repair(self, board: str) -> None:
+        raise self._unsupported("repair")
 
-    @abc.abstractmethod
-    def power_off(self, supply: str) -> None: ...
+    def power_off(self, supply: str) -> None:
+        raise self._unsupported("power_off")
 
-    @abc.abstractmethod
-    def restore_power(self, supply: str) -> None: ...
+    def restore_power(self, supply: str) -> None:
+        raise self._unsupported("restore_power")
 
     # -- the vehicle around the network (ILK): named inputs and outputs ------------------------
     def set_input(self, name: str, value: Any) -> None:
@@ -224,50 +244,75 @@ class TrainDriver(abc.ABC):
         """A unit's insulation resistance in MOhm, measured at 500 V DC."""
         raise NotSupported(f"{self.backend_name} cannot measure insulation")
 
+    # -- metro TCN (profile metro-tcn): dual-line buses and the units on them ----------------------
+    # Buses: `WTB`, `unit1.MVB` (cars 1-3), `unit2.MVB` (cars 4-6); lines `A` and `B`. Units: `car1.CCU`,
+    # `car2.VCU` .. `car5.VCU`, `car6.CCU`; MVB I/O modules `car1.IO1`, `car1.IO2`, `car6.IO1`, `car6.IO2`;
+    # devices `car2.VVVF`, `car3.BECU`, `car1.DU`, ... (`devices(car)`). `fail`/`repair` take any of them
+    # or a board (`car1.CCU.VMS`).
+    def cut_line(self, bus: str, line: str) -> None:
+        """Cut line A or B of a bus (its whole length): frames on that line are lost."""
+        raise self._unsupported("cut_line")
+
+    def restore_line(self, bus: str, line: str) -> None:
+        raise self._unsupported("restore_line")
+
+    def disturb_line(self, bus: str, line: str, count: int = 1) -> None:
+        """Flip one bit in each of the next `count` frames on one line of a bus."""
+        raise self._unsupported("disturb_line")
+
+    def tap_bus(self, bus: str) -> None:
+        """Attach an analyser to a bus: every frame on it appears in the trace as `bus.frame` with its
+        `type` (master/slave) and body as `hex` (between the delimiters, MSB first)."""
+        raise self._unsupported("tap_bus")
+
+    def records(self, unit: str) -> list[str]:
+        """The event records stored in a unit's memory (VMS), oldest first, as `t_ms origin: text`."""
+        raise self._unsupported("records")
+
     # -- traffic -------------------------------------------------------------------------------
-    @abc.abstractmethod
     def request_block_transfer(self, node: str, data: bytes) -> None:
         """Give `node` a record to send as block data (PRO-06)."""
+        raise self._unsupported("request_block_transfer")
 
-    @abc.abstractmethod
     def tap_link(self, a: str, b: str) -> None:
         """Attach an analyser to span a-b: frames crossing it appear in the trace as `link.tx`."""
+        raise self._unsupported("tap_link")
 
     # -- observations --------------------------------------------------------------------------
     @property
     @abc.abstractmethod
     def trace(self) -> Trace: ...
 
-    @abc.abstractmethod
     def ring_nodes(self) -> list[str]:
         """Node names in ring order (node number = position + 1)."""
+        raise self._unsupported("ring_nodes")
 
-    @abc.abstractmethod
     def boards(self, unit: str) -> list[str]:
         """Board names of a unit, e.g. boards('car3.LCU') -> ['CPU3', 'MDM8', 'MDM9', 'RXC']."""
+        raise self._unsupported("boards")
 
-    @abc.abstractmethod
-    def devices(self, car: int) -> list[str]: ...
+    def devices(self, car: int) -> list[str]:
+        raise self._unsupported("devices")
 
-    @abc.abstractmethod
     def token_holder(self) -> list[str]:
         """Nodes holding a token now (one per connected segment in a healthy protocol)."""
+        raise self._unsupported("token_holder")
 
-    @abc.abstractmethod
     def monitor(self, cab: int) -> dict[str, Any]:
         """The cab monitor: {'status': {node: age_us or None}, 'faults': [text, ...]}."""
+        raise self._unsupported("monitor")
 
-    @abc.abstractmethod
     def status_table(self, node: str) -> dict[str, int | None]:
         """Age in us of the last status data `node` received from every other node (None: never)."""
+        raise self._unsupported("status_table")
 
-    @abc.abstractmethod
-    def lamp(self, cab: int, name: str) -> bool: ...
+    def lamp(self, cab: int, name: str) -> bool:
+        raise self._unsupported("lamp")
 
-    @abc.abstractmethod
     def block_store(self, node: str) -> dict[str, list[bytes]]:
         """Complete records received as block data at `node`, by sending node, oldest first (236-byte
         blocks, so a record is padded with zero bytes to whole blocks)."""
+        raise self._unsupported("block_store")
 
     @abc.abstractmethod
     def describe(self) -> dict[str, str]:

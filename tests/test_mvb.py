@@ -7,7 +7,7 @@ import pytest
 from hypothesis import HealthCheck, given, settings
 from hypothesis import strategies as st
 
-from sut.reference.metro.mvb import (F_CODES, SLAVE_SIZES_BITS, DataClass, MasterFrame, MvbFrameError,
+from sut.codecs.mvb import (F_CODES, SLAVE_SIZES_BITS, DataClass, MasterFrame, MvbFrameError,
                                      SlaveFrame, check_sequence, data_class, decode_master, decode_slave,
                                      slave_size_bits)
 

@@ -2,8 +2,13 @@
 that reason (never run, never passed), and --profile picks among the declared ones."""
 from __future__ import annotations
 
+import pytest
+
+from sut.backends import open_backend
+from sut.errors import UnknownName
 from sut.reference.backend import ReferenceTrain
-from tests.test_faulty_variants import run_features
+from sut.reference.metro.backend import ReferenceMetro
+from tests.test_faulty_variants import ROOT, run_features
 
 
 class MetroOnly(ReferenceTrain):
@@ -20,9 +25,58 @@ def test_scenarios_of_an_undeclared_profile_are_skipped_with_the_reason() -> Non
 
 
 def test_an_undeclared_profile_on_the_command_line_is_a_usage_error() -> None:
-    result = run_features(ReferenceTrain, "--profile=metro-tcn", sut="reference")
+    result = run_features(ReferenceTrain, "--profile=atp", sut="reference")
     assert result.returncode == 4
-    assert "--profile metro-tcn: the SUT ReferenceTrain declares crh2" in result.stderr
+    assert "--profile atp: the SUT Reference declares crh2, metro-tcn" in result.stderr
+
+
+def test_the_reference_opens_the_train_of_each_profile() -> None:
+    assert isinstance(open_backend("reference", "crh2"), ReferenceTrain)
+    assert isinstance(open_backend("reference", "metro-tcn"), ReferenceMetro)
+    assert isinstance(open_backend("reference"), ReferenceTrain)
+    with pytest.raises(UnknownName, match="no profile of the reference named 'atp'"):
+        open_backend("reference", "atp")
+
+
+def test_profile_metro_runs_only_the_metro_scenarios() -> None:
+    metro = _scenarios_tagged("@profile:metro-tcn")
+    result = run_features(ReferenceMetro, "--profile=metro-tcn", "--co", sut="reference")
+    collected = [line for line in result.stdout.splitlines() if "::" in line]
+    assert len(collected) == metro and all("test_fnet2" in c or "test_fctl1" in c or "test_fdia04" in c
+                                           or "test_frec04" in c for c in collected), result.stdout[-1500:]
+
+
+def test_a_crh2_only_sut_skips_every_metro_scenario() -> None:
+    result = run_features(ReferenceTrain, "--item=F-NET-22", "-rs", sut="sut.reference.backend:ReferenceTrain")
+    summary = result.stdout.strip().splitlines()[-1]
+    assert result.returncode == 0 and "skipped" in summary and "passed" not in summary, summary
+    assert "profile metro-tcn: the SUT ReferenceTrain declares crh2" in result.stdout
+
+
+def _scenarios_tagged(tag: str) -> int:
+    """Cases (examples expanded) of the feature files carrying `tag`, counted from the files themselves."""
+    total = 0
+    for path in (ROOT / "features").rglob("*.feature"):
+        text = path.read_text(encoding="utf-8")
+        if tag not in text.splitlines()[0]:
+            continue
+        lines = text.splitlines()
+        total += sum(1 for line in lines if line.strip().startswith("Scenario:"))
+        rows, in_examples = 0, False
+        for line in lines:
+            stripped = line.strip()
+            if stripped.startswith("Examples:"):
+                in_examples, header = True, True
+                continue
+            if in_examples and stripped.startswith("|"):
+                if header:
+                    header = False
+                else:
+                    rows += 1
+            elif stripped:
+                in_examples = False
+        total += rows
+    return total
 
 
 def test_a_declared_profile_selects_its_scenarios() -> None:

@@ -1,0 +1,59 @@
+@item:F-CTL-15 @profile:metro-tcn @req:TST-04
+Feature: F-CTL-15 Active-cab CCU failure: the adjacent VCU takes over and the train runs on
+  Requirements: RED-05 (primary), TCN-08, TST-04.
+  The CCU of the cab with the key computes traction and brake from the master controller and sends them
+  over the MVB and, through the WTB, to the other unit. When it fails, the VCU next to it takes its MVB and
+  the control, and the train runs on without restriction: no VVVF or BECU changes what it applies. Bound
+  chosen by the suite: the VCU polls the MVB within 100 ms.
+
+  Background:
+    Given a 6-car metro train with its train control and diagnosis system
+    And the direction switch of cab 1 is at forward
+    And the direction switch of cab 6 is at forward
+
+  @req:RED-05 @req:TCN-08
+  Scenario Outline: F-CTL-15 The CCU of active cab <cab> fails: "<vcu>" takes over without restriction
+    Given the driver has inserted the key in cab <cab>
+    And the master controller of cab <cab> demands 60 % traction
+    And the train has been powered up for 1000 ms
+    When "<ccu>" fails
+    And 1000 ms pass
+    Then "<vcu>" is the master of "<bus>" within 100 ms and stays so
+    And no VVVF or BECU changes what it applies
+    And every VVVF applies 60 % traction
+    When the driver moves the master controller of cab <cab> to 80 % traction
+    And 200 ms pass
+    Then every VVVF applies 80 % traction within 100 ms
+    When the driver moves the master controller of cab <cab> to 70 % brake
+    And 200 ms pass
+    Then every BECU applies 70 % brake within 100 ms
+    And every VVVF applies 0 % traction
+
+    Examples:
+      | cab | ccu      | vcu      | bus       |
+      | 1   | car1.CCU | car2.VCU | unit1.MVB |
+      | 6   | car6.CCU | car5.VCU | unit2.MVB |
+
+  @req:RED-05
+  Scenario: F-CTL-15 The CCU of the cab without the key fails: its VCU relays the command, no change
+    Given the driver has inserted the key in cab 1
+    And the master controller of cab 1 demands 60 % traction
+    And the train has been powered up for 1000 ms
+    When "car6.CCU" fails
+    And 1000 ms pass
+    Then "car5.VCU" is the master of "unit2.MVB" within 100 ms and stays so
+    And no VVVF or BECU changes what it applies
+    And "car1.CCU" is the WTB master within 25 ms and stays so
+
+  @req:TCN-08
+  Scenario: F-CTL-15 The master controller reaches every VVVF and BECU in both units
+    Given the driver has inserted the key in cab 1
+    And the train has been powered up for 1000 ms
+    When the driver moves the master controller of cab 1 to 45 % traction
+    And 200 ms pass
+    Then every VVVF applies 45 % traction within 100 ms
+    And every BECU applies 0 % brake
+    When the driver moves the master controller of cab 1 to 100 % brake
+    And 200 ms pass
+    Then every BECU applies 100 % brake within 100 ms
+    And every VVVF applies 0 % traction

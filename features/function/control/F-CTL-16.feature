@@ -1,0 +1,51 @@
+@item:F-CTL-16 @profile:metro-tcn @req:TST-04
+Feature: F-CTL-16 Redundant MVB I/O modules: module 1 while its life signal is set, else module 2
+  Requirements: RED-07 (primary), TCN-07, TST-04.
+  The two I/O modules of a cab car read the same inputs (28 digital, 3 analogue). A wiring fault on one
+  module's master-controller input (AI1) shows which module's inputs drive the train.
+
+  Background:
+    Given a 6-car metro train with its train control and diagnosis system
+    And the driver has inserted the key in cab 1
+    And the direction switch of cab 1 is at forward
+    And the master controller of cab 1 demands 60 % traction
+
+  @req:RED-07
+  Scenario: F-CTL-16 Module 2 is not used while module 1 lives
+    Given a wiring fault holds input AI1 of "car1.IO2" at 3000
+    And the train has been powered up for 1000 ms
+    When 500 ms pass
+    Then every VVVF applies 60 % traction
+    And the cab 1 display does not show "inputs from car1.IO2"
+
+  @req:RED-07
+  Scenario: F-CTL-16 Module 1's life signal drops: the inputs of module 2 are used
+    Given a wiring fault holds input AI1 of "car1.IO2" at 3000
+    And the train has been powered up for 1000 ms
+    When "car1.IO1" fails
+    And 500 ms pass
+    Then every VVVF applies 30 % traction within 100 ms
+    And the cab 1 display shows "inputs from car1.IO2"
+    And "car6.CCU" holds a record "inputs from car1.IO2"
+
+  @req:RED-07
+  Scenario: F-CTL-16 With module 2's inputs the train follows the master controller
+    Given the train has been powered up for 1000 ms
+    When "car1.IO1" fails
+    And 100 ms pass
+    And the driver moves the master controller of cab 1 to 85 % traction
+    And 200 ms pass
+    Then every VVVF applies 85 % traction within 100 ms
+
+  @req:TCN-07
+  Scenario Outline: F-CTL-16 The I/O modules read digital inputs DI01-DI28 and analogue inputs AI1-AI3
+    Given a wiring fault holds input <channel> of "car1.IO2" at 1
+    And the train has been powered up for 100 ms
+    When 100 ms pass
+    Then every VVVF applies 60 % traction
+
+    Examples:
+      | channel |
+      | DI01    |
+      | DI28    |
+      | AI3     |

@@ -1,0 +1,42 @@
+@item:F-REC-04 @profile:metro-tcn @req:TST-04
+Feature: F-REC-04 CCU-CCU record backup: events reach both CCU memories over the WTB as acknowledged messages
+  Requirements: RED-05 (primary), RED-04, TCN-06, TCN-08, TST-04.
+  An event is recorded in the memory (VMS) of both CCUs; either CCU failing leaves recording in the
+  other. Events cross the WTB as numbered messages the destination acknowledges, so a lost telegram is
+  sent again and a record is stored exactly once.
+
+  Background:
+    Given a 6-car metro train with its train control and diagnosis system
+    And the driver has inserted the key in cab 1
+    And the train has been powered up for 1000 ms
+
+  @req:RED-05 @req:TCN-08
+  Scenario: F-REC-04 An event of unit 2 is recorded in both CCUs
+    When "car4.VVVF" fails
+    And 1000 ms pass
+    Then "car6.CCU" holds a record "car4.VVVF: no status data"
+    And "car1.CCU" holds a record "car4.VVVF: no status data"
+
+  @req:RED-05 @req:RED-04
+  Scenario Outline: F-REC-04 With "<failed>" failed, "<other>" still records the events of both units
+    Given "<failed>" has failed
+    When 500 ms pass
+    And "car2.VVVF" fails
+    And "car5.VVVF" fails
+    And 1000 ms pass
+    Then "<other>" holds a record "car2.VVVF: no status data"
+    And "<other>" holds a record "car5.VVVF: no status data"
+
+    Examples:
+      | failed       | other    |
+      | car1.CCU.VMS | car6.CCU |
+      | car6.CCU     | car1.CCU |
+      | car1.CCU     | car6.CCU |
+
+  @req:TCN-06
+  Scenario: F-REC-04 A record whose telegram is lost on both lines is sent again and stored once
+    When "car4.VVVF" fails
+    And 80 ms pass
+    And the next 12 frames on both lines of "WTB" are disturbed
+    And 1000 ms pass
+    Then "car1.CCU" holds the record "car4.VVVF: no status data" exactly once

@@ -1,0 +1,55 @@
+@item:F-NET-25 @profile:metro-tcn @req:TST-04
+Feature: F-NET-25 Train network failure: brake to a stop, then hard-wired emergency operation
+  Requirements: TCN-09 (primary), TST-04.
+  Decision (sut/reference/DECISIONS.md "Metro TCDS"): the article allows braking to a stop or emergency
+  operation; a train whose network has failed is not under control, so it is first braked to a stop, and
+  hard-wired emergency operation is taken only at standstill. Bound chosen by the suite: the brake is
+  applied within 500 ms of the loss.
+
+  Background:
+    Given a 6-car metro train with its train control and diagnosis system
+    And the driver has inserted the key in cab 1
+    And the direction switch of cab 1 is at forward
+    And the master controller of cab 1 demands 60 % traction
+    And the train runs at 30 km/h
+    And the train has been powered up for 1000 ms
+
+  @req:TCN-09
+  Scenario: F-NET-25 Both MVB lines of unit 1 cut: every VVVF of the unit stops pulling, every BECU brakes
+    When line A of "unit1.MVB" is cut
+    And line B of "unit1.MVB" is cut
+    And 1000 ms pass
+    Then every BECU applies 100 % brake within 500 ms
+    And every VVVF applies 0 % traction
+
+  @req:TCN-09
+  Scenario: F-NET-25 Unit 1 lost entirely: the train brakes to a stop, then runs in emergency operation
+    When "car1.CCU", "car2.VCU", "car3.VCU" fail together
+    And 12 s pass
+    Then every VVVF applies 0 % traction
+    And every BECU applies 100 % brake
+    And the train has come to a stop
+    And the cab 6 display shows the mode "train network failure"
+    And "car6.CCU" holds a record "train network failure: braking to a stop"
+    When the driver turns the emergency-operation switch on
+    And 100 ms pass
+    Then every VVVF applies 60 % traction within 50 ms
+    And every BECU applies 0 % brake
+    And the cab 6 display shows the mode "emergency operation"
+
+  @req:TCN-09
+  Scenario: F-NET-25 Emergency operation is not taken at speed
+    When "car1.CCU", "car2.VCU", "car3.VCU" fail together
+    And 1000 ms pass
+    And the driver turns the emergency-operation switch on
+    And 500 ms pass
+    Then every VVVF applies 0 % traction
+    And every BECU applies 100 % brake
+    And the cab 6 display shows the mode "train network failure"
+
+  @req:TCN-09
+  Scenario: F-NET-25 A healthy network does not brake
+    When 3 s pass
+    Then every VVVF applies 60 % traction
+    And every BECU applies 0 % brake
+    And the cab 1 display shows the mode "normal"

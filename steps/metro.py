@@ -1,0 +1,354 @@
+"""Steps of the metro TCN profile (TCN-01..10, RED-04..07): WTB and MVB, their masters and lines, the I/O
+modules, records and the display. Bus traffic is read from the trace as a bus analyser logs it:
+`wtb.msg` / `mvb.msg` per poll (master, polled node or port, the line it came on, lost or not), and with an
+analyser attached `bus.frame` (each frame's body in hex), decoded here with the suite's own IEC 61375-3-1
+codec (sut/codecs/mvb.py), never with the SUT's.
+"""
+from __future__ import annotations
+
+import re
+
+from pytest_bdd import given, parsers, then, when
+
+from sut.codecs import mvb
+from sut.driver import TrainDriver
+from steps.analysis import describe, intervals, ms, us
+
+QUOTED = re.compile(r'"([^"]+)"')
+
+
+def _names(text: str) -> list[str]:
+    names = QUOTED.findall(text)
+    assert names, f"no quoted names in {text!r}"
+    return names
+
+
+def _sinks(sut: TrainDriver, kind: str) -> list[str]:
+    found = [d for car in range(1, 7) for d in sut.devices(car) if d.endswith(f".{kind}")]
+    assert found, f"the train has no {kind}"
+    return found
+
+
+def _polls(sut: TrainDriver, bus: str, since: int) -> list:
+    kind = "wtb.msg" if bus == "WTB" else "mvb.msg"
+    return sut.trace.select(kind=kind, source=bus, since=since)
+
+
+# -- composition and desk -------------------------------------------------------------------------
+@given("a 6-car metro train with its train control and diagnosis system")
+def _(sut: TrainDriver) -> None:
+    sut.configure(sets=1, cars_per_set=6)
+
+
+@given(parsers.parse("the master controller of cab {cab:d} demands {pct:d} % traction"))
+@when(parsers.parse("the driver moves the master controller of cab {cab:d} to {pct:d} % traction"),
+      target_fixture="t_action")
+def _(sut: TrainDriver, cab: int, pct: int) -> int:
+    sut.set_brake(cab, 0)
+    sut.set_traction(cab, pct)
+    return sut.now_us
+
+
+@when(parsers.parse("the driver moves the master controller of cab {cab:d} to {pct:d} % brake"),
+      target_fixture="t_action")
+def _(sut: TrainDriver, cab: int, pct: int) -> int:
+    sut.set_traction(cab, 0)
+    sut.set_brake(cab, pct)
+    return sut.now_us
+
+
+@when("the driver turns the emergency-operation switch on", target_fixture="t_action")
+def _(sut: TrainDriver) -> int:
+    sut.set_input("emergency operation", True)
+    return sut.now_us
+
+
+# -- faults ---------------------------------------------------------------------------------------
+@given(parsers.parse('"{unit}" has failed'))
+@when(parsers.parse('"{unit}" fails'), target_fixture="t_action")
+def _(sut: TrainDriver, unit: str) -> int:
+    sut.fail(unit)
+    return sut.now_us
+
+
+@when(parsers.parse('{units} fail together'), target_fixture="t_action")
+def _(sut: TrainDriver, units: str) -> int:
+    for unit in _names(units):
+        sut.fail(unit)
+    return sut.now_us
+
+
+@when(parsers.parse('"{unit}" is repaired'), target_fixture="t_action")
+def _(sut: TrainDriver, unit: str) -> int:
+    sut.repair(unit)
+    return sut.now_us
+
+
+@given(parsers.parse('line {line:w} of "{bus}" is cut'))
+@when(parsers.parse('line {line:w} of "{bus}" is cut'), target_fixture="t_action")
+def _(sut: TrainDriver, line: str, bus: str) -> int:
+    sut.cut_line(bus, line)
+    return sut.now_us
+
+
+@when(parsers.parse('line {line:w} of "{bus}" is restored'), target_fixture="t_action")
+def _(sut: TrainDriver, line: str, bus: str) -> int:
+    sut.restore_line(bus, line)
+    return sut.now_us
+
+
+@when(parsers.parse('the next {count:d} frames on line {line:w} of "{bus}" are disturbed'), target_fixture="t_action")
+def _(sut: TrainDriver, count: int, line: str, bus: str) -> int:
+    sut.disturb_line(bus, line, count)
+    return sut.now_us
+
+
+@when(parsers.parse('the next {count:d} frames on both lines of "{bus}" are disturbed'), target_fixture="t_action")
+def _(sut: TrainDriver, count: int, bus: str) -> int:
+    for line in "AB":
+        sut.disturb_line(bus, line, count)
+    return sut.now_us
+
+
+@given(parsers.parse('a wiring fault holds input {channel:w} of "{module}" at {value:d}'))
+@when(parsers.parse('a wiring fault comes to hold input {channel:w} of "{module}" at {value:d}'),
+      target_fixture="t_action")
+def _(sut: TrainDriver, channel: str, module: str, value: int) -> int:
+    sut.set_input(f"{module}.{channel}", value)
+    return sut.now_us
+
+
+@given(parsers.parse('an analyser is attached to "{bus}"'))
+def _(sut: TrainDriver, bus: str) -> None:
+    sut.tap_bus(bus)
+
+
+# -- masters ------------------------------------------------------------------------------------------
+@then(parsers.parse('"{node}" is the WTB master within {bound:g} ms and stays so'))
+def _(sut: TrainDriver, t_action: int, node: str, bound: float) -> None:
+    polls = _polls(sut, "WTB", t_action)
+    first = next((p for p in polls if p["master"] == node), None)
+    assert first is not None, f"{node} sent no WTB master frame after {ms(t_action)}; masters seen: " \
+                              f"{sorted({p['master'] for p in polls}) or 'none'}"
+    assert first.t - t_action <= us(bound), f"{node} became WTB master after {ms(first.t - t_action)}, > {bound} ms"
+    others = [p for p in polls if p.t >= first.t and p["master"] != node]
+    assert not others, f"after {node} took over, others sent WTB master frames: {describe(others)}"
+    assert polls[-1].t >= sut.now_us - 2 * 25_000, f"{node} stopped sending WTB master frames at {ms(polls[-1].t)}"
+
+
+@then(parsers.parse('no WTB master frame comes from {nodes}'))
+def _(sut: TrainDriver, t_action: int, nodes: str) -> None:
+    banned = set(_names(nodes))
+    bad = [p for p in sut.trace.select(kind="wtb.msg", source="WTB") if p["master"] in banned]
+    assert not bad, f"WTB master frames from {sorted({p['master'] for p in bad})}: {describe(bad)}"
+
+
+@then(parsers.parse("the WTB falls silent within {bound:g} ms"))
+def _(sut: TrainDriver, t_action: int, bound: float) -> None:
+    late = _polls(sut, "WTB", t_action + us(bound))
+    assert not late, f"the WTB still carries frames {bound} ms after the fault: {describe(late)}"
+
+
+@then(parsers.parse("the WTB master polls every node at least every {bound:g} ms"))
+def _(sut: TrainDriver, t_action: int, bound: float) -> None:
+    polls = _polls(sut, "WTB", t_action)
+    nodes = sorted({p["polled"] for p in polls})
+    assert len(nodes) >= 6, f"the WTB master polled only {nodes}"
+    for node in nodes:
+        times = [p.t for p in polls if p["polled"] == node]
+        assert len(times) >= 3, f"{node} polled only {len(times)} times"
+        worst = max(intervals([t_action, *times, sut.now_us]))
+        assert worst <= us(bound), f"{node} went {ms(worst)} without a WTB poll (bound {bound} ms)"
+
+
+@then(parsers.parse('"{node}" is the master of "{bus}" within {bound:g} ms and stays so'))
+def _(sut: TrainDriver, t_action: int, node: str, bus: str, bound: float) -> None:
+    polls = _polls(sut, bus, t_action)
+    first = next((p for p in polls if p["master"] == node), None)
+    assert first is not None, f"{node} sent no master frame on {bus}; masters seen: " \
+                              f"{sorted({p['master'] for p in polls}) or 'none'}"
+    assert first.t - t_action <= us(bound), f"{node} became master of {bus} after {ms(first.t - t_action)}"
+    others = [p for p in polls if p.t >= first.t and p["master"] != node]
+    assert not others, f"after {node} took {bus}, others polled it: {describe(others)}"
+
+
+@then(parsers.parse('the master frames of "{node}" on "{bus}" are never more than {bound:g} ms apart'))
+def _(sut: TrainDriver, t_action: int, node: str, bus: str, bound: float) -> None:
+    times = [p.t for p in _polls(sut, bus, t_action) if p["master"] == node]
+    assert len(times) >= 10, f"{node} sent only {len(times)} master frames on {bus}"
+    worst = max(intervals([t_action, *times, sut.now_us]))
+    assert worst <= us(bound), f"{node} left {bus} without a master frame for {ms(worst)} (bound {bound} ms)"
+
+
+@then(parsers.parse('every device of {cars} answers the status polls of "{node}" on "{bus}"'))
+def _(sut: TrainDriver, t_action: int, cars: str, node: str, bus: str) -> None:
+    polls = [p for p in _polls(sut, bus, t_action) if p["master"] == node and mvb.data_class(p["f_code"])
+             is mvb.DataClass.SUPERVISORY]
+    assert polls, f"{node} sent no device status request on {bus}"
+    answered = {p["responder"] for p in polls if p["responder"]}
+    wanted = {d for c in map(int, re.findall(r"\d+", cars)) for d in sut.devices(c)
+              if not d.endswith((".CCU", ".VCU", ".IO1", ".IO2"))}
+    missing = wanted - answered
+    assert not missing, f"no status data from {sorted(missing)} on {bus}"
+    strangers = answered - wanted
+    assert not strangers, f"{bus} carries status data of devices of other cars: {sorted(strangers)}"
+
+
+# -- lines (RED-06) -------------------------------------------------------------------------------------
+@then(parsers.parse('no message on "{bus}" is lost'))
+def _(sut: TrainDriver, t_action: int, bus: str) -> None:
+    polls = _polls(sut, bus, t_action)
+    assert len(polls) >= 10, f"only {len(polls)} messages on {bus} since {ms(t_action)}"
+    lost = [p for p in polls if p["lost"]]
+    assert not lost, f"{len(lost)} of {len(polls)} messages on {bus} lost: {describe(lost)}"
+
+
+@then(parsers.parse('the receivers on "{bus}" take line {line:w}'))
+def _(sut: TrainDriver, t_action: int, bus: str, line: str) -> None:
+    polls = [p for p in _polls(sut, bus, t_action) if p["line"] is not None]
+    assert polls, f"nothing came on {bus}"
+    assert polls[-1]["line"] == line, f"the last frame on {bus} was taken from line {polls[-1]['line']}"
+
+
+@then(parsers.parse('frames from line {line:w} of "{bus}" that fail their check are discarded'))
+def _(sut: TrainDriver, t_action: int, line: str, bus: str) -> None:
+    discards = sut.trace.select(kind="frame.discard", source=bus, since=t_action)
+    assert any(d["error"].startswith(f"line {line}") for d in discards), \
+        f"no discarded frame from line {line} of {bus}"
+
+
+# -- traction and brake at the VVVF and BECU -----------------------------------------------------------
+@then(parsers.parse("every VVVF applies {pct:g} % traction"))
+def _(sut: TrainDriver, pct: float) -> None:
+    wrong = {d: sut.reading(f"{d}.traction") for d in _sinks(sut, "VVVF")}
+    wrong = {d: v for d, v in wrong.items() if v != pct}
+    assert not wrong, f"VVVF traction other than {pct} %: {wrong}"
+
+
+@then(parsers.parse("every BECU applies {pct:g} % brake"))
+def _(sut: TrainDriver, pct: float) -> None:
+    wrong = {d: sut.reading(f"{d}.brake") for d in _sinks(sut, "BECU")}
+    wrong = {d: v for d, v in wrong.items() if v != pct}
+    assert not wrong, f"BECU brake other than {pct} %: {wrong}"
+
+
+@then(parsers.parse("every VVVF applies {pct:g} % traction within {bound:g} ms"))
+def _(sut: TrainDriver, t_action: int, pct: float, bound: float) -> None:
+    _reached(sut, "VVVF", pct, t_action, bound)
+
+
+@then(parsers.parse("every BECU applies {pct:g} % brake within {bound:g} ms"))
+def _(sut: TrainDriver, t_action: int, pct: float, bound: float) -> None:
+    _reached(sut, "BECU", pct, t_action, bound)
+
+
+def _reached(sut: TrainDriver, kind: str, pct: float, t_action: int, bound: float) -> None:
+    for device in _sinks(sut, kind):
+        change = sut.trace.first(kind="pd.change", source=device, since=t_action, value=pct)
+        quantity = "traction" if kind == "VVVF" else "brake"
+        assert change is not None, f"{device} never applied {pct} % {quantity} after {ms(t_action)}; " \
+                                   f"it applies {sut.reading(f'{device}.{quantity}')} %"
+        assert change.t - t_action <= us(bound), f"{device} applied {pct} % after {ms(change.t - t_action)}"
+        assert sut.reading(f"{device}.{quantity}") == pct, f"{device} no longer applies {pct} % {quantity}"
+
+
+@then("no VVVF or BECU changes what it applies")
+def _(sut: TrainDriver, t_action: int) -> None:
+    changes = [e for e in sut.trace.select(kind="pd.change", since=t_action)
+               if e.source.endswith((".VVVF", ".BECU"))]
+    assert not changes, f"traction or brake changed after {ms(t_action)}: {describe(changes)}"
+
+
+@then("the train has come to a stop")
+def _(sut: TrainDriver) -> None:
+    assert sut.reading("speed") == 0, f"the train still runs at {sut.reading('speed')} km/h"
+
+
+# -- records and the display ----------------------------------------------------------------------------
+@then(parsers.parse('"{unit}" holds a record "{text}"'))
+def _(sut: TrainDriver, unit: str, text: str) -> None:
+    records = sut.records(unit)
+    assert any(text in r for r in records), f"{unit} holds no record with {text!r}; it holds {records}"
+
+
+@then(parsers.parse('"{unit}" holds the record "{text}" exactly once'))
+def _(sut: TrainDriver, unit: str, text: str) -> None:
+    found = [r for r in sut.records(unit) if text in r]
+    assert len(found) == 1, f"{unit} holds {len(found)} records with {text!r}: {found}"
+
+
+@then(parsers.parse('"{unit}" holds no record'))
+def _(sut: TrainDriver, unit: str) -> None:
+    records = sut.records(unit)
+    assert not records, f"{unit} stores records although it has no memory board: {records}"
+
+
+@then(parsers.parse('the cab {cab:d} display shows "{text}"'))
+def _(sut: TrainDriver, cab: int, text: str) -> None:
+    shown = sut.monitor(cab)
+    assert any(text in f for f in shown["faults"]), f"the cab {cab} display does not show {text!r}: {shown}"
+
+
+@then(parsers.parse('the cab {cab:d} display does not show "{text}"'))
+def _(sut: TrainDriver, cab: int, text: str) -> None:
+    shown = sut.monitor(cab)
+    assert not any(text in f for f in shown["faults"]), f"the cab {cab} display shows {text!r}: {shown}"
+
+
+@then(parsers.parse('the cab {cab:d} display shows the mode "{mode}"'))
+def _(sut: TrainDriver, cab: int, mode: str) -> None:
+    shown = sut.monitor(cab)
+    assert shown["mode"] == mode, f"the cab {cab} display shows mode {shown['mode']!r}, not {mode!r}"
+
+
+# -- frames on the wire (TCN-05, TCN-06, TCN-10) ----------------------------------------------------------
+def _frames(sut: TrainDriver, bus: str, since: int) -> list[tuple[mvb.MasterFrame, mvb.SlaveFrame | None]]:
+    """Pair each master frame with the slave frame that follows it, decoding both with the suite's codec."""
+    out: list = []
+    for ev in sut.trace.select(kind="bus.frame", source=bus, since=since):
+        raw = bytes.fromhex(ev["hex"])
+        if ev["type"] == "master":
+            try:
+                out.append([mvb.decode_master(raw), None])
+            except mvb.MvbFrameError as exc:
+                raise AssertionError(f"{ms(ev.t)}: a master frame on {bus} is not IEC 61375-3-1: {exc}") from None
+        else:
+            assert out and out[-1][1] is None, f"{ms(ev.t)}: a slave frame on {bus} without a master frame"
+            size = mvb.slave_size_bits(out[-1][0].f_code)
+            try:
+                out[-1][1] = mvb.decode_slave(raw, size)
+            except mvb.MvbFrameError as exc:
+                raise AssertionError(f"{ms(ev.t)}: the {size}-bit slave frame answering F_code "
+                                     f"{out[-1][0].f_code} on {bus} is not IEC 61375-3-1: {exc}") from None
+    return [tuple(pair) for pair in out]
+
+
+@then(parsers.parse('every frame on "{bus}" decodes as an IEC 61375-3-1 MVB frame of the size its F_code asks'))
+def _(sut: TrainDriver, t_action: int, bus: str) -> None:
+    pairs = _frames(sut, bus, t_action)
+    answered = [(m, s) for m, s in pairs if s is not None]
+    assert len(answered) >= 20, f"only {len(answered)} answered master frames on {bus}"
+    sizes = {s.size_bits for _, s in answered}
+    assert {16, 64, 128} <= sizes, f"the frames on {bus} had only the sizes {sorted(sizes)}"
+
+
+@then(parsers.parse('the master frames on "{bus}" ask for {classes}'))
+def _(sut: TrainDriver, t_action: int, bus: str, classes: str) -> None:
+    seen = {mvb.data_class(m.f_code).value for m, _ in _frames(sut, bus, t_action)}
+    wanted = {c.strip() for c in re.split(r",| and ", classes) if c.strip()}
+    assert wanted <= seen, f"{bus} carried {sorted(seen)}; missing {sorted(wanted - seen)}"
+
+
+@then(parsers.parse('every process-data port on "{bus}" is polled at one fixed period of at most {bound:g} ms'))
+def _(sut: TrainDriver, t_action: int, bus: str, bound: float) -> None:
+    by_port: dict[tuple[int, int], list[int]] = {}
+    for p in _polls(sut, bus, t_action):
+        if mvb.data_class(p["f_code"]) is mvb.DataClass.PROCESS:
+            by_port.setdefault((p["f_code"], p["address"]), []).append(p.t)
+    assert by_port, f"no process data on {bus}"
+    for (f_code, address), times in sorted(by_port.items()):
+        gaps = intervals(times)
+        assert len(gaps) >= 5, f"port {address:#05x} polled only {len(times)} times"
+        assert max(gaps) - min(gaps) <= 100, f"port {address:#05x} is not polled cyclically: gaps " \
+                                              f"{ms(min(gaps))}..{ms(max(gaps))}"
+        assert max(gaps) <= us(bound), f"port {address:#05x} polled every {ms(max(gaps))} (bound {bound} ms)"

@@ -1,0 +1,97 @@
+"""What the metro TCDS puts in its frames: MVB port layouts and the WTB telegram.
+
+MVB (TCN-05/06/07): process-data ports are read by polling a logical address with F_code 0-4; the slave
+frame carries the port. Device status (F_code 15) is supervisory data, 16 bits.
+- MVB I/O module port, F_code 3 (128 bits, TCN-07): DI01-DI28 in a 32-bit word, AI1-AI3 as 16-bit values,
+  the 16-bit life signal, 32 bits spare.
+- train command port, F_code 2 (64 bits): mode, direction, traction and brake in 0.01 %, a sequence number.
+- device status word (F_code 15): bit 0 device ready, bit 1 fault.
+
+WTB: HDLC frames with the CRC-16/X-25 frame check sequence; the telegram inside is JSON (the model's
+choice: the WTB link layer is IEC 61375-2-1's, the application telegram is vendor-specific).
+"""
+from __future__ import annotations
+
+import json
+import struct
+from dataclasses import dataclass
+
+from sut.reference.frames import crc16_x25
+from sut.reference.metro.bus import FrameError
+
+IO_PORT_F_CODE = 3
+COMMAND_F_CODE = 2
+DEVICE_STATUS_F_CODE = 15
+COMMAND_ADDRESS = 0x010
+IO_ADDRESSES = {"IO1": 0x0A1, "IO2": 0x0A2}
+
+DI_KEY, DI_FORWARD, DI_REVERSE = 1, 2, 3          # DI01..DI03: cab key, direction switch
+AI_TRACTION, AI_BRAKE = 1, 2                       # AI1, AI2: master controller, 0.01 % steps
+
+MODES = ("normal", "no cab", "network failure")
+DIRECTIONS = ("neutral", "forward", "reverse")
+
+_IO = struct.Struct(">IHHHH4x")
+_CMD = struct.Struct(">BBHHH")
+
+READY, FAULT = 0x0001, 0x0002
+
+
+@dataclass(frozen=True)
+class IoPort:
+    di: int          # DI01 is bit 0
+    ai: tuple[int, int, int]
+    life: int
+
+    def encode(self) -> bytes:
+        return _IO.pack(self.di, *self.ai, self.life)
+
+    @classmethod
+    def decode(cls, data: bytes) -> "IoPort":
+        di, a1, a2, a3, life = _IO.unpack(data)
+        return cls(di, (a1, a2, a3), life)
+
+    def input(self, n: int) -> bool:
+        return bool(self.di >> (n - 1) & 1)
+
+
+@dataclass(frozen=True)
+class Command:
+    mode: str
+    direction: str
+    traction: int     # 0.01 %
+    brake: int        # 0.01 %
+    seq: int
+
+    def encode(self) -> bytes:
+        return _CMD.pack(MODES.index(self.mode), DIRECTIONS.index(self.direction), self.traction, self.brake,
+                         self.seq & 0xFFFF)
+
+    @classmethod
+    def decode(cls, data: bytes) -> "Command":
+        mode, direction, traction, brake, seq = _CMD.unpack(data)
+        if mode >= len(MODES) or direction >= len(DIRECTIONS) or traction > 10_000 or brake > 10_000:
+            raise FrameError(f"train command port holds no valid command: {data.hex()}")
+        return cls(MODES[mode], DIRECTIONS[direction], traction, brake, seq)
+
+    def as_json(self) -> list:
+        return [self.mode, self.direction, self.traction, self.brake, self.seq]
+
+    @classmethod
+    def from_json(cls, value: list) -> "Command":
+        return cls(*value)
+
+
+def wtb_encode(telegram: dict) -> bytes:
+    body = json.dumps(telegram, separators=(",", ":"), sort_keys=True).encode()
+    return body + crc16_x25(body).to_bytes(2, "little")
+
+
+def wtb_decode(wire: bytes) -> dict:
+    if len(wire) < 3:
+        raise FrameError(f"WTB frame of {len(wire)} bytes is shorter than its frame check sequence")
+    body, fcs = wire[:-2], int.from_bytes(wire[-2:], "little")
+    want = crc16_x25(body)
+    if fcs != want:
+        raise FrameError(f"WTB frame check sequence failed: received {fcs:#06x}, computed {want:#06x}")
+    return json.loads(body)

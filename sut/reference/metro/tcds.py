@@ -1,0 +1,546 @@
+"""The metro train control and diagnosis system (seed 002): 6 cars, WTB between the units, one MVB per unit.
+
+Read with requirements.md TCN-01..10, RED-04..07 and DECISIONS.md "Metro TCDS". In one sentence each:
+- every MVB basic period (1 ms) the unit's bus master polls: the cab's two I/O modules and the train command
+  port every 2 ms, and one device's status (supervisory data) per period;
+- every WTB cycle (25 ms) the WTB master polls each node; a node's telegram carries the train command (from
+  the unit whose cab is active), its events as numbered messages, and its acknowledgements;
+- the MVB master and the WTB master are taken over by rank after silence (MVB: CCU, adjacent VCU, far VCU;
+  WTB: car 1 CCU, car 2 VCU, car 3 VCU); the unit whose cab is active computes the train command;
+- events go to every CCU memory (VMS) over the WTB; VCUs store nothing;
+- VVVF and BECU brake the train to a stop when the train command is lost; at standstill the driver may
+  switch to hard-wired emergency operation.
+"""
+from __future__ import annotations
+
+from typing import Any, Callable
+
+from sut.codecs.mvb import MasterFrame, SlaveFrame, check_sequence, decode_master, decode_slave, slave_size_bits
+from sut.reference.kernel import Kernel
+from sut.reference.metro import ports
+from sut.reference.metro.bus import LINES, DualLineBus, FrameError
+from sut.reference.metro.config import MetroConfig
+from sut.reference.metro.ports import Command, IoPort
+from sut.reference.metro.units import (CAB_CARS, CAB_DEVICES, MOTOR_DEVICES, UNIT_CARS, ControlUnit, Device,
+                                       IoModule, Record, unit_of)
+from sut.trace import TraceEvent
+
+FULL = 10_000          # 100 % in 0.01 % steps
+MASTER_BITS = 33       # start delimiter 9 + F_code/address 16 + check 8
+SLAVE_OVERHEAD_BITS = 11
+REPLY_GAP_US = 4
+WTB_OVERHEAD_BITS = 64   # HDLC flags, address, control, preamble
+
+
+def _one_check_encode(data: bytes) -> bytes:
+    # The faulty layout of a variant: one check byte at the end of a long frame (TCN-05 wants one per 64 bits).
+    return data + bytes([check_sequence(data)])
+
+
+def _one_check_decode(raw: bytes, size_bits: int) -> SlaveFrame:
+    if len(raw) != size_bits // 8 + 1 or raw[-1] != check_sequence(raw[:-1]):
+        raise FrameError("slave frame check failed")
+    return SlaveFrame(raw[:-1])
+
+
+class MvbSegment:
+    """One unit's MVB: its bus, its master and what the master has read."""
+
+    def __init__(self, unit: int, bus: DualLineBus, ranks: tuple[str, ...], devices: list[Device],
+                 ios: list[IoModule]):
+        self.unit = unit
+        self.bus = bus
+        self.ranks = ranks
+        self.master: str | None = ranks[0]
+        self.last_master_t = 0
+        self.devices = devices
+        self.ios = ios
+        self.io_data: dict[str, tuple[IoPort, int]] = {}
+        self.io_used: str | None = None
+        self.status_missing = {d.name: 0 for d in devices}
+        self.status_reported: set[str] = set()
+        self.cmd: Command | None = None
+        self.cmd_t = -1
+        self.stale = True
+        self.sink_timer = None
+        self.cmd_seq = 0
+
+    @property
+    def sinks(self) -> list[Device]:
+        return [d for d in self.devices if d.sink]
+
+
+class MetroTrain:
+    BULK_SKIP = ("events",)
+
+    def __init__(self, cfg: MetroConfig):
+        self.cfg = cfg
+        t, b = cfg.timing, cfg.behaviour
+        self.kernel = Kernel()
+        self.events: list[TraceEvent] = []
+        self.tapped: set[str] = set()
+        self.nodes: dict[str, ControlUnit] = {}
+        for car in range(1, 7):
+            kind = "CCU" if car in CAB_CARS else "VCU"
+            self.nodes[f"car{car}.{kind}"] = ControlUnit(f"car{car}.{kind}", car, kind)
+        self.devices: dict[str, Device] = {}
+        self.ios: dict[str, IoModule] = {}
+        for car in range(1, 7):
+            for kind in (CAB_DEVICES if car in CAB_CARS else MOTOR_DEVICES):
+                name = f"car{car}.{kind}"
+                if kind.startswith("IO"):
+                    self.ios[name] = IoModule(name, car)
+                else:
+                    self.devices[name] = Device(name, car, kind)
+        self.segments: dict[int, MvbSegment] = {}
+        for unit, cars in UNIT_CARS.items():
+            cab = cars[0] if unit == 1 else cars[-1]
+            near, far = (cars[1], cars[2]) if unit == 1 else (cars[1], cars[0])
+            ranks = (f"car{cab}.CCU", f"car{near}.VCU", f"car{far}.VCU")
+            self.segments[unit] = MvbSegment(
+                unit, DualLineBus(f"unit{unit}.MVB", b.lines_sent, b.line_switch_after), ranks,
+                [d for d in self.devices.values() if d.car in cars],
+                [m for m in self.ios.values() if m.car in cars])
+        self.wtb = DualLineBus("WTB", b.lines_sent, b.line_switch_after)
+        self.wtb_master: str | None = b.wtb_backup_ranks[0]
+        self.wtb_last_master_t = 0
+        self.wtb_missing = {n: 0 for n in self.nodes}
+        self.wtb_reported: set[str] = set()
+        self.desk = {cab: {"key": False, "direction": "neutral", "traction": 0, "brake": 0} for cab in CAB_CARS}
+        self.emergency_switch = False
+        self.emergency_mode = False
+        self.speed_kmh = 0.0
+        self.modes = {1: "power-up", 2: "power-up"}
+        self.started = False
+
+    # -- trace ------------------------------------------------------------------------------------
+    def emit(self, source: str, kind: str, **fields: Any) -> None:
+        self.events.append(TraceEvent(self.kernel.now, source, kind, fields))
+
+    # -- life cycle -------------------------------------------------------------------------------
+    def start(self) -> None:
+        t = self.cfg.timing
+        self.started = True
+        for unit in self.segments:
+            self.kernel.every(t.mvb_basic_period_us, lambda u=unit: self._mvb_period(u))
+        self.kernel.every(t.wtb_cycle_us, self._wtb_cycle)
+        self.kernel.every(t.mvb_basic_period_us, self._watch_masters, phase=t.mvb_basic_period_us // 2)
+        self.kernel.every(t.speed_tick_us, self._speed_tick)
+        for unit in self.segments:
+            self._apply(unit)
+
+    # -- MVB --------------------------------------------------------------------------------------
+    def _mvb_period(self, unit: int) -> None:
+        seg = self.segments[unit]
+        master = self.nodes.get(seg.master) if seg.master else None
+        if master is None or not master.alive:
+            return
+        t = self.cfg.timing
+        k = self.kernel.now // t.mvb_basic_period_us
+        polls: list[tuple[str, Any]] = []
+        if k % (t.io_period_us // t.mvb_basic_period_us) == 0:
+            polls += [("io", m) for m in seg.ios]
+        if k % (t.command_period_us // t.mvb_basic_period_us) == 0:
+            polls.append(("cmd", None))
+        polls.append(("status", seg.devices[k % len(seg.devices)]))
+        offset = 0
+        for what, target in polls:
+            f_code = {"io": ports.IO_PORT_F_CODE, "cmd": ports.COMMAND_F_CODE,
+                      "status": ports.DEVICE_STATUS_F_CODE}[what]
+            bits = MASTER_BITS + slave_size_bits(f_code) + 8 * max(1, slave_size_bits(f_code) // 64) \
+                + SLAVE_OVERHEAD_BITS
+            # The whole message is taken at its master frame's instant, which is what an analyser logs.
+            self.kernel.call_later(offset, self._mvb_message, unit, master.name, what, target, f_code)
+            offset += DualLineBus.frame_us(bits, t.mvb_bit_ns) + REPLY_GAP_US
+
+    def _address(self, unit: int, what: str, target: Any) -> int:
+        if what == "io":
+            return ports.IO_ADDRESSES[target.name.split(".")[1]]
+        if what == "cmd":
+            return ports.COMMAND_ADDRESS
+        return target.car * 16 + list(self.devices).index(target.name) % 16
+
+    def _mvb_message(self, unit: int, master_name: str, what: str, target: Any, f_code: int) -> None:
+        seg = self.segments[unit]
+        master = self.nodes[master_name]
+        if seg.master != master_name or not master.alive:
+            return
+        bus = seg.bus
+        address = self._address(unit, what, target)
+        wire = MasterFrame(f_code, address).encode()
+        self._tap(bus, "master", wire)
+        got = bus.carry(wire, decode_master, lambda a, b_, why: self._line_switch(bus, a, b_, why))
+        self._discards(bus, got)
+        if got.data is None:
+            self.emit(bus.name, "mvb.msg", master=master_name, f_code=f_code, address=address, line=None,
+                      responder=None, lost=True)
+            self._diagnose_lines(bus, master)
+            return
+        seg.last_master_t = self.kernel.now
+        source, data = self._answer(seg, master, what, target)
+        line, master_line = None, got.line
+        if data is not None:
+            size = slave_size_bits(f_code)
+            long_one = self.cfg.behaviour.one_check_sequence and size > 64
+            wire = _one_check_encode(data) if long_one else SlaveFrame(data).encode()
+            decode: Callable = ((lambda raw: _one_check_decode(raw, size)) if long_one
+                                else (lambda raw: decode_slave(raw, size)))
+            self._tap(bus, "slave", wire, f_code=f_code)
+            got = bus.carry(wire, decode, lambda a, b_, why: self._line_switch(bus, a, b_, why))
+            self._discards(bus, got)
+            if got.data is not None:
+                line = got.line
+                self._deliver(seg, master, what, target, got.data.data)
+        if what == "status":
+            self._diagnose_device(seg, master, target, answered=line is not None)
+        self.emit(bus.name, "mvb.msg", master=master_name, f_code=f_code, address=address, line=master_line,
+                  responder=source if line else None, lost=data is not None and line is None)
+        self._diagnose_lines(bus, master)
+
+    def _answer(self, seg: MvbSegment, master: ControlUnit, what: str, target: Any) -> tuple[str, bytes | None]:
+        if what == "io":
+            return target.name, self._io_port(target).encode()
+        if what == "cmd":
+            cmd = self._command(seg, master)
+            return master.name, cmd.encode() if cmd is not None else None
+        if target.failed:
+            return target.name, None
+        return target.name, ports.READY.to_bytes(2, "big")
+
+    def _io_port(self, module: IoModule) -> IoPort:
+        if module.failed:
+            di, ai = module.frozen or (0, (0, 0, 0))
+            return IoPort(di, ai, 0)
+        desk = self.desk[module.car]
+        di = (desk["key"] << (ports.DI_KEY - 1)) | ((desk["direction"] == "forward") << (ports.DI_FORWARD - 1)) \
+            | ((desk["direction"] == "reverse") << (ports.DI_REVERSE - 1))
+        ai = [desk["traction"] * 100, desk["brake"] * 100, 0]
+        for name, value in module.forced.items():
+            n = int(name[2:])
+            if name.startswith("DI"):
+                di = (di & ~(1 << (n - 1))) | (bool(value) << (n - 1))
+            else:
+                ai[n - 1] = int(value)
+        module.life = module.life % 0xFFFF + 1          # 1..65535: 0 means "not alive"
+        return IoPort(di, (ai[0], ai[1], ai[2]), module.life)
+
+    def _deliver(self, seg: MvbSegment, master: ControlUnit, what: str, target: Any, data: bytes) -> None:
+        now = self.kernel.now
+        if what == "io":
+            seg.io_data[target.name] = (IoPort.decode(data), now)
+        elif what == "cmd":
+            cmd = Command.decode(data)
+            seg.cmd, seg.cmd_t = cmd, now
+            if seg.sink_timer is not None:
+                seg.sink_timer.cancel()
+            seg.sink_timer = self.kernel.call_later(self.cfg.timing.sink_timeout_us, self._sink_timeout, seg.unit)
+            if seg.stale:
+                seg.stale = False
+                self.emit(seg.bus.name, "pd.fresh", port="train command")
+            self._apply(seg.unit)
+
+    def _sink_timeout(self, unit: int) -> None:
+        seg = self.segments[unit]
+        seg.stale = True
+        seg.sink_timer = None
+        self.emit(seg.bus.name, "pd.stale", port="train command", last_ms=seg.cmd_t / 1000)
+        self._apply(unit)
+
+    # -- the train command (traction/brake control, TCN-08) ------------------------------------------
+    def _inputs(self, seg: MvbSegment, master: ControlUnit) -> IoPort | None:
+        """The cab's inputs as the unit's master reads them: module 1 while its life signal is set, else
+        module 2 (RED-07)."""
+        b, t = self.cfg.behaviour, self.cfg.timing
+        fresh_us = 3 * t.io_period_us
+        chosen = None
+        for module in seg.ios:
+            port, at = seg.io_data.get(module.name, (None, -1))
+            if port is None or self.kernel.now - at > fresh_us:
+                continue
+            if module.name.endswith("IO2") and not b.use_io_module_2:
+                continue
+            if port.life == 0 and b.io_life_signal_checked:
+                continue
+            chosen = module.name
+            break
+        if chosen != seg.io_used and seg.ios:
+            before, seg.io_used = seg.io_used, chosen
+            self.emit(master.name, "io.select", module=chosen)
+            if before is not None:
+                self._raise(master, f"inputs from {chosen}" if chosen else "no MVB I/O module alive")
+        return seg.io_data[chosen][0] if chosen else None
+
+    def _command(self, seg: MvbSegment, master: ControlUnit) -> Command | None:
+        seg.cmd_seq += 1
+        inputs = self._inputs(seg, master) if seg.ios else None
+        if inputs is not None and inputs.input(ports.DI_KEY):
+            if master.kind == "VCU" and not self.cfg.behaviour.vcu_takes_control:
+                return None
+            direction = ("forward" if inputs.input(ports.DI_FORWARD)
+                         else "reverse" if inputs.input(ports.DI_REVERSE) else "neutral")
+            traction = min(inputs.ai[ports.AI_TRACTION - 1], FULL)
+            brake = min(inputs.ai[ports.AI_BRAKE - 1], FULL)
+            return Command("normal", direction, traction, brake, seg.cmd_seq)
+        if master.wtb_cmd is not None and self.kernel.now - master.wtb_cmd_t <= self.cfg.timing.gateway_timeout_us:
+            relayed: Command = master.wtb_cmd           # the active cab's command, through the gateway
+            return Command(relayed.mode, relayed.direction, relayed.traction, relayed.brake, seg.cmd_seq)
+        if master.wtb_cmd_t < 0 and self.kernel.now <= self.cfg.timing.gateway_timeout_us:
+            return Command("no cab", "neutral", 0, FULL, seg.cmd_seq)      # just powered up, nothing heard yet
+        return Command("network failure", "neutral", 0, FULL, seg.cmd_seq)
+
+    # -- VVVF and BECU: what they apply ----------------------------------------------------------------
+    def _apply(self, unit: int) -> None:
+        seg = self.segments[unit]
+        cmd = seg.cmd
+        failure = seg.stale or cmd is None or cmd.mode != "normal"
+        mode = "emergency operation" if self.emergency_mode else (
+            "normal" if not failure else ("no cab" if cmd is not None and cmd.mode == "no cab" and not seg.stale
+                                          else "train network failure"))
+        if mode != self.modes[unit]:
+            before, self.modes[unit] = self.modes[unit], mode
+            self.emit(f"unit{unit}", "mode.change", mode=mode)
+            if mode == "train network failure" and before != "power-up":
+                master = self.nodes.get(seg.master) if seg.master else None
+                if master is not None and master.alive:
+                    self._raise(master, "train network failure: braking to a stop")
+        active = next((c for c in CAB_CARS if self.desk[c]["key"]), None)
+        for dev in seg.sinks:
+            if dev.failed:
+                value = 0
+            elif self.emergency_mode:
+                desk = self.desk[active] if active else None
+                if desk is None:
+                    value = 0 if dev.kind == "VVVF" else FULL
+                elif dev.kind == "VVVF":
+                    value = desk["traction"] * 100 if desk["direction"] != "neutral" else 0
+                else:
+                    value = desk["brake"] * 100
+            elif failure:
+                if not self.cfg.behaviour.network_failure_brake and cmd is not None and cmd.mode == "normal":
+                    value = dev.applied
+                else:
+                    value = 0 if dev.kind == "VVVF" else FULL
+            elif dev.kind == "VVVF":
+                value = cmd.traction if cmd.direction != "neutral" else 0
+            else:
+                value = cmd.brake
+            if value != dev.applied:
+                dev.applied = value
+                self.emit(dev.name, "pd.change", value=value / 100)
+
+    def _speed_tick(self) -> None:
+        if self.emergency_switch and not self.emergency_mode and (
+                self.speed_kmh == 0 or self.cfg.behaviour.emergency_operation_at_speed):
+            self.emergency_mode = True
+            for unit in self.segments:
+                self._apply(unit)
+        if self.speed_kmh <= 0:
+            return
+        becus = [d for d in self.devices.values() if d.kind == "BECU"]
+        mean = sum(d.applied for d in becus) / len(becus) / FULL
+        if mean <= 0:
+            return
+        dt_s = self.cfg.timing.speed_tick_us / 1e6
+        self.speed_kmh = max(0.0, self.speed_kmh - self.cfg.timing.brake_decel_kmh_per_s * mean * dt_s)
+        if self.speed_kmh == 0:
+            self.emit("train", "train.stop")
+
+    # -- masters by rank after silence (RED-04, RED-05) ------------------------------------------------
+    def _watch_masters(self) -> None:
+        t = self.cfg.timing
+        now = self.kernel.now
+        for seg in self.segments.values():
+            current = self.nodes.get(seg.master) if seg.master else None
+            if current is not None and current.alive:
+                continue
+            silent = now - seg.last_master_t
+            waiting = [n for n in seg.ranks if n != seg.master]
+            for position, name in enumerate(waiting, start=1):
+                node = self.nodes[name]
+                if node.alive and silent >= position * t.mvb_master_timeout_us:
+                    before, seg.master = seg.master, name
+                    seg.last_master_t = now
+                    self.emit(name, "master.take", bus=seg.bus.name, after=before)
+                    self._raise(node, f"MVB master of unit {seg.unit} ({before} silent)")
+                    break
+        current = self.nodes.get(self.wtb_master) if self.wtb_master else None
+        if current is not None and current.on_wtb:
+            return
+        silent = now - self.wtb_last_master_t
+        waiting = [n for n in self.cfg.behaviour.wtb_backup_ranks if n != self.wtb_master]
+        for position, name in enumerate(waiting, start=1):
+            node = self.nodes[name]
+            if node.on_wtb and silent >= position * t.wtb_backup_step_us:
+                before, self.wtb_master = self.wtb_master, name
+                self.wtb_last_master_t = now
+                self.emit(name, "master.take", bus="WTB", after=before)
+                self._raise(node, f"WTB master ({before} silent)")
+                break
+
+    # -- WTB --------------------------------------------------------------------------------------
+    def _wtb_cycle(self) -> None:
+        master = self.nodes.get(self.wtb_master) if self.wtb_master else None
+        if master is None or not master.on_wtb:
+            return
+        t = self.cfg.timing
+        offset = 0
+        for name in self.nodes:
+            # Frame time from a size estimate: building the telegram now would send its messages early.
+            bits = WTB_OVERHEAD_BITS * 2 + 8 * (80 + 48 * len(self.nodes[name].outbox))
+            self.kernel.call_later(offset, self._wtb_message, master.name, name)
+            offset += DualLineBus.frame_us(bits, t.wtb_bit_ns)
+
+    def _telegram(self, node: ControlUnit) -> dict | None:
+        if not node.on_wtb:
+            return None
+        seg = self.segments[node.unit]
+        cmd = None
+        if seg.master == node.name and seg.ios and seg.cmd is not None and seg.cmd.mode == "normal" \
+                and not seg.stale and self.desk_key_seen(seg):
+            cmd = seg.cmd.as_json()
+        elif seg.master == node.name and seg.ios and seg.io_used is not None and not self.desk_key_seen(seg):
+            cmd = ["no cab", "neutral", 0, FULL, 0]
+        # A destination the WTB master found silent is not waited for (failed, or cut off the WTB).
+        gone = set(self.wtb_reported)
+        for record in node.outbox:
+            node.awaiting[record.seq] -= gone
+        for record in [r for r in node.outbox if not node.awaiting[r.seq]]:
+            node.awaiting.pop(record.seq)
+        node.outbox = [r for r in node.outbox if r.seq in node.awaiting]
+        events = [[r.seq, r.t_us, r.text] for r in node.outbox]
+        if not self.cfg.behaviour.message_ack:
+            node.outbox = []                            # sent once, lost if the telegram is
+        acks = {origin: seq for origin, seq in node.stored_upto.items()}
+        return {"n": node.name, "cmd": cmd, "ev": events, "ack": acks}
+
+    def desk_key_seen(self, seg: MvbSegment) -> bool:
+        if seg.io_used is None:
+            return False
+        port, _ = seg.io_data[seg.io_used]
+        return port.input(ports.DI_KEY)
+
+    def _wtb_message(self, master_name: str, polled: str) -> None:
+        master = self.nodes[master_name]
+        if self.wtb_master != master_name or not master.on_wtb:
+            return
+        bus = self.wtb
+        wire = ports.wtb_encode({"poll": polled, "m": master_name})
+        self._tap(bus, "master", wire)
+        got = bus.carry(wire, ports.wtb_decode, lambda a, b_, why: self._line_switch(bus, a, b_, why))
+        self._discards(bus, got)
+        if got.data is None:
+            self.emit("WTB", "wtb.msg", master=master_name, polled=polled, line=None, answered=False, lost=True)
+            self._diagnose_lines(bus, master)
+            return
+        self.wtb_last_master_t = self.kernel.now
+        node = self.nodes[polled]
+        telegram = self._telegram(node)
+        line, master_line = None, got.line
+        if telegram is not None:
+            wire = ports.wtb_encode(telegram)
+            self._tap(bus, "slave", wire)
+            got = bus.carry(wire, ports.wtb_decode, lambda a, b_, why: self._line_switch(bus, a, b_, why))
+            self._discards(bus, got)
+            if got.data is not None:
+                line = got.line
+                for receiver in self.nodes.values():
+                    if receiver is not node and receiver.on_wtb:
+                        self._receive_telegram(receiver, got.data)
+        self.emit("WTB", "wtb.msg", master=master_name, polled=polled, line=master_line, answered=line is not None,
+                  lost=telegram is not None and line is None)
+        self._diagnose_wtb_node(master, polled, answered=line is not None)
+        self._diagnose_lines(bus, master)
+
+    def _receive_telegram(self, receiver: ControlUnit, telegram: dict) -> None:
+        now = self.kernel.now
+        origin = telegram["n"]
+        if telegram["cmd"] is not None:
+            # Every gateway keeps the train command, so a standby that takes its unit's MVB has it at once.
+            receiver.wtb_cmd, receiver.wtb_cmd_t = Command.from_json(telegram["cmd"]), now
+        takes_records = receiver.has_memory or (self.cfg.behaviour.backup_master_stores
+                                                and self.wtb_master == receiver.name)
+        if self.cfg.behaviour.records_via_wtb:
+            for seq, t_us, text in telegram["ev"]:
+                if seq <= receiver.stored_upto.get(origin, 0):
+                    continue                           # a resent message already taken in
+                receiver.stored_upto[origin] = seq
+                record = Record(t_us, origin, seq, text)
+                receiver.known.append(record)
+                if takes_records:
+                    receiver.store.append(record)
+                    self.emit(receiver.name, "record.store", origin=origin, text=text)
+        for dest_origin, seq in telegram["ack"].items():
+            if dest_origin == receiver.name:
+                self._acknowledged(receiver, origin, seq)
+
+    def _acknowledged(self, node: ControlUnit, by: str, upto: int) -> None:
+        keep = []
+        for record in node.outbox:
+            waiting = node.awaiting.get(record.seq, set())
+            if record.seq <= upto:
+                waiting.discard(by)
+            if waiting:
+                keep.append(record)
+            else:
+                node.awaiting.pop(record.seq, None)
+        node.outbox = keep
+
+    # -- events and records (TCN-08, RED-04, RED-05) ----------------------------------------------------
+    def _raise(self, node: ControlUnit, text: str) -> None:
+        node.seq += 1
+        record = Record(self.kernel.now, node.name, node.seq, text)
+        self.emit(node.name, "event.raise", text=text)
+        node.known.append(record)
+        if node.has_memory or (self.cfg.behaviour.backup_master_stores and self.wtb_master == node.name):
+            node.store.append(record)
+            self.emit(node.name, "record.store", origin=node.name, text=text)
+        # Numbered messages to every other CCU, resent until each acknowledges (TCN-06 message data).
+        dests = {n.name for n in self.nodes.values() if n.kind == "CCU" and n is not node}
+        node.outbox.append(record)
+        node.awaiting[record.seq] = dests
+
+    def _diagnose_device(self, seg: MvbSegment, master: ControlUnit, device: Device, answered: bool) -> None:
+        if answered:
+            seg.status_missing[device.name] = 0
+            if device.name in seg.status_reported:
+                seg.status_reported.discard(device.name)
+                self._raise(master, f"{device.name}: answering again")
+            return
+        seg.status_missing[device.name] += 1
+        if seg.status_missing[device.name] >= self.cfg.timing.status_silence_polls \
+                and device.name not in seg.status_reported:
+            seg.status_reported.add(device.name)
+            self._raise(master, f"{device.name}: no status data")
+
+    def _diagnose_wtb_node(self, master: ControlUnit, polled: str, answered: bool) -> None:
+        if answered:
+            self.wtb_missing[polled] = 0
+            if polled in self.wtb_reported:
+                self.wtb_reported.discard(polled)
+                self._raise(master, f"{polled}: answering on WTB again")
+            return
+        self.wtb_missing[polled] += 1
+        if self.wtb_missing[polled] >= self.cfg.timing.status_silence_polls and polled not in self.wtb_reported:
+            self.wtb_reported.add(polled)
+            self._raise(master, f"{polled}: no answer on WTB")
+
+    def _diagnose_lines(self, bus: DualLineBus, master: ControlUnit) -> None:
+        for ln in LINES:
+            line = bus.lines[ln]
+            if line.bad_run >= 3 and not line.reported and ln in self.cfg.behaviour.lines_sent:
+                line.reported = True
+                self._raise(master, f"{bus.name} line {ln}: fault")
+            elif line.bad_run == 0 and line.reported:
+                line.reported = False
+                self._raise(master, f"{bus.name} line {ln}: restored")
+
+    def _line_switch(self, bus: DualLineBus, before: str, after: str, why: str) -> None:
+        self.emit(bus.name, "line.switch", frm=before, to=after, reason=why)
+
+    def _discards(self, bus: DualLineBus, got: Any) -> None:
+        for error in got.errors:
+            self.emit(bus.name, "frame.discard", error=error)
+
+    def _tap(self, bus: DualLineBus, frame_type: str, wire: bytes, **fields: Any) -> None:
+        if bus.name in self.tapped:
+            self.emit(bus.name, "bus.frame", type=frame_type, hex=wire.hex(), **fields)

@@ -1,0 +1,27 @@
+"""`reference`: the embedded reference trains, one backend name for every profile they implement.
+
+Like python-can's `Bus(interface=...)`, opening the backend gives the class of the train asked for:
+`crh2` (sut/reference/backend.py) or `metro-tcn` (sut/reference/metro/backend.py).
+"""
+from __future__ import annotations
+
+from sut.driver import TrainDriver
+from sut.errors import UnknownName
+from sut.reference.backend import ReferenceTrain
+from sut.reference.metro.backend import ReferenceMetro
+
+TRAINS: dict[str, type[TrainDriver]] = {"crh2": ReferenceTrain, "metro-tcn": ReferenceMetro}
+
+
+class Reference(TrainDriver):
+    """Never a train itself: `open(profile)` returns the reference train of that profile."""
+
+    backend_name = "reference"
+    PROFILES = tuple(TRAINS)
+
+    @classmethod
+    def open(cls, profile: str | None = None) -> TrainDriver:
+        profile = profile or cls.PROFILES[0]
+        if profile not in TRAINS:
+            raise UnknownName("profile of the reference", profile, TRAINS)
+        return TRAINS[profile]()
