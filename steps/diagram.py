@@ -1,6 +1,6 @@
 """A timing diagram of a scenario (WaveJSON, rendered to SVG offline by `wavedrom`) for the report.
 
-One lane per thing that changed: vehicle outputs, the CCU systems putting commands on the ring (high while
+One lane per thing that changed: vehicle outputs (metro: what each VVVF and BECU applies, who masters each bus), the CCU systems putting commands on the ring (high while
 they send), each RXC's command source, and an events lane for injected faults, takeovers, fail-safe cuts
 and token formation. Time is cut into at most ~48 equal slots so a 50 ms takeover and a 20 s pressure
 ramp both fit one picture; the header says the slot length.
@@ -16,7 +16,7 @@ MAX_SLOTS = 48
 NICE_MS = (1, 2, 5, 10, 20, 50, 100, 200, 500, 1000, 2000, 5000, 10_000, 20_000, 60_000, 120_000, 300_000,
            600_000, 1_200_000, 3_600_000, 7_200_000, 18_000_000, 36_000_000)   # up to 10 h: 72 h runs
 EVENT_KINDS = ("fault.", "env.", "supply.", "ccu.takeover", "txc.failsafe", "rxc.failsafe", "token.form", "token.init", "in.set",
-               "in.ramp", "desk.", "time.skip")
+               "in.ramp", "desk.", "time.skip", "master.take", "line.switch", "mode.change", "io.select", "train.stop")
 MAX_LANES = 14
 
 
@@ -54,6 +54,12 @@ def _label(ev: TraceEvent) -> str:
     short = ev.source.replace(".MDM8", "").replace(".CPU3", "")
     if ev.kind.startswith("in."):
         return f"{ev['name']}={ev.get('value', ev.get('to'))}"
+    if ev.kind == "mode.change":
+        return f"{ev.source} {ev['mode']}"
+    if ev.kind == "master.take":
+        return f"{ev.source} takes {ev['bus']}"
+    if ev.kind == "line.switch":
+        return f"{ev.source} {ev['frm']}->{ev['to']}"
     if ev.kind.startswith("desk."):
         return f"{short} {ev.kind[5:]}"
     return f"{short} {ev.kind.split('.', 1)[-1]}"
@@ -73,14 +79,23 @@ def wavejson(trace: Trace, start_us: int, end_us: int) -> dict | None:
     outputs: dict[str, list[tuple[int, str]]] = {}
     senders: dict[str, set[int]] = {}
     rxc: dict[str, list[tuple[int, str]]] = {}
+    buses: dict[str, dict[int, str]] = {}
     events: list[tuple[int, str]] = []
     for ev in trace.select(kind="out.change", until=start_us):
         outputs.setdefault(ev.source, [(0, ev["value"])])[0] = (0, ev["value"])   # the state at the start
+    for ev in trace.select(kind="pd.change", until=start_us):
+        outputs.setdefault(ev.source, [(0, "")])[0] = (0, f"{ev['value']:g} %")
     for ev in trace.select(since=start_us, until=end_us):
         if ev.kind == "out.change":
             outputs.setdefault(ev.source, []).append((slot(ev), ev["value"]))
         elif ev.kind == "cmd.tx":
             senders.setdefault(ev.source.rsplit(".", 1)[0], set()).add(slot(ev))
+        elif ev.kind in ("wtb.msg", "mvb.msg"):       # metro: who masters each bus, or that it lost a poll
+            per_slot = buses.setdefault(ev.source, {})
+            if per_slot.get(slot(ev)) != "lost":
+                per_slot[slot(ev)] = "lost" if ev["lost"] else ev["master"]
+        elif ev.kind == "pd.change":                    # metro: traction/brake a VVVF or BECU applies
+            outputs.setdefault(ev.source, []).append((slot(ev), f"{ev['value']:g} %"))
         elif ev.kind == "rxc.source":
             rxc.setdefault(ev.source, []).append((slot(ev), ev["source"]))
         elif ev.kind.startswith(EVENT_KINDS):
@@ -103,6 +118,10 @@ def wavejson(trace: Trace, start_us: int, end_us: int) -> dict | None:
         if len(hits) + len(skipped - hits) < slots:    # a sender that never paused says nothing
             wave = ["1" if i in hits else "x" if i in skipped else "0" for i in range(slots)]
             lanes.append({"name": f"cmd {node}", "wave": _runs(wave)})
+    for name, per_slot in sorted(buses.items()):
+        values = [per_slot.get(i, "silent") for i in range(slots)]
+        if len(set(values)) > 1:                             # a bus whose master never changed says nothing
+            lanes.append(_data_lane(f"{name} master", list(enumerate(values)), slots))
     for name, changes in sorted(outputs.items()):
         if len({value for _, value in changes}) > 1:          # an output that never changed says nothing
             lanes.append(_data_lane(name, changes, slots))

@@ -19,7 +19,7 @@ from sut.trace import Trace
 
 PERIODIC_KINDS = frozenset({
     "cmd.tx", "cmd.rx", "cmd.in", "status.tx", "status.rx", "token.rx", "token.pass", "sd.rx",
-    "loop.poll", "loop.send", "loop.report", "link.tx",
+    "loop.poll", "loop.send", "loop.report", "link.tx", "mvb.msg", "wtb.msg", "bus.frame",
 })
 
 

@@ -153,3 +153,33 @@ def test_ramp_needs_a_positive_rate_and_a_number(train) -> None:
         train.ramp_input("speed", 100, 0)
     with pytest.raises(OutOfRange, match="only numeric inputs ramp"):
         train.ramp_input("doors", 1, 1)
+
+
+# -- metro TCDS (profile metro-tcn) ------------------------------------------------------------------
+@pytest.fixture
+def metro():
+    driver = open_backend("reference", "metro-tcn")
+    yield driver
+    driver.shutdown()
+
+
+@pytest.mark.parametrize(("call", "error", "words"), [
+    (lambda t: t.set_input("car1.IO1.DI29", 1), OutOfRange, ["DI29", "DI01-DI28 or AI1-AI3"]),
+    (lambda t: t.set_input("car1.IO1.AI4", 1), OutOfRange, ["AI4", "DI01-DI28 or AI1-AI3"]),
+    (lambda t: t.set_input("car2.IO1.AI1", 1), UnknownName, ["vehicle input", "car2.IO1.AI1"]),
+    (lambda t: t.set_traction(1, 101), OutOfRange, ["traction demand 101", "0-100"]),
+    (lambda t: t.insert_key(2), OutOfRange, ["cab 2", "1 or 6"]),
+    (lambda t: t.cut_line("unit3.MVB", "A"), UnknownName, ["bus", "unit3.MVB", "unit2.MVB"]),
+    (lambda t: t.cut_line("WTB", "C"), OutOfRange, ["line of WTB 'C'", "A or B"]),
+    (lambda t: t.disturb_line("WTB", "A", 0), OutOfRange, ["frames to disturb 0"]),
+    (lambda t: t.fail("car2.CCU"), UnknownName, ["car2.CCU", "car2.VCU"]),
+    (lambda t: t.fail("car2.VCU.VMS"), UnknownName, ["car2.VCU.VMS"]),
+    (lambda t: t.records("car2.VVVF"), UnknownName, ["CCU or VCU", "car2.VVVF"]),
+    (lambda t: t.configure(sets=1, cars_per_set=8), OutOfRange, ["1 x 8 cars", "6 cars"]),
+    (lambda t: t.ring_nodes(), SutError, ["does not implement ring_nodes()", "metro-tcn"]),
+])
+def test_metro_bad_input_names_value_and_what_is_allowed(metro, call, error, words) -> None:
+    with pytest.raises(error) as err:
+        call(metro)
+    for word in words:
+        assert word in str(err.value)

@@ -8,6 +8,7 @@ subclass that changes parameters: the reference's code is never edited at run ti
 from __future__ import annotations
 
 from sut.reference.backend import ReferenceTrain
+from sut.reference.metro.backend import ReferenceMetro
 
 MS = 1000
 
@@ -369,3 +370,119 @@ class RuggedBoards(ReferenceTrain):
 
 IN_BAND = [HoldCountedToSend, FasterNodes, CommandsEvery12ms, EarlierFallback, PipeTripAt585, DoorBandsNarrow,
            RuggedBoards]
+
+
+# -- metro TCDS (profile metro-tcn, issue 6) ----------------------------------------------------------
+class SkippedFallback(ReferenceMetro):
+    """RED-04: the car 3 VCU, not the car 2 VCU, takes the WTB from a failed car 1 CCU."""
+    BEHAVIOUR = {"wtb_backup_ranks": ("car1.CCU", "car3.VCU", "car2.VCU")}
+
+
+class CarSixMastersWtb(ReferenceMetro):
+    """RED-04: the car 6 CCU is a WTB backup master."""
+    BEHAVIOUR = {"wtb_backup_ranks": ("car1.CCU", "car6.CCU", "car2.VCU", "car3.VCU")}
+
+
+class BackupMasterStores(ReferenceMetro):
+    """RED-04: a VCU acting as WTB master stores the records itself."""
+    BEHAVIOUR = {"backup_master_stores": True}
+
+
+class VcuKeepsOutOfControl(ReferenceMetro):
+    """RED-05: the adjacent VCU takes the MVB of a failed active-cab CCU but computes no train command."""
+    BEHAVIOUR = {"vcu_takes_control": False}
+
+
+class SlowMvbTakeover(ReferenceMetro):
+    """RED-05: the adjacent VCU waits 150 ms before it takes the MVB (the command is lost meanwhile)."""
+    TIMING = {"mvb_master_timeout_us": 150 * MS}
+
+
+class RecordsStayInTheirUnit(ReferenceMetro):
+    """RED-05: events are not sent over the WTB, so each CCU records only its own unit."""
+    BEHAVIOUR = {"records_via_wtb": False}
+
+
+class SingleLine(ReferenceMetro):
+    """RED-06: frames go on line A only."""
+    BEHAVIOUR = {"lines_sent": "A"}
+
+
+class LineSwitchAfterThreeFrames(ReferenceMetro):
+    """RED-06: receivers switch lines only after three bad frames, losing the first two."""
+    BEHAVIOUR = {"line_switch_after": 3}
+
+
+class ModuleTwoNeverUsed(ReferenceMetro):
+    """RED-07: the inputs of MVB I/O module 2 are never used."""
+    BEHAVIOUR = {"use_io_module_2": False}
+
+
+class LifeSignalIgnored(ReferenceMetro):
+    """RED-07: module 1's inputs are used while it answers, whatever its life signal says."""
+    BEHAVIOUR = {"io_life_signal_checked": False}
+
+
+class OneCheckSequence(ReferenceMetro):
+    """TCN-05: one check byte at the end of a 128/256-bit slave frame instead of one per 64 bits."""
+    BEHAVIOUR = {"one_check_sequence": True}
+
+
+class SlowWtbCycle(ReferenceMetro):
+    """TCN-03: a WTB cycle of 30 ms."""
+    TIMING = {"wtb_cycle_us": 30 * MS}
+
+
+class MvbBasicPeriod2ms(ReferenceMetro):
+    """TCN-03: an MVB basic period of 2 ms."""
+    TIMING = {"mvb_basic_period_us": 2 * MS}
+
+
+class DevicesNeverReported(ReferenceMetro):
+    """TCN-04: a device that stops answering is never reported."""
+    TIMING = {"status_silence_polls": 1_000_000}
+
+
+class EventsSentOnce(ReferenceMetro):
+    """TCN-06: event messages are sent once, never acknowledged, so a lost telegram loses the record."""
+    BEHAVIOUR = {"message_ack": False}
+
+
+class NoBrakeOnNetworkFailure(ReferenceMetro):
+    """TCN-09: the VVVF and BECU hold the last command when the train command is lost."""
+    BEHAVIOUR = {"network_failure_brake": False}
+
+
+class EmergencyOperationAtSpeed(ReferenceMetro):
+    """TCN-09: hard-wired emergency operation is taken at speed, without braking to a stop first."""
+    BEHAVIOUR = {"emergency_operation_at_speed": True}
+
+
+class BriskMetro(ReferenceMetro):
+    """In band: a 20 ms WTB cycle, quicker takeovers, I/O and command ports every 4 ms, longer sink and
+    gateway supervision."""
+    TIMING = {"wtb_cycle_us": 20 * MS, "mvb_master_timeout_us": 8 * MS, "wtb_backup_step_us": 60 * MS,
+              "io_period_us": 4 * MS, "command_period_us": 4 * MS, "sink_timeout_us": 150 * MS,
+              "gateway_timeout_us": 300 * MS}
+
+
+FAULTY += [
+    (SkippedFallback, "RED-04", "F-NET-22"),
+    (CarSixMastersWtb, "RED-04", "F-NET-22"),
+    (BackupMasterStores, "RED-04", "F-NET-22"),
+    (VcuKeepsOutOfControl, "RED-05", "F-CTL-15"),
+    (SlowMvbTakeover, "RED-05", "F-CTL-15"),
+    (RecordsStayInTheirUnit, "RED-05", "F-REC-04"),
+    (SingleLine, "RED-06", "F-NET-23"),
+    (LineSwitchAfterThreeFrames, "RED-06", "F-NET-23"),
+    (ModuleTwoNeverUsed, "RED-07", "F-CTL-16"),
+    (LifeSignalIgnored, "RED-07", "F-CTL-16"),
+    (OneCheckSequence, "TCN-05", "F-NET-24"),
+    (SlowWtbCycle, "TCN-03", "F-NET-21"),
+    (MvbBasicPeriod2ms, "TCN-03", "F-NET-21"),
+    (DevicesNeverReported, "TCN-04", "F-DIA-04"),
+    (EventsSentOnce, "TCN-06", "F-REC-04"),
+    (NoBrakeOnNetworkFailure, "TCN-09", "F-NET-25"),
+    (EmergencyOperationAtSpeed, "TCN-09", "F-NET-25"),
+]
+IN_BAND += [BriskMetro]

@@ -34,9 +34,18 @@ Feature: F-REC-04 CCU-CCU record backup: events reach both CCU memories over the
       | car1.CCU     | car6.CCU |
 
   @req:TCN-06
-  Scenario: F-REC-04 A record whose telegram is lost on both lines is sent again and stored once
+  Scenario: F-REC-04 Telegrams lost on both WTB lines neither lose nor duplicate a record
     When "car4.VVVF" fails
-    And 80 ms pass
-    And the next 12 frames on both lines of "WTB" are disturbed
+    And 20 ms pass
+    And the next 6 frames on both lines of "WTB" are disturbed
     And 1000 ms pass
     Then "car1.CCU" holds the record "car4.VVVF: no status data" exactly once
+
+  @req:TCN-06
+  Scenario: F-REC-04 A message the destination missed is sent again until it acknowledges
+    When "car6.CCU.VGWS" fails
+    And "car2.VVVF" fails
+    And 45 ms pass
+    And "car6.CCU.VGWS" is repaired
+    And 1000 ms pass
+    Then "car6.CCU" holds the record "car2.VVVF: no status data" exactly once

@@ -23,6 +23,7 @@ class MetroTiming:
     wtb_backup_step_us: int = 75 * MS        # backup of rank r takes the WTB after r x this silence
     gateway_timeout_us: int = 250 * MS       # no train command on the WTB this long: train network failure
     sink_timeout_us: int = 100 * MS          # VVVF/BECU without a fresh command this long: brake to a stop
+    message_give_up_us: int = 1000 * MS      # a message is resent this long to a silent destination
     status_silence_polls: int = 3            # device status polls unanswered before a device is reported
     brake_decel_kmh_per_s: float = 3.6       # 1.0 m/s2 at 100 % service brake
     speed_tick_us: int = 10 * MS

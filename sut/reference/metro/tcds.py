@@ -106,6 +106,7 @@ class MetroTrain:
         self.wtb_last_master_t = 0
         self.wtb_missing = {n: 0 for n in self.nodes}
         self.wtb_reported: set[str] = set()
+        self.wtb_answered_at = {n: 0 for n in self.nodes}
         self.desk = {cab: {"key": False, "direction": "neutral", "traction": 0, "brake": 0} for cab in CAB_CARS}
         self.emergency_switch = False
         self.emergency_mode = False
@@ -400,8 +401,9 @@ class MetroTrain:
             cmd = seg.cmd.as_json()
         elif seg.master == node.name and seg.ios and seg.io_used is not None and not self.desk_key_seen(seg):
             cmd = ["no cab", "neutral", 0, FULL, 0]
-        # A destination the WTB master found silent is not waited for (failed, or cut off the WTB).
-        gone = set(self.wtb_reported)
+        # A destination silent on the WTB for longer than the give-up time is no longer waited for.
+        limit = self.kernel.now - self.cfg.timing.message_give_up_us
+        gone = {d for d, at in self.wtb_answered_at.items() if at < limit}
         for record in node.outbox:
             node.awaiting[record.seq] -= gone
         for record in [r for r in node.outbox if not node.awaiting[r.seq]]:
@@ -514,6 +516,7 @@ class MetroTrain:
 
     def _diagnose_wtb_node(self, master: ControlUnit, polled: str, answered: bool) -> None:
         if answered:
+            self.wtb_answered_at[polled] = self.kernel.now
             self.wtb_missing[polled] = 0
             if polled in self.wtb_reported:
                 self.wtb_reported.discard(polled)
