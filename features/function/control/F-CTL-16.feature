@@ -49,3 +49,11 @@ Feature: F-CTL-16 Redundant MVB I/O modules: module 1 while its life signal is s
       | DI01    |
       | DI28    |
       | AI3     |
+
+  @req:TCN-07 @req:RED-07
+  Scenario: F-CTL-16 A digital input of module 2 drives the train once module 1's life signal is 0
+    Given a wiring fault holds input DI02 of "car1.IO2" at 0
+    And the train has been powered up for 1000 ms
+    When "car1.IO1" fails
+    And 300 ms pass
+    Then every VVVF applies 0 % traction within 100 ms
