@@ -35,15 +35,23 @@ Feature: F-CTL-15 Active-cab CCU failure: the adjacent VCU takes over and the tr
       | 6   | car6.CCU | car5.VCU | unit2.MVB |
 
   @req:RED-05
-  Scenario: F-CTL-15 The CCU of the cab without the key fails: its VCU relays the command, no change
+  Scenario Outline: F-CTL-15 The CCU of the cab without the key fails <ms> ms after power-up: its VCU relays the command
     Given the driver has inserted the key in cab 1
     And the master controller of cab 1 demands 60 % traction
-    And the train has been powered up for 1000 ms
+    And the train has been powered up for <ms> ms
     When "car6.CCU" fails
     And 1000 ms pass
     Then "car5.VCU" is the master of "unit2.MVB" within 100 ms and stays so
     And no VVVF or BECU changes what it applies
     And "car1.CCU" is the WTB master within 25 ms and stays so
+
+    Examples: instants through one 25 ms WTB cycle
+      | ms   |
+      | 1000 |
+      | 1005 |
+      | 1010 |
+      | 1015 |
+      | 1020 |
 
   @req:TCN-08
   Scenario: F-CTL-15 The master controller reaches every VVVF and BECU in both units

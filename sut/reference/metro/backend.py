@@ -82,19 +82,13 @@ class ReferenceMetro(TrainDriver):
         """Master controller traction demand in % (0-100)."""
         self._desk(cab)["traction"] = self._percent("traction demand", notch)
         self._mark(f"car{cab}.desk", "desk.traction", value=notch)
-        self._hard_wired()
+        self._train.refresh_outputs()
 
     def set_brake(self, cab: int, step: int) -> None:
         """Master controller brake demand in % (0-100)."""
         self._desk(cab)["brake"] = self._percent("brake demand", step)
         self._mark(f"car{cab}.desk", "desk.brake", value=step)
-        self._hard_wired()
-
-    def _hard_wired(self) -> None:
-        # In emergency operation the desk acts on VVVF and BECU through hard wires, not the network.
-        if self._train.started:
-            for unit in self._train.segments:
-                self._train._apply(unit)
+        self._train.refresh_outputs()
 
     @staticmethod
     def _percent(what: str, value: Any) -> int:
@@ -115,7 +109,7 @@ class ReferenceMetro(TrainDriver):
             train.emergency_switch = value
             if not value and train.emergency_mode:
                 train.emergency_mode = False
-                self._hard_wired()
+                self._train.refresh_outputs()
         else:
             module, _, channel = name.rpartition(".")
             if module not in train.ios:
@@ -165,13 +159,12 @@ class ReferenceMetro(TrainDriver):
         thing, part = self._thing(board)
         if part is not None:
             thing.failed_boards.add(part)
+        elif board in self._train.ios:
+            self._train.fail_io(thing)
         else:
-            if hasattr(thing, "frozen") and not thing.failed:
-                port = self._train._io_port(thing)      # what it read last is what it keeps showing
-                thing.frozen = (port.di, port.ai)
             thing.failed = True
         self._mark(board, "fault.fail")
-        self._hard_wired()
+        self._train.refresh_outputs()
 
     def repair(self, board: str) -> None:
         thing, part = self._thing(board)
@@ -180,7 +173,7 @@ class ReferenceMetro(TrainDriver):
         else:
             thing.failed = False
         self._mark(board, "fault.repair")
-        self._hard_wired()
+        self._train.refresh_outputs()
 
     def _line(self, bus: str, line: str):
         if bus not in BUSES:

@@ -92,6 +92,11 @@ class MetroTrain:
                     self.ios[name] = IoModule(name, car)
                 else:
                     self.devices[name] = Device(name, car, kind)
+        # Device address on its MVB: car number x 16 + place in the car (12-bit logical addresses).
+        self.device_addresses = {}
+        for car in range(1, 7):
+            in_car = [d for d in self.devices.values() if d.car == car]
+            self.device_addresses.update({d.name: car * 16 + i for i, d in enumerate(in_car)})
         self.segments: dict[int, MvbSegment] = {}
         for unit, cars in UNIT_CARS.items():
             cab = cars[0] if unit == 1 else cars[-1]
@@ -159,7 +164,7 @@ class MetroTrain:
             return ports.IO_ADDRESSES[target.name.split(".")[1]]
         if what == "cmd":
             return ports.COMMAND_ADDRESS
-        return target.car * 16 + list(self.devices).index(target.name) % 16
+        return self.device_addresses[target.name]
 
     def _mvb_message(self, unit: int, master_name: str, what: str, target: Any, f_code: int) -> None:
         seg = self.segments[unit]
@@ -186,7 +191,7 @@ class MetroTrain:
             wire = _one_check_encode(data) if long_one else SlaveFrame(data).encode()
             decode: Callable = ((lambda raw: _one_check_decode(raw, size)) if long_one
                                 else (lambda raw: decode_slave(raw, size)))
-            self._tap(bus, "slave", wire, f_code=f_code)
+            self._tap(bus, "slave", wire)
             got = bus.carry(wire, decode, lambda a, b_, why: self._line_switch(bus, a, b_, why))
             self._discards(bus, got)
             if got.data is not None:
@@ -290,6 +295,20 @@ class MetroTrain:
         return Command("network failure", "neutral", 0, FULL, seg.cmd_seq)
 
     # -- VVVF and BECU: what they apply ----------------------------------------------------------------
+    def refresh_outputs(self) -> None:
+        """After a desk change or a fault: what VVVF and BECU apply (in emergency operation the desk acts
+        through hard wires, not through the network)."""
+        if self.started:
+            for unit in self.segments:
+                self._apply(unit)
+
+    def fail_io(self, module: IoModule) -> None:
+        """A failed module keeps answering: life signal 0 and the inputs it read last."""
+        if not module.failed:
+            port = self._io_port(module)
+            module.frozen = (port.di, port.ai)
+        module.failed = True
+
     def _apply(self, unit: int) -> None:
         seg = self.segments[unit]
         cmd = seg.cmd
@@ -397,9 +416,9 @@ class MetroTrain:
         seg = self.segments[node.unit]
         cmd = None
         if seg.master == node.name and seg.ios and seg.cmd is not None and seg.cmd.mode == "normal" \
-                and not seg.stale and self.desk_key_seen(seg):
+                and not seg.stale and self._key_seen(seg):
             cmd = seg.cmd.as_json()
-        elif seg.master == node.name and seg.ios and seg.io_used is not None and not self.desk_key_seen(seg):
+        elif seg.master == node.name and seg.ios and seg.io_used is not None and not self._key_seen(seg):
             cmd = ["no cab", "neutral", 0, FULL, 0]
         # A destination silent on the WTB for longer than the give-up time is no longer waited for.
         limit = self.kernel.now - self.cfg.timing.message_give_up_us
@@ -412,10 +431,11 @@ class MetroTrain:
         events = [[r.seq, r.t_us, r.text] for r in node.outbox]
         if not self.cfg.behaviour.message_ack:
             node.outbox = []                            # sent once, lost if the telegram is
+            node.awaiting.clear()
         acks = {origin: seq for origin, seq in node.stored_upto.items()}
         return {"n": node.name, "cmd": cmd, "ev": events, "ack": acks}
 
-    def desk_key_seen(self, seg: MvbSegment) -> bool:
+    def _key_seen(self, seg: MvbSegment) -> bool:
         if seg.io_used is None:
             return False
         port, _ = seg.io_data[seg.io_used]
@@ -456,8 +476,9 @@ class MetroTrain:
     def _receive_telegram(self, receiver: ControlUnit, telegram: dict) -> None:
         now = self.kernel.now
         origin = telegram["n"]
-        if telegram["cmd"] is not None:
-            # Every gateway keeps the train command, so a standby that takes its unit's MVB has it at once.
+        if telegram["cmd"] is not None and self.nodes[origin].unit != receiver.unit:
+            # Every gateway keeps the other unit's train command, so a standby that takes its unit's MVB has
+            # it at once. Its own unit's command comes from its own cab's I/O modules, never over the WTB.
             receiver.wtb_cmd, receiver.wtb_cmd_t = Command.from_json(telegram["cmd"]), now
         takes_records = receiver.has_memory or (self.cfg.behaviour.backup_master_stores
                                                 and self.wtb_master == receiver.name)
