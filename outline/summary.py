@@ -23,6 +23,7 @@ class Summary:
     covered: set[str] = field(default_factory=set)  # requirement IDs of passing scenarios
     touched: set[str] = field(default_factory=set)  # requirement IDs of every scenario that ran
     not_passed: list[tuple[str, str]] = field(default_factory=list)  # (status, scenario name)
+    by_profile: dict[str, Counter] = field(default_factory=dict)     # train profile -> status counts
 
     @property
     def total(self) -> int:
@@ -64,6 +65,9 @@ def summarize(results: list[dict]) -> Summary:
         summary.counts[status] += 1
         reqs = labels(result, "requirement")
         summary.touched.update(reqs)
+        for tag in labels(result, "tag"):
+            if tag.startswith("profile:"):
+                summary.by_profile.setdefault(tag[len("profile:"):], Counter())[status] += 1
         if status == "passed":
             summary.covered.update(reqs)
         else:
@@ -81,6 +85,10 @@ def format_summary(summary: Summary) -> str:
         f"{len(summary.covered)} requirement IDs covered by passing scenarios"
         + (f" (of {len(summary.touched)} exercised)" if summary.touched != summary.covered else "")
     ]
+    if summary.by_profile:
+        lines.append("by profile: " + "; ".join(
+            f"{name} {sum(c.values())} ({', '.join(f'{c[s]} {s}' for s in STATUSES if c[s])})"
+            for name, c in sorted(summary.by_profile.items())))
     if summary.covered:
         lines.append("covered: " + " ".join(sorted(summary.covered)))
     for status, name in sorted(summary.not_passed):

@@ -47,3 +47,12 @@ def test_empty_and_missing(tmp_path: Path, capsys):
     assert format_summary(summarize([])) == "0 scenarios: 0 passed, 0 failed, 0 broken, 0 skipped; " \
         "0 requirement IDs covered by passing scenarios"
     assert main([str(tmp_path / "nope")]) == 1
+
+
+def test_summary_counts_each_train_profile(tmp_path: Path):
+    for i, (profile, status) in enumerate([("crh2", "passed"), ("crh2", "failed"), ("metro-tcn", "passed")]):
+        data = {"name": f"s{i}", "status": status, "historyId": f"h{i}", "stop": 1,
+                "labels": [{"name": "tag", "value": f"profile:{profile}"}, {"name": "tag", "value": "item:X"}]}
+        (tmp_path / f"s{i}-result.json").write_text(json.dumps(data))
+    text = format_summary(summarize(load_results(tmp_path)))
+    assert "by profile: crh2 2 (1 passed, 1 failed); metro-tcn 1 (1 passed)" in text.splitlines()
