@@ -352,3 +352,9 @@ def _(sut: TrainDriver, t_action: int, bus: str, bound: float) -> None:
         assert max(gaps) - min(gaps) <= 100, f"port {address:#05x} is not polled cyclically: gaps " \
                                               f"{ms(min(gaps))}..{ms(max(gaps))}"
         assert max(gaps) <= us(bound), f"port {address:#05x} polled every {ms(max(gaps))} (bound {bound} ms)"
+
+
+@then(parsers.parse('the cab {cab:d} display shows "{node}" as WTB master'))
+def _(sut: TrainDriver, cab: int, node: str) -> None:
+    shown = sut.monitor(cab)
+    assert shown.get("WTB master") == node, f"the cab {cab} display shows WTB master {shown.get('WTB master')!r}"
