@@ -19,4 +19,5 @@ STEP_MODULES = [
     "steps.environment",
     "steps.longrun",
     "steps.metro",
+    "steps.vdx",
 ]

@@ -16,7 +16,8 @@ MAX_SLOTS = 48
 NICE_MS = (1, 2, 5, 10, 20, 50, 100, 200, 500, 1000, 2000, 5000, 10_000, 20_000, 60_000, 120_000, 300_000,
            600_000, 1_200_000, 3_600_000, 7_200_000, 18_000_000, 36_000_000)   # up to 10 h: 72 h runs
 EVENT_KINDS = ("fault.", "env.", "supply.", "ccu.takeover", "txc.failsafe", "rxc.failsafe", "token.form", "token.init", "in.set",
-               "in.ramp", "desk.", "time.skip", "master.take", "line.switch", "mode.change", "io.select", "train.stop")
+               "in.ramp", "desk.", "time.skip", "master.take", "line.switch", "mode.change", "io.select", "train.stop",
+               "selftest.postpone", "fs.")
 MAX_LANES = 14
 
 
@@ -94,6 +95,10 @@ def wavejson(trace: Trace, start_us: int, end_us: int) -> dict | None:
             per_slot = buses.setdefault(ev.source, {})
             if per_slot.get(slot(ev)) != "lost":
                 per_slot[slot(ev)] = "lost" if ev["lost"] else ev["master"]
+        elif ev.kind == "loop.change":                  # VDX: the emergency-brake loop and its relays
+            outputs.setdefault("EB loop", []).append((slot(ev), ev["state"]))
+        elif ev.kind == "relay.change":
+            outputs.setdefault(ev.source, []).append((slot(ev), "energised" if ev["energised"] else "released"))
         elif ev.kind == "pd.change":                    # metro: traction/brake a VVVF or BECU applies
             outputs.setdefault(ev.source, []).append((slot(ev), f"{ev['value']:g} %"))
         elif ev.kind == "rxc.source":

@@ -155,31 +155,39 @@ def test_ramp_needs_a_positive_rate_and_a_number(train) -> None:
         train.ramp_input("doors", 1, 1)
 
 
-# -- metro TCDS (profile metro-tcn) ------------------------------------------------------------------
-@pytest.fixture
-def metro():
-    driver = open_backend("reference", "metro-tcn")
-    yield driver
-    driver.shutdown()
-
-
-@pytest.mark.parametrize(("call", "error", "words"), [
-    (lambda t: t.set_input("car1.IO1.DI29", 1), OutOfRange, ["DI29", "DI01-DI28 or AI1-AI3"]),
-    (lambda t: t.set_input("car1.IO1.AI4", 1), OutOfRange, ["AI4", "DI01-DI28 or AI1-AI3"]),
-    (lambda t: t.set_input("car2.IO1.AI1", 1), UnknownName, ["vehicle input", "car2.IO1.AI1"]),
-    (lambda t: t.set_traction(1, 101), OutOfRange, ["traction demand 101", "0-100"]),
-    (lambda t: t.insert_key(2), OutOfRange, ["cab 2", "1 or 6"]),
-    (lambda t: t.cut_line("unit3.MVB", "A"), UnknownName, ["bus", "unit3.MVB", "unit2.MVB"]),
-    (lambda t: t.cut_line("WTB", "C"), OutOfRange, ["line of WTB 'C'", "A or B"]),
-    (lambda t: t.disturb_line("WTB", "A", 0), OutOfRange, ["frames to disturb 0"]),
-    (lambda t: t.fail("car2.CCU"), UnknownName, ["car2.CCU", "car2.VCU"]),
-    (lambda t: t.fail("car2.VCU.VMS"), UnknownName, ["car2.VCU.VMS"]),
-    (lambda t: t.records("car2.VVVF"), UnknownName, ["CCU or VCU", "car2.VVVF"]),
-    (lambda t: t.configure(sets=1, cars_per_set=8), OutOfRange, ["1 x 8 cars", "6 cars"]),
-    (lambda t: t.ring_nodes(), SutError, ["does not implement ring_nodes()", "metro-tcn"]),
+# -- the other profiles of the reference: metro-tcn, atp ----------------------------------------------
+@pytest.mark.parametrize(("profile", "call", "error", "words"), [
+    ("metro-tcn", lambda t: t.set_input("car1.IO1.DI29", 1), OutOfRange, ["DI29", "DI01-DI28 or AI1-AI3"]),
+    ("metro-tcn", lambda t: t.set_input("car1.IO1.AI4", 1), OutOfRange, ["AI4", "DI01-DI28 or AI1-AI3"]),
+    ("metro-tcn", lambda t: t.set_input("car2.IO1.AI1", 1), UnknownName, ["vehicle input", "car2.IO1.AI1"]),
+    ("metro-tcn", lambda t: t.set_traction(1, 101), OutOfRange, ["traction demand 101", "0-100"]),
+    ("metro-tcn", lambda t: t.insert_key(2), OutOfRange, ["cab 2", "1 or 6"]),
+    ("metro-tcn", lambda t: t.cut_line("unit3.MVB", "A"), UnknownName, ["bus", "unit3.MVB", "unit2.MVB"]),
+    ("metro-tcn", lambda t: t.cut_line("WTB", "C"), OutOfRange, ["line of WTB 'C'", "A or B"]),
+    ("metro-tcn", lambda t: t.disturb_line("WTB", "A", 0), OutOfRange, ["frames to disturb 0"]),
+    ("metro-tcn", lambda t: t.fail("car2.CCU"), UnknownName, ["car2.CCU", "car2.VCU"]),
+    ("metro-tcn", lambda t: t.fail("car2.VCU.VMS"), UnknownName, ["car2.VCU.VMS"]),
+    ("metro-tcn", lambda t: t.records("car2.VVVF"), UnknownName, ["CCU or VCU", "car2.VVVF"]),
+    ("metro-tcn", lambda t: t.configure(sets=1, cars_per_set=8), OutOfRange, ["1 x 8 cars", "6 cars"]),
+    ("metro-tcn", lambda t: t.ring_nodes(), SutError, ["does not implement ring_nodes()", "metro-tcn"]),
+    ("atp", lambda t: t.set_input("VDX firmware", "beta"), OutOfRange, ["VDX firmware 'beta'", "old or new"]),
+    ("atp", lambda t: t.set_input("ATP emergency brake", 1), OutOfRange, ["ATP emergency brake 1", "True"]),
+    ("atp", lambda t: t.set_input("EB loop", True), UnknownName, ["input", "ATP isolation switch"]),
+    ("atp", lambda t: t.output("EB3R"), UnknownName, ["output", "EB2R"]),
+    ("atp", lambda t: t.set_supply_voltage("VDX", 500), OutOfRange, ["supply voltage 500", "0-200 V"]),
+    ("atp", lambda t: t.set_supply_voltage("DCU", 110), UnknownName, ["supply", "DCU", "VDX"]),
+    ("atp", lambda t: t.configure(sets=2), OutOfRange, ["train sets 2"]),
 ])
-def test_metro_bad_input_names_value_and_what_is_allowed(metro, call, error, words) -> None:
+def test_profile_bad_input_names_value_and_what_is_allowed(profile, call, error, words) -> None:
+    driver = open_backend("reference", profile)
     with pytest.raises(error) as err:
-        call(metro)
+        call(driver)
     for word in words:
         assert word in str(err.value)
+
+
+def test_the_vdx_firmware_is_chosen_before_power_up() -> None:
+    driver = open_backend("reference", "atp")
+    driver.power_on()
+    with pytest.raises(SutError, match="before power-up"):
+        driver.set_input("VDX firmware", "old")

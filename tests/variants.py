@@ -8,6 +8,7 @@ subclass that changes parameters: the reference's code is never edited at run ti
 from __future__ import annotations
 
 from sut.reference.backend import ReferenceTrain
+from sut.reference.atp.backend import ReferenceAtp
 from sut.reference.metro.backend import ReferenceMetro
 
 MS = 1000
@@ -486,3 +487,70 @@ FAULTY += [
     (EmergencyOperationAtSpeed, "TCN-09", "F-NET-25"),
 ]
 IN_BAND += [BriskMetro]
+
+
+# -- VDX emergency-brake interface (profile atp, issue 7) -----------------------------------------------
+class NewFirmwarePostpones16ms(ReferenceAtp):
+    """VDX-06: the new firmware still postpones a self-test only 16 ms after a release."""
+    VDX = {"postpone_us": {"old": 16 * MS, "new": 16 * MS}}
+
+
+class Threshold12V(ReferenceAtp):
+    """VDX-03: the self-test passes below 12 V instead of 6 V."""
+    VDX = {"low_threshold_v": 12.0}
+
+
+class SampledAtOnce(ReferenceAtp):
+    """VDX-03: the FS output is sampled as the excitation is removed, not from the 2nd ms."""
+    VDX = {"sample_at_us": 0}
+
+
+class SelfTestEvery10s(ReferenceAtp):
+    """VDX-03: the FS self-test every 10 s."""
+    VDX = {"selftest_period_us": 10_000 * MS}
+
+
+class C019Clears(ReferenceAtp):
+    """VDX-03: after C019 the FS output comes back without a restart."""
+    VDX = {"c019_latches": False}
+
+
+class RelayDropsIn2ms(ReferenceAtp):
+    """VDX-04: EB2R drops 2 ms after its coil loses power, so every 3 ms self-test brakes the train."""
+    VDX = {"relay_no_open_us": 2 * MS}
+
+
+class SlowRelay(ReferenceAtp):
+    """VDX-04: EB2R opens the loop 7 ms after its coil loses power."""
+    VDX = {"relay_no_open_us": 7 * MS}
+
+
+class NarrowSupply(ReferenceAtp):
+    """VDX-02: works only from 80 % of 110 V."""
+    VDX = {"supply_lo": 0.80}
+
+
+class IsolationIgnored(ReferenceAtp):
+    """VDX-01: the isolation switch does not bypass the relay contacts."""
+    VDX = {"isolation_bypasses": False}
+
+
+class AnotherCoil(ReferenceAtp):
+    """In band: a coil that gives back its energy more slowly (C019 window 33.7 ms at 137 V, inside the
+    article's 30..36 ms) and a quicker relay (4 ms to drop, 6 ms to pick up)."""
+    VDX = {"fall_min_ms": 0.2, "fall_a_ms": 8.0, "fall_tau_ms": 15.0, "relay_no_open_us": 4 * MS,
+           "relay_pick_up_us": 6 * MS}
+
+
+FAULTY += [
+    (NewFirmwarePostpones16ms, "VDX-06", "F-ATP-06"),
+    (Threshold12V, "VDX-03", "F-ATP-06"),
+    (SampledAtOnce, "VDX-03", "F-ATP-05"),
+    (SelfTestEvery10s, "VDX-03", "F-ATP-05"),
+    (C019Clears, "VDX-03", "F-ATP-05"),
+    (RelayDropsIn2ms, "VDX-04", "F-ATP-05"),
+    (SlowRelay, "VDX-04", "F-ATP-04"),
+    (NarrowSupply, "VDX-02", "F-ATP-04"),
+    (IsolationIgnored, "VDX-01", "F-ATP-04"),
+]
+IN_BAND += [AnotherCoil]

@@ -1,16 +1,18 @@
 """`reference`: the embedded reference trains, one backend name for every profile they implement.
 
 Like python-can's `Bus(interface=...)`, opening the backend gives the class of the train asked for:
-`crh2` (sut/reference/backend.py) or `metro-tcn` (sut/reference/metro/backend.py).
+`crh2` (sut/reference/backend.py), `metro-tcn` (sut/reference/metro/backend.py) or `atp`
+(sut/reference/atp/backend.py).
 """
 from __future__ import annotations
 
 from sut.driver import TrainDriver
 from sut.errors import UnknownName
 from sut.reference.backend import ReferenceTrain
+from sut.reference.atp.backend import ReferenceAtp
 from sut.reference.metro.backend import ReferenceMetro
 
-TRAINS: dict[str, type[TrainDriver]] = {"crh2": ReferenceTrain, "metro-tcn": ReferenceMetro}
+TRAINS: dict[str, type[TrainDriver]] = {"crh2": ReferenceTrain, "metro-tcn": ReferenceMetro, "atp": ReferenceAtp}
 
 
 class Reference(TrainDriver):

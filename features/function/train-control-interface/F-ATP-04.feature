@@ -1,0 +1,63 @@
+@item:F-ATP-04 @profile:atp @req:TST-04
+Feature: F-ATP-04 VDX emergency-brake loop: EB1R and EB2R in series, the isolation switch, the supply range
+  Requirements: VDX-01 (primary), VDX-02, VDX-04, TST-04.
+  The ATP opens the train's emergency-brake loop through EB1R (energised = brake, HR output) and EB2R
+  (de-energised = brake, FS output) in series; the isolation switch bypasses both. The VDX works on
+  110 V DC from 70 % to 125 % (77-137.5 V). Bound from the relay data (VDX-04): the NO contact of EB2R
+  moves within 6 ms of its coil losing power.
+
+  Background:
+    Given a CTCS3-300T ATP with its VDX emergency-brake interface
+    And the train has been powered up for 1000 ms
+
+  @req:VDX-01
+  Scenario: F-ATP-04 Released: EB2R energised, EB1R not, the loop closed
+    When the ATP releases the emergency brake
+    And 100 ms pass
+    Then the emergency-brake loop is closed
+    And relay EB2R is energised
+    And relay EB1R is de-energised
+
+  @req:VDX-01 @req:VDX-04
+  Scenario: F-ATP-04 Braking: the loop opens within 6 ms through both relays
+    Given the ATP has released the emergency brake
+    When 100 ms pass
+    And the ATP applies the emergency brake
+    And 100 ms pass
+    Then the emergency-brake loop opens within 6 ms
+    And relay EB2R is de-energised
+    And relay EB1R is energised
+
+  @req:VDX-01
+  Scenario: F-ATP-04 The isolation switch bypasses both relays
+    When the ATP isolation switch is turned on
+    And 100 ms pass
+    Then the emergency-brake loop is closed
+    And relay EB1R is energised
+
+  @req:VDX-02
+  Scenario Outline: F-ATP-04 Inside 70-125 % of 110 V (<volts> V) the brake is released
+    Given the FS output is fed with <volts> V
+    And the ATP has released the emergency brake
+    When 12 s pass
+    Then the emergency-brake loop is closed
+    And no C019 is raised
+
+    Examples:
+      | volts |
+      | 77    |
+      | 110   |
+      | 137.5 |
+
+  @req:VDX-02
+  Scenario Outline: F-ATP-04 Outside 70-125 % of 110 V (<volts> V) the VDX brakes
+    Given the ATP has released the emergency brake
+    When 100 ms pass
+    And the VDX supply goes to <volts> V
+    And 100 ms pass
+    Then the emergency-brake loop opens within 20 ms
+
+    Examples:
+      | volts |
+      | 76    |
+      | 138   |

@@ -1,0 +1,226 @@
+"""Steps of the emergency-brake interface of the ATP (VDX-01..06): the EB loop, its relays, the FS self-test
+and fault C019. The self-tests are read from the trace as a data logger (AELog) records them: `selftest`
+(its start, the ms since the last release, the sampled FS voltage and the verdict) and `selftest.end`.
+"""
+from __future__ import annotations
+
+import allure
+import pytest
+from pytest_bdd import given, parsers, then, when
+
+from sut.driver import TrainDriver
+from steps.analysis import describe, intervals, ms, us
+
+SELFTEST_PERIOD_US = 5_000_000          # VDX-03: every 5 s
+THRESHOLD_V = 6.0                       # VDX-03
+
+
+@given("a CTCS3-300T ATP with its VDX emergency-brake interface")
+def _(sut: TrainDriver) -> None:
+    sut.configure(sets=1)
+
+
+@given(parsers.parse("the VDX runs the {firmware:w} firmware"))
+def _(sut: TrainDriver, firmware: str) -> None:
+    sut.set_input("VDX firmware", firmware)
+
+
+@given(parsers.parse("the FS output is fed with {volts:g} V"))
+@when(parsers.parse("the VDX supply goes to {volts:g} V"), target_fixture="t_action")
+def _(sut: TrainDriver, volts: float) -> int:
+    sut.set_supply_voltage("VDX", volts)
+    return sut.now_us
+
+
+@given("the ATP has released the emergency brake")
+@when("the ATP releases the emergency brake", target_fixture="t_action")
+def _(sut: TrainDriver) -> int:
+    sut.set_input("ATP emergency brake", False)
+    return sut.now_us
+
+
+@when("the ATP applies the emergency brake", target_fixture="t_action")
+def _(sut: TrainDriver) -> int:
+    sut.set_input("ATP emergency brake", True)
+    return sut.now_us
+
+
+@when("the ATP isolation switch is turned on", target_fixture="t_action")
+def _(sut: TrainDriver) -> int:
+    sut.set_input("ATP isolation switch", True)
+    return sut.now_us
+
+
+@when("the VDX is restarted", target_fixture="t_action")
+def _(sut: TrainDriver) -> int:
+    sut.power_off("VDX")
+    sut.advance(us(1000))
+    sut.restore_power("VDX")
+    return sut.now_us
+
+
+def _next_selftest(sut: TrainDriver) -> int:
+    last = sut.trace.last(kind="selftest")
+    assert last is not None, "no FS self-test yet: let the VDX run at least 5 s before"
+    due = last.t + SELFTEST_PERIOD_US
+    while due <= sut.now_us:
+        due += SELFTEST_PERIOD_US
+    return due
+
+
+def release_before_selftest(sut: TrainDriver, offset_ms: float) -> int:
+    """Brake for 300 ms, then release `offset_ms` before the next FS self-test is due (5 s after the last);
+    returns the release time."""
+    due = _next_selftest(sut)
+    release = due - us(offset_ms)
+    if release - us(300) < sut.now_us:
+        due += SELFTEST_PERIOD_US
+        release += SELFTEST_PERIOD_US
+    sut.advance(release - us(300) - sut.now_us)
+    sut.set_input("ATP emergency brake", True)
+    sut.advance(release - sut.now_us)
+    sut.set_input("ATP emergency brake", False)
+    return release
+
+
+@when(parsers.parse("the ATP releases the emergency brake {offset:g} ms before the next FS self-test"),
+      target_fixture="t_action")
+def _(sut: TrainDriver, offset: float) -> int:
+    return release_before_selftest(sut, offset)
+
+
+# -- the loop and its relays (VDX-01, VDX-04) ------------------------------------------------------------
+@then(parsers.parse("the emergency-brake loop is {state:w}"))
+def _(sut: TrainDriver, state: str) -> None:
+    assert sut.output("EB loop") == state, f"the emergency-brake loop is {sut.output('EB loop')}, not {state}"
+
+
+@then(parsers.parse("relay {relay:w} is {state}"))
+def _(sut: TrainDriver, relay: str, state: str) -> None:
+    assert sut.output(relay) == state, f"{relay} is {sut.output(relay)}, not {state}"
+
+
+@then(parsers.parse("the emergency-brake loop opens within {bound:g} ms"))
+def _(sut: TrainDriver, t_action: int, bound: float) -> None:
+    opened = sut.trace.first(kind="loop.change", since=t_action, state="open")
+    assert opened is not None, "the emergency-brake loop never opened"
+    assert opened.t - t_action <= us(bound), f"the loop opened after {ms(opened.t - t_action)} (bound {bound} ms)"
+
+
+@then("the emergency-brake loop stays closed")
+def _(sut: TrainDriver, t_action: int) -> None:
+    opened = sut.trace.select(kind="loop.change", since=t_action, state="open")
+    assert not opened, f"the emergency-brake loop opened: {describe(opened)}"
+    assert sut.output("EB loop") == "closed"
+
+
+# -- the FS self-test (VDX-03) -----------------------------------------------------------------------------
+def _selftests(sut: TrainDriver, since: int) -> list:
+    return sut.trace.select(kind="selftest", since=since)
+
+
+@then(parsers.parse("an FS self-test comes every {period:g} s"))
+def _(sut: TrainDriver, t_action: int, period: float) -> None:
+    times = [e.t for e in _selftests(sut, t_action)]
+    assert len(times) >= 3, f"only {len(times)} FS self-tests"
+    gaps = intervals(times)
+    assert set(gaps) == {us(period * 1000)}, f"FS self-tests {ms(min(gaps))}..{ms(max(gaps))} apart, not {period} s"
+
+
+@then(parsers.parse("each FS self-test pulls the FS output low for {length:g} ms and samples it {at:g} ms in"))
+def _(sut: TrainDriver, t_action: int, length: float, at: float) -> None:
+    tests = _selftests(sut, t_action)
+    ends = sut.trace.select(kind="selftest.end", since=t_action)
+    assert tests and len(ends) >= len(tests) - 1, f"{len(tests)} self-tests, {len(ends)} ends"
+    for test, end in zip(tests, ends):
+        assert end.t - test.t == us(length), f"a self-test held the FS output low {ms(end.t - test.t)}"
+        assert test["sample_ms"] == at, f"a self-test sampled {test['sample_ms']} ms in, not {at} ms"
+
+
+@then(parsers.parse("every FS self-test sampled at {threshold:g} V or more raised C019 and none below"))
+def _(sut: TrainDriver, threshold: float) -> None:
+    tests = _selftests(sut, 0)
+    assert tests, "no FS self-test"
+    wrong = [t for t in tests if (t["sample_v"] >= threshold) != (t["result"] == "C019")]
+    assert not wrong, f"self-test verdicts against the {threshold} V threshold: {describe(wrong)}"
+
+
+@then("C019 is raised and the emergency-brake loop stays open")
+def _(sut: TrainDriver, t_action: int) -> None:
+    raised = sut.trace.first(kind="fault.C019", since=t_action)
+    assert raised is not None, f"no C019; self-tests: {describe(_selftests(sut, t_action))}"
+    assert sut.output("VDX fault") == "C019" and sut.output("EB loop") == "open", \
+        f"after C019 the VDX shows {sut.output('VDX fault')}, the loop is {sut.output('EB loop')}"
+
+
+@then("no C019 is raised")
+def _(sut: TrainDriver, t_action: int) -> None:
+    raised = sut.trace.select(kind="fault.C019", since=t_action)
+    assert not raised and sut.output("VDX fault") == "none", \
+        f"C019 raised: {describe(raised)}; self-tests: {describe(_selftests(sut, t_action))}"
+
+
+@then(parsers.parse("an FS self-test ran at least {least:g} ms after the release"))
+def _(sut: TrainDriver, t_action: int, least: float) -> None:
+    tests = _selftests(sut, t_action)
+    assert tests, "no FS self-test after the release"
+    first = tests[0]
+    assert first.t - t_action >= us(least), f"the first self-test ran {ms(first.t - t_action)} after the release"
+
+
+# -- the C019 sweep (VDX-05, VDX-06) -------------------------------------------------------------------
+@pytest.fixture
+def c019_sweep() -> dict:
+    """(volts, offset ms) -> C019 raised, filled by the sweep step."""
+    return {}
+
+
+@when(parsers.parse("the release is swept from {lo:d} to {hi:d} ms before an FS self-test at {volts} V"))
+def _(sut: TrainDriver, c019_sweep: dict, lo: int, hi: int, volts: str) -> None:
+    for v in [float(x) for x in volts.replace(" and ", ",").split(",")]:
+        sut.set_supply_voltage("VDX", v)
+        for offset in range(lo, hi + 1):
+            if sut.output("VDX fault") == "C019":
+                sut.power_off("VDX")                      # C019 latches until restart (VDX-06)
+                sut.advance(us(100))
+                sut.restore_power("VDX")
+                sut.set_input("ATP emergency brake", False)
+                sut.advance(SELFTEST_PERIOD_US + us(100))
+            release = release_before_selftest(sut, offset)
+            sut.advance(us(200))
+            c019_sweep[(v, offset)] = sut.trace.first(kind="fault.C019", since=release) is not None
+    rows = ["offset ms," + ",".join(f"{v:g} V" for v in sorted({k[0] for k in c019_sweep}))]
+    for offset in range(lo, hi + 1):
+        rows.append(f"{offset}," + ",".join("C019" if c019_sweep[(v, offset)] else "-"
+                                            for v in sorted({k[0] for k in c019_sweep})))
+    allure.attach("\n".join(rows), name="C019 sweep", attachment_type=allure.attachment_type.CSV)
+
+
+def _c019_offsets(c019_sweep: dict, volts: float) -> list[int]:
+    return sorted(o for (v, o), hit in c019_sweep.items() if v == volts and hit)
+
+
+@then(parsers.parse("at {volts:g} V C019 is raised for every release under {below:g} ms before the test"))
+def _(c019_sweep: dict, volts: float, below: float) -> None:
+    swept = sorted(o for (v, o) in c019_sweep if v == volts)
+    missing = [o for o in swept if o < below and not c019_sweep[(volts, o)]]
+    assert swept and not missing, f"at {volts:g} V no C019 for releases {missing} ms before the test"
+
+
+@then(parsers.parse("at {volts:g} V no C019 is raised for a release {least:g} ms or more before the test"))
+def _(c019_sweep: dict, volts: float, least: float) -> None:
+    wrong = [o for o in _c019_offsets(c019_sweep, volts) if o >= least]
+    assert not wrong, f"at {volts:g} V C019 for releases {wrong} ms before the test"
+
+
+@then(parsers.parse("no C019 is raised at any offset"))
+def _(c019_sweep: dict) -> None:
+    hits = sorted(k for k, hit in c019_sweep.items() if hit)
+    assert c019_sweep and not hits, f"C019 at (V, ms before the test): {hits}"
+
+
+@then(parsers.parse("C019 comes at {high:g} V for every offset it comes at {low:g} V, and for more"))
+def _(c019_sweep: dict, high: float, low: float) -> None:
+    at_high, at_low = set(_c019_offsets(c019_sweep, high)), set(_c019_offsets(c019_sweep, low))
+    assert at_low <= at_high, f"C019 at {low:g} V but not at {high:g} V for offsets {sorted(at_low - at_high)} ms"
+    assert len(at_high) > len(at_low), f"C019 offsets at {high:g} V {sorted(at_high)}, at {low:g} V {sorted(at_low)}"
