@@ -20,4 +20,5 @@ STEP_MODULES = [
     "steps.longrun",
     "steps.metro",
     "steps.vdx",
+    "steps.atp",
 ]

@@ -269,6 +269,15 @@ class TrainDriver(abc.ABC):
         """The event records stored in a unit's memory (VMS), oldest first, as `t_ms origin: text`."""
         raise self._unsupported("records")
 
+    # -- on-board ATP (profile atp) ---------------------------------------------------------------
+    def pass_balise(self, group: str, packets: list[dict[str, Any]]) -> None:
+        """The train passes balise group `group` (e.g. `70-2-4-15`) now, with these packets, each a dict
+        with `type` (`CTCS-1` with `sections` [(start m, length m, carrier Hz, end signal)], `MA` with
+        `end_m`, `ETCS-68` with `start_m` and `length_m`, `ETCS-46`, `line direction` with `direction`
+        up/down, `default` with `side_line`, `stop point` with `at_m` and `psd`, `linking` with `next`
+        [(group, at m)]). Positions are metres along the line."""
+        raise self._unsupported("pass_balise")
+
     # -- traffic -------------------------------------------------------------------------------
     def request_block_transfer(self, node: str, data: bytes) -> None:
         """Give `node` a record to send as block data (PRO-06)."""

@@ -177,6 +177,12 @@ def test_ramp_needs_a_positive_rate_and_a_number(train) -> None:
     ("atp", lambda t: t.set_supply_voltage("VDX", 500), OutOfRange, ["supply voltage 500", "0-200 V"]),
     ("atp", lambda t: t.set_supply_voltage("DCU", 110), UnknownName, ["supply", "DCU", "VDX"]),
     ("atp", lambda t: t.configure(sets=2), OutOfRange, ["train sets 2"]),
+    ("atp", lambda t: t.set_input("carrier", 1800), OutOfRange, ["carrier 1800", "1700, 2000, 2300, 2600"]),
+    ("atp", lambda t: t.set_input("speed", -5), OutOfRange, ["speed -5"]),
+    ("atp", lambda t: t.fail("CRN"), UnknownName, ["board", "CRN", "CFSK"]),
+    ("atp", lambda t: t.monitor_order(1, "carrier set", "left"), OutOfRange, ["carrier set 'left'", "down or up"]),
+    ("atp", lambda t: t.records("CCU"), UnknownName, ["recording unit", "ATP"]),
+    ("atp", lambda t: t.pass_balise("1-1-1-1", []), NotPoweredUp, ["not powered up"]),
 ])
 def test_profile_bad_input_names_value_and_what_is_allowed(profile, call, error, words) -> None:
     driver = open_backend("reference", profile)

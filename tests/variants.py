@@ -542,7 +542,67 @@ class AnotherCoil(ReferenceAtp):
            "relay_pick_up_us": 6 * MS}
 
 
+class FsToPsAt300m(ReferenceAtp):
+    """ATP-06: FS turns into PS 300 m before the end of authority (the old value)."""
+    ATP = {"fs_to_ps_m": 300.0}
+
+
+class StopWindow1m(ReferenceAtp):
+    """ATP-09: the stop window is -1 m .. +1 m."""
+    ATP = {"stop_window_m": 1.0}
+
+
+class CarrierAfterOneComparison(ReferenceAtp):
+    """ATP-03: the CFSK reports a new carrier after one comparison."""
+    ATP = {"cfsk_confirmations": 1}
+
+
+class DefSteps2500ms(ReferenceAtp):
+    """ATP-08: DEF steps of 2.5 s (25 s in all)."""
+    ATP = {"def_step_us": 2500 * MS}
+
+
+class NoRearWidening(ReferenceAtp):
+    """ATP-02: the receiver range is not widened by v*dt to the rear (false carrier alarms at speed)."""
+    ATP = {"widen_rear": False}
+
+
+class DefaultPsBelow50(ReferenceAtp):
+    """ATP-07: PS after a default telegram already below 50 km/h."""
+    ATP = {"default_ps_kmh": 50.0}
+
+
+class CarrierSetFixed(ReferenceAtp):
+    """ATP-04: balise up/down-line information does not switch the carrier set."""
+    ATP = {"balise_switches_carrier_set": False}
+
+
+class FaultyCfskDecodes(ReferenceAtp):
+    """ATP-01: a faulty CFSK keeps sending decoded results."""
+    ATP = {"fault_stops_decoding": False}
+
+
+class Etcs46Unknown(ReferenceAtp):
+    """ATP-11: ETCS-46 packets give a balise information error (the bug the article fixed)."""
+    ATP = {"parses_etcs46": False}
+
+
+class NoLinkingException(ReferenceAtp):
+    """ATP-12: missing groups 70-2-4-15/16 brake like any other."""
+    ATP = {"no_reaction_groups": ()}
+
+
 FAULTY += [
+    (FsToPsAt300m, "ATP-06", "F-ATP-09"),
+    (StopWindow1m, "ATP-09", "F-ATP-11"),
+    (CarrierAfterOneComparison, "ATP-03", "F-ATP-07"),
+    (DefSteps2500ms, "ATP-08", "F-ATP-10"),
+    (NoRearWidening, "ATP-02", "F-ATP-08"),
+    (DefaultPsBelow50, "ATP-07", "F-ATP-09"),
+    (CarrierSetFixed, "ATP-04", "F-ATP-07"),
+    (FaultyCfskDecodes, "ATP-01", "F-ATP-07"),
+    (Etcs46Unknown, "ATP-11", "F-ATP-12"),
+    (NoLinkingException, "ATP-12", "F-ATP-12"),
     (NewFirmwarePostpones16ms, "VDX-06", "F-ATP-06"),
     (Threshold12V, "VDX-03", "F-ATP-06"),
     (SampledAtOnce, "VDX-03", "F-ATP-05"),
@@ -553,4 +613,11 @@ FAULTY += [
     (NarrowSupply, "VDX-02", "F-ATP-04"),
     (IsolationIgnored, "VDX-01", "F-ATP-04"),
 ]
-IN_BAND += [AnotherCoil]
+class AnotherAtpRig(ReferenceAtp):
+    """In band: another installation and CFSK: antenna 4.5 m behind the front, +-8 m odometry, comparisons
+    every 40 ms (so a 120 ms decode delay). The features compute their edges from what it declares."""
+    ATP = {"d_sen_m": 4.5, "position_uncertainty_m": 8.0, "cfsk_period_us": 40 * MS,
+           "decode_delay_us": 120 * MS}
+
+
+IN_BAND += [AnotherCoil, AnotherAtpRig]

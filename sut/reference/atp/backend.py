@@ -1,8 +1,17 @@
 """The train-control interface reference (profile `atp`) behind the driver interface.
 
-So far the VDX emergency-brake interface of the CTCS3-300T (VDX-01..06). Names:
-- inputs: `ATP emergency brake` (the ATP's brake command to the VDX, bool), `ATP isolation switch` (bool),
-  `VDX firmware` (`old` or `new`, before power-up);
+Two parts, as on a lab rig: the CTCS-2 200C on-board functions (ATP-01..12, `onboard.py`) and the VDX
+emergency-brake interface of the CTCS3-300T (VDX-01..06, `vdx.py`). Names:
+- ATP inputs: `position` (m, the odometry simulator), `speed` (km/h), the track-circuit signal generator
+  `carrier` (Hz), `low frequency code`, `amplitude` (mV), `track circuit type`; `sleep`, `ATO start`,
+  `cab signal mode` (bool); DMI order (`monitor_order`) `carrier set` = `up`/`down`; balises through
+  `pass_balise`; boards `CFSK`, `MTORE` (`fail`/`repair`);
+- ATP outputs: `ATP mode` (SB FS PS CS SL AM), `ATP brake` (none, max service, emergency), `ATO allowed`,
+  `door enable`, `PSD permission` (granted/withheld), `neutral section` (passing/none), `CFSK carrier set`;
+  `records("ATP")` the CFSK records; `monitor(1)` the DMI messages; `rated_limits()` the declared D_Sen,
+  decode delay, position uncertainty and CFSK comparison period;
+- VDX inputs: `ATP emergency brake` (the ATP's brake command to the VDX, bool), `ATP isolation switch`
+  (bool), `VDX firmware` (`old` or `new`, before power-up);
 - supplies: `VDX` (its 110 V input, which also feeds the FS output), `train 110V`;
 - outputs: `EB loop` (`open` = emergency brake, `closed`), `EB1R`, `EB2R` (`energised`/`de-energised`),
   `VDX fault` (`C019` or `none`); reading `FS output voltage` (V).
@@ -15,12 +24,16 @@ from typing import Any, ClassVar
 from sut.driver import TrainDriver
 from sut.errors import OutOfRange, SutError, UnknownName
 from sut.reference.atp.config import POSTPONE, AtpConfig
+from sut.reference.atp.onboard import CARRIER_SETS, OnboardAtp
 from sut.reference.atp.vdx import VdxInterface
 from sut.reference.kernel import Kernel
 from sut.trace import Trace, TraceEvent
 
-INPUTS = ("ATP emergency brake", "ATP isolation switch", "VDX firmware")
-OUTPUTS = ("EB loop", "EB1R", "EB2R", "VDX fault")
+INPUTS = ("ATP emergency brake", "ATP isolation switch", "VDX firmware", "position", "speed", "carrier",
+          "low frequency code", "amplitude", "track circuit type", "sleep", "ATO start", "cab signal mode")
+OUTPUTS = ("EB loop", "EB1R", "EB2R", "VDX fault", "ATP mode", "ATP brake", "ATO allowed", "door enable",
+           "PSD permission", "neutral section", "CFSK carrier set")
+BOARDS = ("CFSK", "MTORE")
 SUPPLIES = ("VDX", "train 110V")
 
 
@@ -28,13 +41,15 @@ class ReferenceAtp(TrainDriver):
     backend_name = "reference"
     PROFILES = ("atp",)
     VDX: ClassVar[dict[str, Any]] = {}
+    ATP: ClassVar[dict[str, Any]] = {}
 
     def __init__(self) -> None:
         super().__init__()
-        self._cfg = AtpConfig().with_vdx(**self.VDX)
+        self._cfg = AtpConfig().with_vdx(**self.VDX).with_atp(**self.ATP)
         self.kernel = Kernel()
         self._events: list[TraceEvent] = []
         self.vdx = VdxInterface(self.kernel, self._cfg.vdx, self._emit)
+        self.atp = OnboardAtp(self.kernel, self._cfg.atp, self._emit)
 
     def _emit(self, source: str, kind: str, **fields: Any) -> None:
         self._events.append(TraceEvent(self.kernel.now, source, kind, fields))
@@ -46,6 +61,7 @@ class ReferenceAtp(TrainDriver):
 
     def _power_on(self) -> None:
         self.vdx.power_on()
+        self.atp.power_on()
 
     @property
     def now_us(self) -> int:
@@ -60,32 +76,60 @@ class ReferenceAtp(TrainDriver):
 
     # -- inputs and outputs ----------------------------------------------------------------------
     def set_input(self, name: str, value: Any) -> None:
-        if name in ("ATP emergency brake", "ATP isolation switch"):
+        atp = self.atp
+        if name in ("ATP emergency brake", "ATP isolation switch", "sleep", "ATO start", "cab signal mode"):
             if not isinstance(value, bool):
                 raise OutOfRange(name, value, "on (True) or off (False)")
             if name == "ATP emergency brake":
                 self.vdx.command_brake(value)
-            else:
+            elif name == "ATP isolation switch":
                 self.vdx.set_isolation(value)
+            else:
+                atp.set_mode_input(name, value)
         elif name == "VDX firmware":
             if value not in POSTPONE:
                 raise OutOfRange("VDX firmware", value, " or ".join(POSTPONE))
             if self.powered:
                 raise SutError("the VDX firmware is chosen before power-up")
             self.vdx.firmware = value
+        elif name in ("position", "speed", "amplitude"):
+            limits = {"position": (-1e6, 1e6), "speed": (0, 350), "amplitude": (0, 10_000)}[name]
+            if isinstance(value, bool) or not isinstance(value, (int, float)) or not limits[0] <= value <= limits[1]:
+                raise OutOfRange(name, value, f"{limits[0]:g}..{limits[1]:g}")
+            if name == "position":
+                atp.position_m = float(value)
+            elif name == "speed":
+                atp.speed_kmh = float(value)
+            else:
+                atp.gen.amplitude_mv = float(value)
+        elif name == "carrier":
+            allowed = sorted({f for fs in CARRIER_SETS.values() for f in fs})
+            if value not in allowed and value != 0:
+                raise OutOfRange("carrier", value, f"{', '.join(map(str, allowed))} Hz or 0 (none)")
+            atp.gen.carrier = value
+        elif name in ("low frequency code", "track circuit type"):
+            if not isinstance(value, str) or not value:
+                raise OutOfRange(name, value, "a name such as L, U, HU or ZPW-2000")
+            if name == "low frequency code":
+                atp.gen.code = value
+            else:
+                atp.gen.circuit_type = value
         else:
             raise UnknownName("input", name, INPUTS)
         self._emit("train", "in.set", name=name, value=value)
 
     def input(self, name: str) -> Any:
+        atp = self.atp
         values = {"ATP emergency brake": self.vdx.eb_demand, "ATP isolation switch": self.vdx.isolated,
-                  "VDX firmware": self.vdx.firmware}
+                  "VDX firmware": self.vdx.firmware, "position": atp.position_m, "speed": atp.speed_kmh,
+                  "carrier": atp.gen.carrier, "low frequency code": atp.gen.code,
+                  "amplitude": atp.gen.amplitude_mv, "track circuit type": atp.gen.circuit_type, **atp.inputs}
         if name not in values:
             raise UnknownName("input", name, INPUTS)
         return values[name]
 
     def output(self, name: str) -> str:
-        vdx = self.vdx
+        vdx, atp = self.vdx, self.atp
         if name == "EB loop":
             return vdx.loop
         if name in ("EB1R", "EB2R"):
@@ -93,17 +137,69 @@ class ReferenceAtp(TrainDriver):
             return "energised" if relay.energised else "de-energised"
         if name == "VDX fault":
             return "C019" if vdx.c019 else "none"
+        if name == "ATP mode":
+            return atp.s.mode
+        if name == "ATP brake":
+            return atp.s.brake
+        if name in ("ATO allowed", "door enable", "PSD permission"):
+            return "granted" if atp.permission(name) else "withheld"
+        if name == "neutral section":
+            return "passing" if atp.neutral_command else "none"
+        if name == "CFSK carrier set":
+            return atp.cfsk.carrier_set
         raise UnknownName("output", name, OUTPUTS)
 
     def reading(self, name: str) -> float:
-        if name != "FS output voltage":
-            raise UnknownName("reading", name, ["FS output voltage"])
-        return self.vdx.supply_v if self.vdx.eb2r.powered else 0.0
+        if name == "FS output voltage":
+            return self.vdx.supply_v if self.vdx.eb2r.powered else 0.0
+        if name == "position":
+            return round(self.atp.position_m, 3)
+        raise UnknownName("reading", name, ["FS output voltage", "position"])
+
+    # -- the ATP's faults, balises, DMI and records ---------------------------------------------------
+    def fail(self, board: str) -> None:
+        self._board(board, True)
+
+    def repair(self, board: str) -> None:
+        self._board(board, False)
+
+    def _board(self, board: str, failed: bool) -> None:
+        if board == "CFSK":
+            self.atp.fail_cfsk(failed)
+        elif board == "MTORE":
+            self.atp.mtore_failed = failed
+        else:
+            raise UnknownName("board", board, BOARDS)
+        self._emit(board, "fault.fail" if failed else "fault.repair")
+
+    def pass_balise(self, group: str, packets: list[dict[str, Any]]) -> None:
+        self._require_power()
+        for pk in packets:
+            if not isinstance(pk, dict) or "type" not in pk:
+                raise OutOfRange(f"packet of balise group {group}", pk, "a dict with a 'type'")
+        self.atp.pass_balise(group, packets)
+
+    def monitor_order(self, cab: int, name: str, value: str) -> None:
+        if name != "carrier set":
+            raise UnknownName("DMI order", name, ["carrier set"])
+        if value not in CARRIER_SETS:
+            raise OutOfRange("carrier set", value, " or ".join(CARRIER_SETS))
+        self.atp.select_carrier_set(value, by="driver at the DMI")
+
+    def monitor(self, cab: int) -> dict[str, Any]:
+        return {"faults": list(self.atp.dmi), "mode": self.atp.s.mode}
+
+    def records(self, unit: str) -> list[str]:
+        if unit != "ATP":
+            raise UnknownName("recording unit", unit, ["ATP"])
+        return list(self.atp.records)
 
     # -- supply ----------------------------------------------------------------------------------
     def rated_limits(self) -> dict[str, Any]:
-        v = self._cfg.vdx
-        return {"supply_v": (v.supply_lo * v.nominal_v, v.supply_hi * v.nominal_v), "nominal_v": v.nominal_v}
+        v, a = self._cfg.vdx, self._cfg.atp
+        return {"supply_v": (v.supply_lo * v.nominal_v, v.supply_hi * v.nominal_v), "nominal_v": v.nominal_v,
+                "d_sen_m": a.d_sen_m, "position_uncertainty_m": a.position_uncertainty_m,
+                "decode_delay_ms": a.decode_delay_us / 1000, "cfsk_period_ms": a.cfsk_period_us / 1000}
 
     def set_supply_voltage(self, supply: str, volts: float) -> None:
         if supply not in SUPPLIES:

@@ -37,8 +37,33 @@ POSTPONE = {"old": 16 * MS, "new": 48 * MS}   # VDX-06
 
 
 @dataclass(frozen=True)
+class Atp:
+    cfsk_period_us: int = 50 * MS             # one CFSK comparison every 50 ms
+    cfsk_confirmations: int = 3               # ATP-03
+    decode_delay_us: int = 150 * MS           # ATP-02 dt: three comparisons
+    d_sen_m: float = 3.0                      # ATP-02 D_Sen: CFSK antenna behind the front
+    position_uncertainty_m: float = 5.0       # ATP-02: min/max safe front = position -/+ this
+    tick_us: int = 10 * MS                    # odometry and supervision
+    def_steps: int = 10                       # ATP-08
+    def_step_us: int = 2200 * MS              # ATP-08 (was 2.5 s)
+    fs_to_ps_m: float = 150.0                 # ATP-06 (was 300 m)
+    default_ps_kmh: float = 45.0              # ATP-07
+    stop_window_m: float = 0.5                # ATP-09
+    linking_window_m: float = 20.0            # a linked group not found 20 m past its place is missing
+    no_reaction_groups: tuple[str, ...] = ("70-2-4-15", "70-2-4-16")   # ATP-12
+    parses_etcs46: bool = True                # ATP-11
+    widen_rear: bool = True                   # ATP-02: the range reaches v*dt further to the rear
+    balise_switches_carrier_set: bool = True  # ATP-04
+    fault_stops_decoding: bool = True         # ATP-01: a faulty CFSK sends fault information, not results
+
+
+@dataclass(frozen=True)
 class AtpConfig:
     vdx: Vdx = Vdx()
+    atp: Atp = Atp()
 
     def with_vdx(self, **changes) -> "AtpConfig":
         return replace(self, vdx=replace(self.vdx, **changes))
+
+    def with_atp(self, **changes) -> "AtpConfig":
+        return replace(self, atp=replace(self.atp, **changes))

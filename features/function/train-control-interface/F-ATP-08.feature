@@ -1,0 +1,53 @@
+@item:F-ATP-08 @profile:atp @req:TST-04
+Feature: F-ATP-08 Carrier consistency against the balise's track circuits, at both ends of the receiver range
+  Requirements: ATP-02 (primary), TST-04.
+  The project's formula (the article's is an image): the CFSK receiver was somewhere in
+  Dmin = (front - uncertainty) - D_Sen - v*dt .. Dmax = (front + uncertainty) - D_Sen when it decoded; every
+  track circuit of the balise's CTCS-1 packet overlapping that range gives an allowed carrier. A received
+  carrier outside that set: the DMI says so, the line data is deleted, maximum service brake. The edges are
+  computed from the SUT's declared D_Sen, uncertainty and decode delay, so any implementation that declares
+  them is tested at its own edges.
+
+  Background:
+    Given a CTCS-2 200C on-board ATP on the test rig
+    And the ATP has completed its start-up self-test
+
+  @req:ATP-02
+  Scenario Outline: F-ATP-08 Front end at standstill: the next section's carrier is consistent <delta> m past the edge
+    Given the train stands <delta> m ahead of the front edge for the section boundary at 1000 m
+    And the train has passed balise group "2-1-1-1" describing track circuits 0-1000 m 1700 Hz, 1000-2000 m 2300 Hz and an end of authority at 3000 m
+    When the signal generator switches to 2300 Hz with code L
+    And 500 ms pass
+    Then <verdict>
+
+    Examples:
+      | delta | verdict                                           |
+      | 0.1   | the ATP finds the carrier consistent               |
+      | -0.1  | the ATP declares the carrier inconsistent          |
+
+  @req:ATP-02
+  Scenario Outline: F-ATP-08 Rear end at <kmh> km/h: the old carrier is inconsistent only once v*dt behind the edge
+    Given the signal generator sends 1700 Hz with code L
+    And the train is at 960 m running at <kmh> km/h
+    And the train has passed balise group "2-1-1-1" describing track circuits 0-1000 m 1700 Hz, 1000-2000 m 2300 Hz and an end of authority at 3000 m
+    When 6 s pass
+    Then the ATP declares the carrier inconsistent as the rear of the receiver range passes 1000 m at <kmh> km/h
+    And the ATP commands max service brake
+    And the DMI shows "carrier inconsistent"
+    And the line data is deleted
+
+    Examples:
+      | kmh |
+      | 36  |
+      | 72  |
+      | 120 |
+
+  @req:ATP-02
+  Scenario: F-ATP-08 The carrier of the section the train is in is consistent
+    Given the train is at 500 m running at 0 km/h
+    And the train has passed balise group "2-1-1-1" describing track circuits 0-1000 m 1700 Hz, 1000-2000 m 2300 Hz and an end of authority at 3000 m
+    When the signal generator switches to 1700 Hz with code L
+    And 1000 ms pass
+    Then the ATP finds the carrier consistent
+    And the ATP commands no brake
+    And the ATP is in mode FS

@@ -1,0 +1,44 @@
+@item:F-ATP-12 @profile:atp @req:TST-04
+Feature: F-ATP-12 Neutral sections from ETCS-68, ETCS-46 parsed, and the missing balise-group exception
+  Requirements: ATP-11 (primary), ATP-12, TST-04.
+  The ATP passes a neutral section announced in an ETCS-68 packet by itself; an ETCS-46 packet is read
+  without a balise information error. A linked balise group that is not found brings maximum service brake,
+  except groups 70-2-4-15 and 70-2-4-16 (site-specific: linking reaction none).
+
+  Background:
+    Given a CTCS-2 200C on-board ATP on the test rig
+    And the ATP has completed its start-up self-test
+    And the train is at 500 m running at 0 km/h
+
+  @req:ATP-11
+  Scenario: F-ATP-12 The neutral section announced by ETCS-68 is passed from its start to its end
+    Given the train has passed balise group "5-1-1-1" announcing a neutral section from 1000 m, 30 m long (ETCS-68)
+    When the train runs from 900 m to 1200 m at 72 km/h
+    Then the ATP commands neutral-section passing from 1000 m to 1030 m, to within 1 m
+
+  @req:ATP-11
+  Scenario: F-ATP-12 An ETCS-46 packet is read without error
+    When the train passes balise group "5-1-1-2" with an ETCS-46 packet
+    And 100 ms pass
+    Then the DMI does not show "balise information error"
+    And the ATP commands no brake
+
+  @req:ATP-11
+  Scenario: F-ATP-12 A packet the ATP does not know is a balise information error
+    When the train passes balise group "5-1-1-3" with an ETCS-99 packet
+    And 100 ms pass
+    Then the DMI shows "balise information error"
+    And the ATP commands max service brake
+
+  @req:ATP-12
+  Scenario Outline: F-ATP-12 Missing group <group>: linking reaction <reaction>
+    Given the train has passed balise group "70-2-4-14" linking to group "<group>" at 800 m
+    When the train runs from 500 m to 900 m at 72 km/h
+    Then the linking reaction to the missing group "<group>" is <reaction>
+    And the ATP commands <brake> brake
+
+    Examples:
+      | group     | reaction    | brake       |
+      | 70-2-4-15 | none        | no          |
+      | 70-2-4-16 | none        | no          |
+      | 70-2-4-17 | max service | max service |

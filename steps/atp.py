@@ -1,0 +1,329 @@
+"""Steps of the CTCS-2 200C on-board ATP on a lab rig (ATP-01..12): balises, the track-circuit signal
+generator, odometry, and what the ATP decides. Positions where an edge lies are computed from what the SUT
+declares (`rated_limits()`: D_Sen, position uncertainty, decode delay, CFSK comparison period) with the
+project's formula (ATP-02):
+
+    Dmin = (front - uncertainty) - D_Sen - v * dt        Dmax = (front + uncertainty) - D_Sen
+
+the receiver can have been anywhere in [Dmin, Dmax] when it decoded; the range reaches v * dt further to
+the rear because the decoded carrier is dt old.
+"""
+from __future__ import annotations
+
+import re
+
+from pytest_bdd import given, parsers, then, when
+
+from sut.driver import TrainDriver
+from steps.analysis import describe, intervals, ms, us
+
+SECTION = re.compile(r"(?P<a>[\d.]+)-(?P<b>[\d.]+) m (?P<f>\d+) Hz")
+
+
+def _declared(sut: TrainDriver) -> dict:
+    return sut.rated_limits()
+
+
+def _front_edge(sut: TrainDriver, boundary: float) -> float:
+    """The front position at which Dmax reaches `boundary` (at standstill)."""
+    d = _declared(sut)
+    return boundary - d["position_uncertainty_m"] + d["d_sen_m"]
+
+
+def _rear_edge(sut: TrainDriver, boundary: float, kmh: float) -> float:
+    """The front position at which Dmin leaves `boundary` behind, at `kmh`."""
+    d = _declared(sut)
+    return boundary + d["position_uncertainty_m"] + d["d_sen_m"] + kmh / 3.6 * d["decode_delay_ms"] / 1000
+
+
+# -- rig set-up ---------------------------------------------------------------------------------------
+@given("a CTCS-2 200C on-board ATP on the test rig")
+def _(sut: TrainDriver) -> None:
+    sut.configure(sets=1)
+
+
+@given("the ATP has completed its start-up self-test", target_fixture="t_action")
+def _(sut: TrainDriver) -> int:
+    sut.power_on()
+    for _ in range(60):
+        if sut.trace.first(kind="def.done") is not None:
+            break
+        sut.advance(us(1000))
+    assert sut.trace.first(kind="def.done") is not None, "the ATP did not finish its DEF self-test in 60 s"
+    return sut.now_us
+
+
+@given(parsers.parse("the train is at {pos:g} m running at {kmh:g} km/h"))
+@when(parsers.parse("the train is set to {pos:g} m running at {kmh:g} km/h"), target_fixture="t_action")
+def _(sut: TrainDriver, pos: float, kmh: float) -> int:
+    sut.set_input("position", pos)
+    sut.set_input("speed", kmh)
+    return sut.now_us
+
+
+@given(parsers.parse("the train stands {delta:g} m ahead of the front edge for the section boundary at {boundary:g} m"))
+def _(sut: TrainDriver, delta: float, boundary: float) -> None:
+    sut.set_input("speed", 0)
+    sut.set_input("position", _front_edge(sut, boundary) + delta)
+
+
+@when(parsers.parse("the train slows to {kmh:g} km/h"), target_fixture="t_action")
+def _(sut: TrainDriver, kmh: float) -> int:
+    sut.set_input("speed", kmh)
+    return sut.now_us
+
+
+@when(parsers.parse("the train stops at {pos:g} m"), target_fixture="t_action")
+def _(sut: TrainDriver, pos: float) -> int:
+    sut.set_input("speed", 0)
+    sut.set_input("position", pos)
+    return sut.now_us
+
+
+@given(parsers.parse("the signal generator sends {carrier:d} Hz with code {code:w}"))
+@when(parsers.parse("the signal generator switches to {carrier:d} Hz with code {code:w}"), target_fixture="t_action")
+def _(sut: TrainDriver, carrier: int, code: str) -> int:
+    sut.set_input("carrier", carrier)
+    sut.set_input("low frequency code", code)
+    return sut.now_us
+
+
+@when(parsers.parse("the signal generator sends {carrier:d} Hz for {comparisons:d} comparisons, then {back:d} Hz again"),
+      target_fixture="t_action")
+def _(sut: TrainDriver, carrier: int, comparisons: int, back: int) -> int:
+    start = sut.now_us
+    sut.set_input("carrier", carrier)
+    sut.advance(us(_declared(sut)["cfsk_period_ms"] * comparisons))
+    sut.set_input("carrier", back)
+    return start
+
+
+@given(parsers.parse("the signal generator reports amplitude {mv:g} mV on a {kind} track circuit"))
+def _(sut: TrainDriver, mv: float, kind: str) -> None:
+    sut.set_input("amplitude", mv)
+    sut.set_input("track circuit type", kind)
+
+
+@when(parsers.parse("the driver selects the {which:w}-line carrier set at the DMI"), target_fixture="t_action")
+def _(sut: TrainDriver, which: str) -> int:
+    sut.monitor_order(1, "carrier set", which)
+    return sut.now_us
+
+
+@when(parsers.parse('the ATP input "{name}" is set'), target_fixture="t_action")
+def _(sut: TrainDriver, name: str) -> int:
+    sut.set_input(name, True)
+    return sut.now_us
+
+
+# -- balises --------------------------------------------------------------------------------------------
+def _balise(sut: TrainDriver, group: str, *packets: dict) -> int:
+    sut.pass_balise(group, list(packets))
+    return sut.now_us
+
+
+@given(parsers.parse('the train has passed balise group "{group}" describing track circuits {spec} '
+                     'and an end of authority at {eoa:g} m'))
+@when(parsers.parse('the train passes balise group "{group}" describing track circuits {spec} '
+                    'and an end of authority at {eoa:g} m'), target_fixture="t_action")
+def _(sut: TrainDriver, group: str, spec: str, eoa: float) -> int:
+    sections = [(float(m["a"]), float(m["b"]) - float(m["a"]), int(m["f"])) for m in SECTION.finditer(spec)]
+    assert sections, f"no track circuits in {spec!r} (write them as 0-1000 m 1700 Hz, ...)"
+    return _balise(sut, group, {"type": "CTCS-1", "sections": sections}, {"type": "MA", "end_m": eoa})
+
+
+@when(parsers.parse('the train passes side-line balise group "{group}" sending the default telegram'),
+      target_fixture="t_action")
+def _(sut: TrainDriver, group: str) -> int:
+    return _balise(sut, group, {"type": "default", "side_line": True})
+
+
+@given(parsers.parse('the train has passed balise group "{group}" with {direction:w}-line information'))
+@when(parsers.parse('the train passes balise group "{group}" with {direction:w}-line information'),
+      target_fixture="t_action")
+def _(sut: TrainDriver, group: str, direction: str) -> int:
+    return _balise(sut, group, {"type": "line direction", "direction": direction})
+
+
+@given(parsers.parse('the train has passed balise group "{group}" announcing a neutral section from {start:g} m, '
+                     '{length:g} m long (ETCS-68)'))
+def _(sut: TrainDriver, group: str, start: float, length: float) -> None:
+    _balise(sut, group, {"type": "ETCS-68", "start_m": start, "length_m": length})
+
+
+@given(parsers.parse('the train has passed balise group "{group}" giving a stop point at {at:g} m'))
+def _(sut: TrainDriver, group: str, at: float) -> None:
+    _balise(sut, group, {"type": "stop point", "at_m": at, "psd": False})
+
+
+@given(parsers.parse('the train has passed balise group "{group}" giving a stop point at {at:g} m '
+                     'with platform screen doors'))
+def _(sut: TrainDriver, group: str, at: float) -> None:
+    _balise(sut, group, {"type": "stop point", "at_m": at, "psd": True})
+
+
+@given(parsers.parse('the train has passed balise group "{group}" linking to group "{nxt}" at {at:g} m'))
+def _(sut: TrainDriver, group: str, nxt: str, at: float) -> None:
+    _balise(sut, group, {"type": "linking", "next": [(nxt, at)]})
+
+
+@when(parsers.parse('the train passes balise group "{group}" with an {packet} packet'), target_fixture="t_action")
+def _(sut: TrainDriver, group: str, packet: str) -> int:
+    return _balise(sut, group, {"type": packet})
+
+
+@when(parsers.parse("the train runs from {a:g} m to {b:g} m at {kmh:g} km/h"), target_fixture="t_action")
+def _(sut: TrainDriver, a: float, b: float, kmh: float) -> int:
+    sut.set_input("position", a)
+    sut.set_input("speed", kmh)
+    start = sut.now_us
+    sut.advance(us((b - a) / (kmh / 3.6) * 1000))
+    return start
+
+
+# -- what the ATP decides ---------------------------------------------------------------------------------
+@then(parsers.parse("the ATP is in mode {mode:w}"))
+def _(sut: TrainDriver, mode: str) -> None:
+    assert sut.output("ATP mode") == mode, f"the ATP is in mode {sut.output('ATP mode')}, not {mode}"
+
+
+@then(parsers.parse("the ATP commands {brake} brake"))
+def _(sut: TrainDriver, brake: str) -> None:
+    want = "none" if brake == "no" else brake
+    assert sut.output("ATP brake") == want, f"the ATP commands {sut.output('ATP brake')} brake, not {want}"
+
+
+@then(parsers.parse("the ATP grants {permission}"))
+def _(sut: TrainDriver, permission: str) -> None:
+    assert sut.output(permission) == "granted", f"{permission} is {sut.output(permission)}, not granted"
+
+
+@then(parsers.parse("the ATP withholds {permission}"))
+def _(sut: TrainDriver, permission: str) -> None:
+    assert sut.output(permission) == "withheld", f"{permission} is {sut.output(permission)}, not withheld"
+
+
+@then(parsers.parse('the DMI shows "{text}"'))
+def _(sut: TrainDriver, text: str) -> None:
+    shown = sut.monitor(1)["faults"]
+    assert any(text in m for m in shown), f"the DMI does not show {text!r}: {shown}"
+
+
+@then(parsers.parse('the DMI does not show "{text}"'))
+def _(sut: TrainDriver, text: str) -> None:
+    shown = sut.monitor(1)["faults"]
+    assert not any(text in m for m in shown), f"the DMI shows {text!r}: {shown}"
+
+
+@then("the line data is deleted")
+def _(sut: TrainDriver, t_action: int) -> None:
+    assert sut.trace.first(kind="linedata.delete", since=t_action) is not None, "the line data was kept"
+
+
+@then("the line data is kept")
+def _(sut: TrainDriver, t_action: int) -> None:
+    deleted = sut.trace.select(kind="linedata.delete", since=t_action)
+    assert not deleted, f"the line data was deleted: {describe(deleted)}"
+
+
+# -- CFSK ----------------------------------------------------------------------------------------------------
+@then(parsers.parse("the CFSK reports {carrier:d} Hz with code {code:w} together, after {n:d} agreeing comparisons"))
+def _(sut: TrainDriver, t_action: int, carrier: int, code: str, n: int) -> None:
+    report = sut.trace.first(kind="cfsk.report", since=t_action, carrier=carrier)
+    assert report is not None, f"the CFSK never reported {carrier} Hz"
+    assert report["code"] == code, f"the CFSK reported {carrier} Hz with code {report['code']}, not {code}"
+    period = us(_declared(sut)["cfsk_period_ms"])
+    lag = report.t - t_action
+    assert (n - 1) * period <= lag <= n * period, \
+        f"{carrier} Hz reported {ms(lag)} after it appeared: {n} comparisons {period / 1000:g} ms apart take " \
+        f"{(n - 1) * period / 1000:g}..{n * period / 1000:g} ms"
+
+
+@then(parsers.parse("the CFSK does not report {carrier:d} Hz"))
+def _(sut: TrainDriver, t_action: int, carrier: int) -> None:
+    reports = sut.trace.select(kind="cfsk.report", since=t_action, carrier=carrier)
+    assert not reports, f"the CFSK reported {carrier} Hz: {describe(reports)}"
+
+
+@then("the safety computer gets the CFSK fault and no decoded result")
+def _(sut: TrainDriver, t_action: int) -> None:
+    fault = sut.trace.first(kind="cfsk.fault", since=t_action)
+    assert fault is not None, "no CFSK fault information reached the safety computer"
+    decoded = sut.trace.select(kind="cfsk.report", since=fault.t)
+    assert not decoded, f"decoded results after the CFSK fault: {describe(decoded)}"
+
+
+@then(parsers.parse("the CFSK uses the {which:w}-line carrier set"))
+def _(sut: TrainDriver, which: str) -> None:
+    assert sut.output("CFSK carrier set") == which, f"the CFSK uses the {sut.output('CFSK carrier set')} set"
+
+
+@then(parsers.parse("the ATP records for the CFSK {fields}"))
+def _(sut: TrainDriver, fields: str) -> None:
+    records = [r for r in sut.records("ATP") if "CFSK" in r]
+    assert records, "no CFSK record"
+    for field in re.split(r",\s*|\s+and\s+", fields):
+        key, _, value = field.strip().partition(" ")
+        assert any(f"{key}=" in r and value in r for r in records), f"no CFSK record with {field!r}: {records}"
+
+
+# -- carrier consistency (ATP-02) ------------------------------------------------------------------------------
+@then(parsers.parse("the ATP declares the carrier inconsistent as the rear of the receiver range passes "
+                    "{boundary:g} m at {kmh:g} km/h"))
+def _(sut: TrainDriver, t_action: int, boundary: float, kmh: float) -> None:
+    event = sut.trace.first(kind="carrier.inconsistent", since=t_action)
+    assert event is not None, "the ATP never declared the carrier inconsistent"
+    edge = _rear_edge(sut, boundary, kmh)
+    slack = kmh / 3.6 * _declared(sut)["cfsk_period_ms"] / 1000     # one comparison's travel
+    assert edge - 0.01 <= event["at_m"] <= edge + slack, \
+        f"declared at {event['at_m']} m; the formula puts the edge at {edge:.2f} m (+{slack:.2f} m)"
+
+
+@then("the ATP finds the carrier consistent")
+def _(sut: TrainDriver, t_action: int) -> None:
+    bad = sut.trace.select(kind="carrier.inconsistent", since=t_action)
+    assert not bad, f"the ATP declared the carrier inconsistent: {describe(bad)}"
+
+
+@then("the ATP declares the carrier inconsistent")
+def _(sut: TrainDriver, t_action: int) -> None:
+    assert sut.trace.first(kind="carrier.inconsistent", since=t_action) is not None, \
+        "the ATP accepted a carrier outside the receiver range"
+
+
+# -- DEF self-test (ATP-08) ---------------------------------------------------------------------------------------
+@then(parsers.parse("the DEF self-test ran {n:d} steps {step:g} s apart and finished within {total:g} s"))
+def _(sut: TrainDriver, n: int, step: float, total: float) -> None:
+    steps = sut.trace.select(kind="def.step")
+    done = sut.trace.first(kind="def.done")
+    assert len(steps) == n, f"{len(steps)} DEF steps, not {n}"
+    gaps = set(intervals([s.t for s in steps]))
+    assert gaps == {us(step * 1000)}, f"DEF steps {sorted(g / 1e6 for g in gaps)} s apart, not {step} s"
+    assert all(s["readback"] == "ok" for s in steps), describe(steps)
+    assert done is not None and done.t - steps[0].t <= us(total * 1000), \
+        f"the DEF self-test took {ms(done.t - steps[0].t) if done else 'forever'} (bound {total} s)"
+
+
+@then("the DEF self-test stops at a wrong read-back")
+def _(sut: TrainDriver) -> None:
+    wrong = sut.trace.first(kind="def.step", readback="wrong")
+    assert wrong is not None, "no DEF step found the wrong read-back"
+    assert sut.trace.first(kind="def.done") is None, "the DEF self-test finished despite a wrong read-back"
+
+
+# -- neutral section, linking (ATP-11, ATP-12) ------------------------------------------------------------------
+@then(parsers.parse("the ATP commands neutral-section passing from {a:g} m to {b:g} m, to within {tol:g} m"))
+def _(sut: TrainDriver, t_action: int, a: float, b: float, tol: float) -> None:
+    changes = sut.trace.select(kind="neutral.command", since=t_action)
+    on = [c for c in changes if c["state"] == "passing"]
+    off = [c for c in changes if c["state"] == "none"]
+    assert len(on) == 1 and len(off) == 1, f"neutral-section commands: {describe(changes)}"
+    assert a <= on[0]["at_m"] <= a + tol, f"passing commanded at {on[0]['at_m']} m, section from {a} m"
+    assert b <= off[0]["at_m"] <= b + tol, f"passing ended at {off[0]['at_m']} m, section to {b} m"
+
+
+@then(parsers.parse('the linking reaction to the missing group "{group}" is {reaction}'))
+def _(sut: TrainDriver, t_action: int, group: str, reaction: str) -> None:
+    event = sut.trace.first(kind="linking.missing", since=t_action, group=group)
+    assert event is not None, f"the ATP did not notice group {group} missing"
+    assert event["reaction"] == reaction, f"linking reaction {event['reaction']!r}, not {reaction!r}"
