@@ -67,12 +67,6 @@ def _(sut: TrainDriver, delta: float, boundary: float) -> None:
     sut.set_input("position", _front_edge(sut, boundary) + delta)
 
 
-@when(parsers.parse("the train slows to {kmh:g} km/h"), target_fixture="t_action")
-def _(sut: TrainDriver, kmh: float) -> int:
-    sut.set_input("speed", kmh)
-    return sut.now_us
-
-
 @when(parsers.parse("the train stops at {pos:g} m"), target_fixture="t_action")
 def _(sut: TrainDriver, pos: float) -> int:
     sut.set_input("speed", 0)

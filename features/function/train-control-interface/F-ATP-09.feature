@@ -31,7 +31,7 @@ Feature: F-ATP-09 FS to PS at 150 m before the end of authority; the default tel
     And 100 ms pass
     Then the ATP commands max service brake
     And the DMI shows "default telegram"
-    When the train slows to 45 km/h
+    When the train speed changes to 45 km/h
     And 100 ms pass
     Then the ATP is in mode FS
     And the line data is kept
@@ -41,7 +41,7 @@ Feature: F-ATP-09 FS to PS at 150 m before the end of authority; the default tel
     When the train is set to 2200 m running at 80 km/h
     And the train passes side-line balise group "3-1-1-2" sending the default telegram
     And 100 ms pass
-    And the train slows to 44 km/h
+    And the train speed changes to 44 km/h
     And 100 ms pass
     Then the ATP is in mode PS
     And the line data is deleted
