@@ -42,6 +42,11 @@ def _(sut: TrainDriver) -> None:
     sut.configure(sets=1)
 
 
+@given(parsers.parse("a CTCS-2 200C on-board ATP fitted to an {cars:d}-car CRH2 train set"))
+def _(sut: TrainDriver, cars: int) -> None:
+    sut.configure(sets=1, cars_per_set=cars)
+
+
 @given("the ATP has completed its start-up self-test", target_fixture="t_action")
 def _(sut: TrainDriver) -> int:
     sut.power_on()

@@ -16,6 +16,11 @@ emergency-brake interface of the CTCS3-300T (VDX-01..06, `vdx.py`). Names:
 - outputs: `EB loop` (`open` = emergency brake, `closed`), `EB1R`, `EB2R` (`energised`/`de-energised`),
   `VDX fault` (`C019` or `none`); reading `FS output voltage` (V).
 A restart of the VDX is `power_off("VDX")` then `restore_power("VDX")`.
+
+Fitted to a train (`configure(cars_per_set=8)`), the rig drives an embedded CRH2 train set on the same
+virtual clock: the ATP's brake reaches it as its `ATP brake` input (ILK-08: maximum service brake ->
+`service`, an open emergency-brake loop or an ATP emergency brake -> `emergency`), `speed` is the train's
+speed for both, and the desk, the ring and the vehicle's other inputs and outputs are the train's.
 """
 from __future__ import annotations
 
@@ -26,6 +31,7 @@ from sut.errors import OutOfRange, SutError, UnknownName
 from sut.reference.atp.config import POSTPONE, AtpConfig
 from sut.reference.atp.onboard import CARRIER_SETS, OnboardAtp
 from sut.reference.atp.vdx import VdxInterface
+from sut.reference.backend import ReferenceTrain
 from sut.reference.kernel import Kernel
 from sut.trace import Trace, TraceEvent
 
@@ -48,20 +54,78 @@ class ReferenceAtp(TrainDriver):
         self._cfg = AtpConfig().with_vdx(**self.VDX).with_atp(**self.ATP)
         self.kernel = Kernel()
         self._events: list[TraceEvent] = []
-        self.vdx = VdxInterface(self.kernel, self._cfg.vdx, self._emit)
-        self.atp = OnboardAtp(self.kernel, self._cfg.atp, self._emit)
+        self._crh2: ReferenceTrain | None = None
+        self._train_brake = "none"
+        self._build()
+
+    def _build(self) -> None:
+        self.vdx = VdxInterface(self.kernel, self._cfg.vdx, self._emit, on_loop=self._brake_to_train)
+        self.atp = OnboardAtp(self.kernel, self._cfg.atp, self._emit, on_brake=self._brake_to_train)
+
+    def _brake_to_train(self) -> None:
+        """ILK-08: the ATP's brake as the CRH2 train's `ATP brake` input."""
+        if self._crh2 is None:
+            return
+        if self.vdx.loop == "open" or self.atp.s.brake == "emergency":
+            brake = "emergency"
+        else:
+            brake = "service" if self.atp.s.brake == "max service" else "none"
+        if brake != self._train_brake:
+            self._train_brake = brake
+            self._crh2.set_input("ATP brake", brake)
 
     def _emit(self, source: str, kind: str, **fields: Any) -> None:
         self._events.append(TraceEvent(self.kernel.now, source, kind, fields))
 
     # -- life cycle and time -------------------------------------------------------------------
-    def configure(self, *, sets: int = 1, cars_per_set: int = 8) -> None:
+    def configure(self, *, sets: int = 1, cars_per_set: int | None = None) -> None:
+        """One ATP on the rig; with `cars_per_set`, fitted to a CRH2 train set of that many cars."""
         if sets != 1:
             raise OutOfRange("train sets", sets, "1 (one ATP-equipped train)")
+        if cars_per_set is None:
+            return
+        if self.powered or self._crh2 is not None:
+            raise SutError("fit the ATP to a train before anything else is done")
+        crh2 = ReferenceTrain()
+        crh2.configure(sets=1, cars_per_set=cars_per_set)
+        self._crh2 = crh2
+        self.kernel = crh2.train.kernel          # one clock for the ATP and the train
+        self._events = crh2.train.events         # and one trace
+        self._build()
 
     def _power_on(self) -> None:
+        if self._crh2 is not None:
+            self._crh2.power_on()
         self.vdx.power_on()
         self.atp.power_on()
+        self._brake_to_train()
+
+    def _train(self) -> ReferenceTrain:
+        if self._crh2 is None:
+            raise SutError("the ATP is on the test rig, not fitted to a train (configure cars_per_set)")
+        return self._crh2
+
+    # The desk and the ring are the train's.
+    def insert_key(self, cab: int) -> None:
+        self._train().insert_key(cab)
+
+    def remove_key(self, cab: int) -> None:
+        self._train().remove_key(cab)
+
+    def set_direction(self, cab: int, direction: str) -> None:
+        self._train().set_direction(cab, direction)
+
+    def set_traction(self, cab: int, notch: int) -> None:
+        self._train().set_traction(cab, notch)
+
+    def set_brake(self, cab: int, step: int) -> None:
+        self._train().set_brake(cab, step)
+
+    def ring_nodes(self) -> list[str]:
+        return self._train().ring_nodes()
+
+    def devices(self, car: int) -> list[str]:
+        return self._train().devices(car)
 
     @property
     def now_us(self) -> int:
@@ -114,8 +178,13 @@ class ReferenceAtp(TrainDriver):
                 atp.gen.code = value
             else:
                 atp.gen.circuit_type = value
+        elif self._crh2 is not None:
+            self._crh2.set_input(name, value)
+            return
         else:
             raise UnknownName("input", name, INPUTS)
+        if name == "speed" and self._crh2 is not None:
+            self._crh2.set_input("speed", value)
         self._emit("train", "in.set", name=name, value=value)
 
     def input(self, name: str) -> Any:
@@ -147,6 +216,8 @@ class ReferenceAtp(TrainDriver):
             return "passing" if atp.neutral_command else "none"
         if name == "CFSK carrier set":
             return atp.cfsk.carrier_set
+        if self._crh2 is not None:
+            return self._crh2.output(name)
         raise UnknownName("output", name, OUTPUTS)
 
     def reading(self, name: str) -> float:

@@ -67,8 +67,10 @@ class OnboardState:
 
 
 class OnboardAtp:
-    def __init__(self, kernel: Kernel, cfg: Atp, emit: Callable[..., None]):
+    def __init__(self, kernel: Kernel, cfg: Atp, emit: Callable[..., None],
+                 on_brake: Callable[[], None] | None = None):
         self.kernel, self.cfg, self._emit = kernel, cfg, emit
+        self._on_brake = on_brake
         self.s = OnboardState()
         self.cfsk = Cfsk()
         self.gen = Generator()
@@ -283,6 +285,8 @@ class OnboardAtp:
         if brake != self.s.brake:
             self.s.brake = brake
             self._emit("ATP", "brake.change", brake=brake, at_m=round(self.position_m, 3))
+            if self._on_brake is not None:
+                self._on_brake()
 
     def _delete_line_data(self, why: str) -> None:
         if self.s.sections or self.s.eoa_m is not None:

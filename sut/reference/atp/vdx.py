@@ -55,8 +55,10 @@ class Relay:
 class VdxInterface:
     """Both outputs, the two relays, the loop and the FS self-test."""
 
-    def __init__(self, kernel: Kernel, cfg: Vdx, emit: Callable[..., None]):
+    def __init__(self, kernel: Kernel, cfg: Vdx, emit: Callable[..., None],
+                 on_loop: Callable[[], None] | None = None):
         self.kernel, self.cfg, self._emit = kernel, cfg, emit
+        self._on_loop = on_loop
         self.supply_v = cfg.nominal_v
         self.firmware = "new"
         self.isolated = False
@@ -135,6 +137,8 @@ class VdxInterface:
         if state != self.loop:
             self.loop = state
             self._emit("VDX", "loop.change", state=state)
+            if self._on_loop is not None:
+                self._on_loop()
 
     # -- the FS self-test (VDX-03, VDX-05, VDX-06) --------------------------------------------------------
     def _selftest_due(self) -> None:

@@ -1,0 +1,49 @@
+@item:F-ATP-13 @profile:atp @req:TST-04
+Feature: F-ATP-13 The ATP's brake reaches the train: traction suppressed, brake commanded (ILK-08)
+  Requirements: ATP-02 (primary), ATP-11, VDX-01, ILK-08, TST-04.
+  The ATP fitted to a CRH2 train set: its maximum service brake reaches the train as an ATP brake, which
+  suppresses traction and raises the brake command to full service (ILK-08); its emergency brake opens the
+  train's emergency-brake loop through the VDX.
+
+  Background:
+    Given a CTCS-2 200C on-board ATP fitted to an 8-car CRH2 train set
+    And the driver has inserted the key in cab 1
+    And the direction switch of cab 1 is at forward
+    And the traction notch of cab 1 is at 3
+    And the ATP has completed its start-up self-test
+    And the ATP has released the emergency brake
+    And the train is at 500 m running at 100 km/h
+
+  @req:ILK-08
+  Scenario: F-ATP-13 Without an ATP brake the train pulls
+    When 500 ms pass
+    Then every CI receives traction notch 3 within 500 ms
+    And the "emergency brake" is released
+
+  @req:ATP-11 @req:ILK-08
+  Scenario: F-ATP-13 A balise information error: maximum service brake, no traction on the train
+    When the train passes balise group "6-1-1-1" with an ETCS-99 packet
+    And 300 ms pass
+    Then the ATP commands max service brake
+    And every CI receives traction notch 0 within 100 ms
+    And from 100 ms on every BCU receives brake step 7
+    And the "emergency brake" is released
+
+  @req:ATP-02 @req:ILK-08
+  Scenario: F-ATP-13 A carrier inconsistency brakes the train
+    Given the signal generator sends 1700 Hz with code L
+    And the train has passed balise group "6-1-1-2" describing track circuits 0-1000 m 1700 Hz, 1000-2000 m 2300 Hz and an end of authority at 5000 m
+    When the train is set to 980 m running at 100 km/h
+    And 2 s pass
+    Then the ATP declares the carrier inconsistent
+    And the ATP commands max service brake
+    And no CI receives a traction notch above 0 from 1600 ms on
+
+  @req:VDX-01 @req:ILK-08
+  Scenario: F-ATP-13 The ATP's emergency brake opens the train's loop through the VDX
+    When 500 ms pass
+    And the ATP applies the emergency brake
+    And 300 ms pass
+    Then the emergency-brake loop opens within 6 ms
+    And the "emergency brake" is applied
+    And every CI receives traction notch 0 within 100 ms
