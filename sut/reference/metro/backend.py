@@ -16,7 +16,7 @@ from __future__ import annotations
 from typing import Any, ClassVar
 
 from sut.driver import TrainDriver
-from sut.errors import OutOfRange, SutError, UnknownName
+from sut.errors import OutOfRange, UnknownName
 from sut.reference.metro.bus import LINES
 from sut.reference.metro.config import MetroConfig
 from sut.reference.metro.tcds import MetroTrain

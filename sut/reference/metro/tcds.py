@@ -22,7 +22,7 @@ from sut.reference.metro.bus import LINES, DualLineBus, FrameError
 from sut.reference.metro.config import MetroConfig
 from sut.reference.metro.ports import Command, IoPort
 from sut.reference.metro.units import (CAB_CARS, CAB_DEVICES, MOTOR_DEVICES, UNIT_CARS, ControlUnit, Device,
-                                       IoModule, Record, unit_of)
+                                       IoModule, Record)
 from sut.trace import TraceEvent
 
 FULL = 10_000          # 100 % in 0.01 % steps
