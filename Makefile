@@ -27,10 +27,12 @@ help: ## list the targets
 	@echo "CRH2 conformance suite (PYTEST_ARGS=... and SUT=... pass through to pytest)"
 	@grep -E '^[a-z][a-z-]*:.*## ' $(MAKEFILE_LIST) | sed -E 's/^([a-z-]+):.*## (.*)/  make \1\t\2/' | expand -t 20
 
-report: $(VENV_STAMP) $(NODE_STAMP) ## run every feature, build reports/html/index.html, print a summary
+report: $(VENV_STAMP) $(NODE_STAMP) ## run every feature, build reports/html/index.html and reports/traceability.{md,html}, print a summary
 	@rm -rf $(RESULTS) $(HTML) && mkdir -p $(RESULTS)
 	@# Keep pytest's status, still build the report, exit with that status at the end.
 	@$(PY) -m pytest features $(XDIST) --alluredir $(RESULTS) $(SUT_ARG) $(PYTEST_ARGS); status=$$?; \
+	$(PY) -m outline trace --results $(RESULTS) --md reports/traceability.md --html reports/traceability.html \
+		--allure $(RESULTS) || exit $$?; \
 	npx --no-install allure generate $(RESULTS) --output $(HTML) >/dev/null || exit $$?; \
 	$(PY) -m outline.allure_html $(HTML)/index.html; \
 	echo "report: $(HTML)/index.html"; \

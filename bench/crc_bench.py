@@ -1,4 +1,4 @@
-"""Throughput of our table CRC-16/ARC (`sut.reference.frames.crc16_arc`) against the `crc` package.
+"""Throughput of our table CRC-16/ARC (`sut.codecs.arcnet.crc16_arc`) against the `crc` package.
 
     PYTHONPATH=. python bench/crc_bench.py [--sizes 12 240 508] [--budget 1.0]
 
@@ -27,7 +27,7 @@ from typing import Callable
 if __package__ in (None, ""):
     sys.path.insert(0, str(Path(__file__).resolve().parent.parent))
 
-from sut.reference.frames import crc16_arc  # noqa: E402
+from sut.codecs.arcnet import crc16_arc  # noqa: E402
 
 
 def measure(fn: Callable[[bytes], int], data: bytes, budget: float, repeat: int) -> float:
@@ -74,7 +74,7 @@ def main(argv: list[str] | None = None) -> int:
     headers = ["bytes", *(f"{name} us" for name, _ in impls),
                *(f"{name} / table" for name, _ in impls[1:]), "table ns/byte"]
     title = (f"CRC-16/ARC, microseconds per frame (best of {args.repeat}; values checked equal)\n"
-             "table = sut.reference.frames.crc16_arc; crc opt = crc.Calculator(Crc16.IBM, optimized=True); "
+             "table = sut.codecs.arcnet.crc16_arc; crc opt = crc.Calculator(Crc16.IBM, optimized=True); "
              "crc bitwise = optimized=False")
 
     if not args.plain:

@@ -32,7 +32,8 @@ def main(argv: list[str] | None = None) -> int:
         description="Fail (exit 1) when a feature file and the registry disagree (unlisted or missing files, "
         "misplaced files, @item/@req tags vs registry, undefined requirement IDs, titles not starting "
         "with the item ID, duplicate titles), when a step matches no step definition or several, or when "
-        "a required_coverage ID is carried by no scenario. Warns when docs/requirements.md differs from "
+        "a required_coverage ID is carried by no scenario, or (with out_of_scope in the registry) a requirement "
+        "is claimed by no item and not listed there with a reason. Warns when docs/requirements.md differs from "
         "the shared copy.",
     )
     check.add_argument(
@@ -45,11 +46,16 @@ def main(argv: list[str] | None = None) -> int:
 
     trace = sub.add_parser(
         "trace",
-        help="print requirement -> items -> scenarios, item -> requirements, uncovered IDs",
+        help="requirement -> items -> scenarios, item -> requirements, coverage levels (text, Markdown, HTML, "
+        "an Allure entry)",
         description="Traceability tables, from the scenarios' @req tags and the registry's partly notes. "
         "Rich tables on a terminal, tab-separated text otherwise.",
     )
     trace.add_argument("--results", metavar="DIR", help="allure results directory: show each scenario's last status")
+    trace.add_argument("--md", metavar="FILE", help="write the matrix as Markdown (e.g. reports/traceability.md)")
+    trace.add_argument("--html", metavar="FILE", help="write the matrix as an HTML page")
+    trace.add_argument("--allure", metavar="DIR", help="add the HTML page to these allure results as one entry, "
+                       "'Traceability matrix' (failed when a requirement is covered by nothing)")
 
     args = parser.parse_args(argv)
     tree = Tree.at(args.root)
@@ -59,7 +65,7 @@ def main(argv: list[str] | None = None) -> int:
         return run(tree, None if args.no_steps else _step_modules(tree, args.step_module))
     from .trace import run
 
-    return run(tree, args.results)
+    return run(tree, args.results, md=args.md, html=args.html, allure=args.allure)
 
 
 if __name__ == "__main__":

@@ -203,6 +203,17 @@ def check_tree(
     for req in registry.required_coverage if registry else ():
         if req not in carried:
             P(Problem(reg_rel, registry.required_coverage_line, f"required coverage: {req} is carried by no scenario"))
+    if registry is not None and registry.out_of_scope is not None and known:
+        claimed = {req: item.id for item in registry.items.values() for req in item.requirements}
+        line = registry.out_of_scope_line
+        for req in known:
+            if req not in claimed and req not in registry.out_of_scope:
+                P(Problem(reg_rel, line, f"{req} is claimed by no item and not listed in out_of_scope with a reason"))
+        for req in registry.out_of_scope:
+            if req not in known:
+                P(Problem(reg_rel, line, f"out_of_scope: {req} is not defined in docs/requirements.md"))
+            elif req in claimed:
+                P(Problem(reg_rel, line, f"out_of_scope: {req} is claimed by item {claimed[req]}; take it out"))
     return result
 
 

@@ -55,6 +55,10 @@ class Registry:
     items: dict[str, Item]
     required_coverage: tuple[str, ...]
     required_coverage_line: int = 0
+    # Requirement ID -> why no item claims it. None: the registry has no out_of_scope key, and requirements
+    # nothing claims are only reported; a mapping (even empty): each must be claimed or listed here.
+    out_of_scope: dict[str, str] | None = None
+    out_of_scope_line: int = 0
 
     def item_for_feature(self, rel_path: str) -> Item | None:
         return next((item for item in self.items.values() if item.feature == rel_path), None)
@@ -101,7 +105,7 @@ def load_registry(path: str | Path, features_prefix: str = "features") -> Regist
     problems: list[tuple[int, str]] = []
     if not isinstance(data, dict):
         raise RegistryError(path, [(1, "registry must be a mapping with classes, required_coverage, items")])
-    for key in sorted(set(data) - {"classes", "required_coverage", "items"}):
+    for key in sorted(set(data) - {"classes", "required_coverage", "items", "out_of_scope"}):
         problems.append((data.line, f"unknown top-level key {key!r}"))
 
     classes = _load_classes(data.get("classes"), data.line, problems)
@@ -113,9 +117,24 @@ def load_registry(path: str | Path, features_prefix: str = "features") -> Regist
         if not REQ_ID.match(req):
             problems.append((data.line, f"required_coverage: {req!r} is not a requirement ID like NET-03"))
     items = _load_items(data.get("items"), classes, features_prefix, data.line, problems)
+    out_of_scope = None
+    if "out_of_scope" in data:
+        raw = data.get("out_of_scope") or {}
+        out_of_scope = {}
+        if not isinstance(raw, dict):
+            problems.append((data.line, "out_of_scope must map requirement ID -> why no item claims it"))
+            raw = {}
+        for req, why in raw.items():
+            if not REQ_ID.match(str(req)):
+                problems.append((raw.line, f"out_of_scope: {req!r} is not a requirement ID like NET-03"))
+            elif not isinstance(why, str) or not why.strip():
+                problems.append((raw.line, f"out_of_scope: {req} needs a reason"))
+            else:
+                out_of_scope[str(req)] = why.strip()
     if problems:
         raise RegistryError(path, problems)
-    return Registry(path, classes, items, tuple(coverage), _key_line(path, "required_coverage"))
+    return Registry(path, classes, items, tuple(coverage), _key_line(path, "required_coverage"),
+                    out_of_scope, _key_line(path, "out_of_scope"))
 
 
 def _key_line(path: Path, key: str) -> int:

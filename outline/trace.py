@@ -8,6 +8,7 @@ from __future__ import annotations
 
 import sys
 from dataclasses import dataclass, field
+from pathlib import Path
 
 from pytest_bdd.parser import render_string
 
@@ -109,7 +110,30 @@ def render_rich(trace: Trace, out) -> None:
     console.print(f"Covered by nothing ({len(trace.uncovered)}): {' '.join(trace.uncovered) or '-'}")
 
 
-def run(tree: Tree, results_dir: str | None, out=sys.stdout) -> int:
+def run(tree: Tree, results_dir: str | None, out=sys.stdout, md: str | None = None, html: str | None = None,
+        allure: str | None = None) -> int:
     trace = build_trace(tree, results_dir)
-    (render_rich if out.isatty() else render_plain)(trace, out)
+    if not (md or html or allure):
+        (render_rich if out.isatty() else render_plain)(trace, out)
+        return 0
+    import os
+
+    from .check import check_tree
+    from .coverage import counts, coverage
+    from .render import render, write_allure_result
+
+    checked = check_tree(tree, definitions=None)
+    registry = checked.registry
+    rows = coverage(trace, checked.requirements, registry.out_of_scope if registry else None)
+    for path, kind in ((md, "md"), (html, "html")):
+        if path:
+            doc = os.path.relpath(tree.requirements, Path(path).resolve().parent)
+            Path(path).parent.mkdir(parents=True, exist_ok=True)
+            Path(path).write_text(render(kind, rows, trace, checked.requirements, doc, results_dir), encoding="utf-8")
+    if allure:
+        page = render("html", rows, trace, checked.requirements, "requirements.md", results_dir)
+        write_allure_result(allure, page, rows)
+    c = counts(rows)
+    print(f"traceability: {c['full']} full, {c['partly']} partly, {c['none']} none, {c['out of scope']} out of "
+          f"scope" + "".join(f"; {p}" for p in (md, html) if p), file=out)
     return 0

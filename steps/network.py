@@ -3,6 +3,7 @@ from __future__ import annotations
 
 from pytest_bdd import parsers, then
 
+from sut.codecs import arcnet
 from sut.driver import TrainDriver
 from steps import analysis
 from steps.analysis import ms, us
@@ -287,3 +288,35 @@ def _(sut: TrainDriver, t_action: int, device: str) -> None:
     assert events, f"nothing went over {device}'s current loop"
     answered = [ev for ev in events if ev["reply"] or ev.kind == "loop.poll"]
     assert not answered, f"{device} is polled or answers: {analysis.describe(answered)}"
+
+
+@then(parsers.parse("every frame the analyser saw decodes as an ARCNET token or packet, {packets:d} packets at least"))
+def _(sut: TrainDriver, t_action: int, packets: int) -> None:
+    """NET-10 with the suite's own codec (sut/codecs/arcnet.py): ITT = 04 + destination twice; PAC = 01,
+    source, destination twice, length, data, CRC-16/ARC; at most 508 data bytes."""
+    seen = sut.trace.select(kind="link.tx", since=t_action)
+    assert seen, "the analyser saw no frame"
+    count = 0
+    for ev in seen:
+        wire = bytes.fromhex(ev["hex"])
+        try:
+            if wire[:1] == bytes([arcnet.EOT]):
+                arcnet.decode_itt(wire)
+            else:
+                _, _, data = arcnet.decode_pac(wire)
+                assert len(data) <= arcnet.MAX_DATA, f"{len(data)} data bytes in one packet"
+                count += 1
+        except arcnet.FrameError as exc:
+            raise AssertionError(f"{ev.t_ms:.3f} ms, {ev['frm']} -> {ev['to']}: {exc}") from None
+    assert count >= packets, f"only {count} packets decoded"
+
+
+@then(parsers.parse("the analyser finds the corrupted {kind} frame failing its ARCNET check"))
+def _(sut: TrainDriver, t_action: int, kind: str) -> None:
+    bad = []
+    for ev in sut.trace.select(kind="link.tx", since=t_action, frame=kind):
+        try:
+            arcnet.decode_pac(bytes.fromhex(ev["hex"]))
+        except arcnet.FrameError as exc:
+            bad.append(str(exc))
+    assert bad, f"every {kind} frame the analyser saw passed its check"

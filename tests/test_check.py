@@ -79,3 +79,34 @@ def test_examples_tags_must_be_plain(tmp_path: Path):
     assert [str(p) for p in result.problems] == [
         "features/routine/control/R-CTL-01.feature:6: @req:NET-03: kind:value tags cannot go on Examples"
     ]
+
+
+def _good_tree_with(tmp_path: Path, extra: str) -> Tree:
+    import shutil
+
+    shutil.copytree(DATA / "good", tmp_path / "good")
+    registry = tmp_path / "good" / "features" / "registry.yaml"
+    registry.write_text(registry.read_text(encoding="utf-8") + extra, encoding="utf-8")
+    return Tree.at(tmp_path / "good")
+
+
+def test_out_of_scope_makes_every_requirement_need_an_item_or_a_reason(tmp_path: Path):
+    # NET-01 is claimed by no item of the good tree: silent without out_of_scope, a problem with it.
+    tree = _good_tree_with(tmp_path, "out_of_scope: {}\n")
+    problems = [str(p) for p in check_tree(tree, None, shared=[]).problems]
+    assert problems == ["features/registry.yaml:28: NET-01 is claimed by no item and not listed in out_of_scope "
+                        "with a reason"]
+
+
+def test_out_of_scope_with_a_reason_is_accepted(tmp_path: Path):
+    tree = _good_tree_with(tmp_path, 'out_of_scope:\n  NET-01: "Two levels: the layout, not behaviour"\n')
+    assert check_tree(tree, None, shared=[]).problems == []
+
+
+def test_out_of_scope_must_give_a_reason_and_not_name_a_claimed_requirement(tmp_path: Path):
+    tree = _good_tree_with(tmp_path, 'out_of_scope:\n  NET-01: ""\n  NET-03: "duplicate"\n')
+    problems = [str(p) for p in check_tree(tree, None, shared=[]).problems]
+    assert any("out_of_scope: NET-01 needs a reason" in p for p in problems), problems
+    tree = _good_tree_with(tmp_path / "again", 'out_of_scope:\n  NET-01: "layout"\n  NET-03: "duplicate"\n')
+    problems = [str(p) for p in check_tree(tree, None, shared=[]).problems]
+    assert problems == ["features/registry.yaml:28: out_of_scope: NET-03 is claimed by item F-NET-01; take it out"]

@@ -47,3 +47,24 @@ def test_rich_tables_render(monkeypatch):
     text = out.getvalue()
     assert "Requirement -> items -> scenarios" in text
     assert "8-car set only" in text
+
+
+def test_matrix_as_markdown_html_and_an_allure_entry(tmp_path, data_on_path):
+    import json
+
+    from outline.trace import run
+
+    data_on_path("good")
+    out = io.StringIO()
+    md, html, results = tmp_path / "t.md", tmp_path / "t.html", tmp_path / "results"
+    assert run(Tree.at(DATA / "good"), None, out, md=str(md), html=str(html), allure=str(results)) == 0
+    # good tree: NET-03, NET-05, PRO-01, CMD-02, TST-03 claimed with scenarios; PRO-01 partly; NET-01 by none
+    assert "traceability: 4 full, 1 partly, 1 none, 0 out of scope" in out.getvalue()
+    text = md.read_text(encoding="utf-8")
+    assert "| [NET-01](" in text and "| none |" in text
+    assert "(partly: 8-car set only)" in text
+    page = html.read_text(encoding="utf-8")
+    assert '<tr class="none">' in page and "requirements.md#L" in page
+    (result,) = [json.loads(p.read_text()) for p in results.glob("*-result.json")]
+    assert result["status"] == "failed" and "NET-01" in result["statusDetails"]["message"]
+    assert (results / result["attachments"][0]["source"]).read_text(encoding="utf-8") .startswith("<!DOCTYPE html>")

@@ -1,122 +1,15 @@
-"""Wire formats of the ring (ARCNET, ATA 878.1) and of the CRH2 payloads above it.
-
-Layouts are `construct` structs so that the byte image is the specification. The CRC-16 of an ARCNET
-packet (generator x^16+x^15+x^2+1, reflected, zero start: CRC-16/ARC) is computed by `crc16_arc`; the
-`crc` package computes the same value but ~40x slower (bench/crc_bench.py), and every frame on the
-ring is checked, so the table version is used and tests/test_frames.py holds it equal to the library.
-"""
+"""The CRH2 payloads on the ring, above the ARCNET frames of sut/codecs/arcnet.py (re-exported here)."""
 from __future__ import annotations
 
 from dataclasses import dataclass
 from typing import Any
 
-from construct import (Byte, Bytes, Const, ConstructError, Int16ub, Int16ul, Int32sb, Int32ub, Padded,
-                       PrefixedArray, Struct, this)
+from construct import (Byte, Bytes, Const, ConstructError, Int16ub, Int32sb, Int32ub, Padded,
+                       PrefixedArray, Struct)
 
-# -- check sequences ------------------------------------------------------------------------------
-
-def _table(poly_reflected: int) -> list[int]:
-    table = []
-    for byte in range(256):
-        reg = byte
-        for _ in range(8):
-            reg = (reg >> 1) ^ poly_reflected if reg & 1 else reg >> 1
-        table.append(reg)
-    return table
-
-
-_ARC = _table(0xA001)     # x^16+x^15+x^2+1 reflected
-_X25 = _table(0x8408)     # x^16+x^12+x^5+1 reflected (HDLC FCS)
-
-
-def crc16_arc(data: bytes) -> int:
-    reg = 0
-    table = _ARC
-    for b in data:
-        reg = (reg >> 8) ^ table[(reg ^ b) & 0xFF]
-    return reg
-
-
-def crc16_x25(data: bytes) -> int:
-    """HDLC frame check sequence (CRC-16/X-25), used on the self-diagnostic line and MDM9 links."""
-    reg = 0xFFFF
-    table = _X25
-    for b in data:
-        reg = (reg >> 8) ^ table[(reg ^ b) & 0xFF]
-    return reg ^ 0xFFFF
-
-
-# -- ARCNET frames --------------------------------------------------------------------------------
-SOH, EOT = 0x01, 0x04
-BROADCAST = 0x00
-MAX_DATA = 508
-
-PAC_SHORT = Struct(
-    "soh" / Const(SOH, Byte),
-    "sid" / Byte,
-    "did" / Byte,
-    "did2" / Byte,
-    "il" / Byte,                      # 256 - data length (short packet, <= 253 data bytes)
-    "data" / Bytes(256 - this.il),
-    "crc" / Int16ul,
-)
-PAC_LONG = Struct(
-    "soh" / Const(SOH, Byte),
-    "sid" / Byte,
-    "did" / Byte,
-    "did2" / Byte,
-    "zero" / Const(0, Byte),
-    "il" / Byte,                      # 512 - data length (long packet, 257..508 data bytes)
-    "data" / Bytes(512 - this.il),
-    "crc" / Int16ul,
-)
-ITT = Struct("eot" / Const(EOT, Byte), "did" / Byte, "did2" / Byte)
-
-# ARCNET sends every byte as an 11-bit information symbol unit at 2.5 Mbit/s, plus a 6-bit alert burst.
-BITS_PER_BYTE = 11
-ALERT_BITS = 6
-
-
-class FrameError(ValueError):
-    """A byte image that is not a valid frame; says what is wrong and where."""
-
-
-def encode_pac(sid: int, did: int, data: bytes) -> bytes:
-    n = len(data)
-    if not 1 <= n <= MAX_DATA or 254 <= n <= 256:
-        raise FrameError(f"ARCNET packet data length {n} not allowed (1..253 or 257..508 bytes)")
-    if n <= 253:
-        body = PAC_SHORT.build(dict(sid=sid, did=did, did2=did, il=256 - n, data=data, crc=0))
-    else:
-        body = PAC_LONG.build(dict(sid=sid, did=did, did2=did, il=512 - n, data=data, crc=0))
-    return body[:-2] + crc16_arc(body[1:-2]).to_bytes(2, "little")
-
-
-def _declared(wire: bytes) -> tuple[int, int]:
-    """(offset of the data, whole packet length) as the packet's length byte(s) declare them."""
-    if wire[4] == 0:
-        return 6, (512 - wire[5]) + 8          # long packet: 0x00 then 512 - n
-    return 5, (256 - wire[4]) + 7              # short packet: 256 - n
-
-
-def decode_pac(wire: bytes) -> tuple[int, int, bytes]:
-    """(sid, did, data) of a packet; FrameError on a bad layout or check sequence."""
-    if len(wire) < 8 or wire[0] != SOH:
-        raise FrameError(f"not an ARCNET packet: {len(wire)} bytes starting {wire[:1].hex() or 'nothing'}")
-    long = wire[4] == 0
-    _, declared = _declared(wire)
-    if len(wire) != declared:
-        raise FrameError(f"ARCNET packet length byte says {declared} bytes, the frame has {len(wire)}")
-    try:
-        pac = (PAC_LONG if long else PAC_SHORT).parse(wire)
-    except ConstructError as exc:
-        raise FrameError(f"ARCNET packet layout: {exc}") from None
-    if pac.did != pac.did2:
-        raise FrameError(f"ARCNET packet destination bytes disagree: {pac.did:#04x} != {pac.did2:#04x}")
-    want = crc16_arc(wire[1:-2])
-    if pac.crc != want:
-        raise FrameError(f"ARCNET packet CRC {pac.crc:#06x}, computed {want:#06x}")
-    return pac.sid, pac.did, pac.data
+from sut.codecs.arcnet import (ALERT_BITS, BITS_PER_BYTE, BROADCAST, EOT, ITT, MAX_DATA, PAC_LONG,  # noqa: F401
+                               PAC_SHORT, SOH, FrameError, crc16_arc, crc16_x25, declared_length, decode_pac,
+                               encode_pac)
 
 
 def check_ok(wire: bytes) -> bool:
@@ -128,7 +21,7 @@ def check_ok(wire: bytes) -> bool:
     # The same checks as decode_pac, without building the parsed view: every node runs this on every frame.
     if len(wire) < 8 or wire[0] != SOH or wire[2] != wire[3]:
         return False
-    return len(wire) == _declared(wire)[1] and crc16_arc(wire[1:-2]) == int.from_bytes(wire[-2:], "little")
+    return len(wire) == declared_length(wire)[1] and crc16_arc(wire[1:-2]) == int.from_bytes(wire[-2:], "little")
 
 
 def payload_unchecked(wire: bytes) -> dict[str, Any]:
@@ -136,7 +29,7 @@ def payload_unchecked(wire: bytes) -> dict[str, Any]:
     where the length byte says it is, CRC ignored. FrameError if even that cannot be read."""
     if len(wire) < 8 or wire[0] != SOH:
         raise FrameError(f"not an ARCNET packet: {len(wire)} bytes")
-    offset, _ = _declared(wire)
+    offset, _ = declared_length(wire)
     return decode_payload(wire[offset:-2])
 
 
@@ -235,7 +128,7 @@ class Frame:
         """Payload length (what PRO-01/02 call the data length), from the packet's length byte."""
         if self.kind == EOT:
             return 0
-        offset, total = _declared(self.wire)
+        offset, total = declared_length(self.wire)
         return total - offset - 2
 
     @property

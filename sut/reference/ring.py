@@ -134,7 +134,7 @@ class Ring:
             self.train.emit(f"link.{span.name}", "link.tx", frm=link.src.name, to=link.dst.name,
                             frame=frame.name, bytes=len(frame.wire),
                             data_bytes=frame.data_bytes, start_us=now, end_us=now + duration,
-                            medium=span.medium)
+                            medium=span.medium, hex=frame.wire.hex())
         self.kernel.call_later(self.pass_through, self._arrive, link, frame, hops)
 
     # -- receiving ------------------------------------------------------------------------------

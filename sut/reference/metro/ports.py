@@ -16,7 +16,7 @@ import json
 import struct
 from dataclasses import dataclass
 
-from sut.reference.frames import crc16_x25
+from sut.codecs.arcnet import crc16_x25
 from sut.reference.metro.bus import FrameError
 
 IO_PORT_F_CODE = 3

@@ -1,0 +1,56 @@
+"""The traceability matrix as Markdown and HTML (jinja2 templates in outline/templates/), and as an Allure
+result carrying the HTML page, so the report links it as one entry of its own."""
+from __future__ import annotations
+
+import json
+import uuid
+from pathlib import Path
+
+from jinja2 import Environment, FileSystemLoader, select_autoescape
+
+from .coverage import Coverage, counts
+
+TEMPLATES = Path(__file__).parent / "templates"
+
+
+def _env(autoescape: bool) -> Environment:
+    return Environment(loader=FileSystemLoader(TEMPLATES), autoescape=select_autoescape(["html"]) if autoescape
+                       else False, trim_blocks=True, lstrip_blocks=True, keep_trailing_newline=True)
+
+
+def render(kind: str, rows: list[Coverage], trace, requirements: dict, req_doc: str,
+           results: str | None = None) -> str:
+    """`kind` is "md" or "html"; `req_doc` the path links to requirements.md take from the output file."""
+    template = _env(kind == "html").get_template(f"traceability.{kind}.j2")
+
+    def req_link(req: str) -> str:
+        line = requirements[req].line if req in requirements else 0
+        return f"{req_doc}#L{line}" if line else req_doc
+
+    return template.render(rows=rows, counts=counts(rows), items=sorted(trace.by_item.items()),
+                           with_status=bool(trace.status), results=results, req_link=req_link)
+
+
+def write_allure_result(results_dir: str | Path, html: str, rows: list[Coverage]) -> Path:
+    """One Allure result, "Traceability matrix", with the HTML page attached; failed when a requirement
+    is covered by nothing (and not out of scope), so the report's front page shows it."""
+    results_dir = Path(results_dir)
+    results_dir.mkdir(parents=True, exist_ok=True)
+    c = counts(rows)
+    name = f"Traceability matrix: {c['full']} full, {c['partly']} partly, {c['none']} none"
+    source = f"{uuid.uuid4()}-attachment.html"
+    (results_dir / source).write_text(html, encoding="utf-8")
+    missing = [r.req for r in rows if r.level == "none"]
+    result = {
+        "uuid": str(uuid.uuid4()), "historyId": "traceability-matrix", "name": name, "fullName": name,
+        "status": "failed" if missing else "passed",
+        "statusDetails": {"message": f"covered by nothing: {', '.join(missing)}"} if missing else {},
+        "stage": "finished", "start": 0, "stop": 0,
+        "labels": [{"name": "epic", "value": "Traceability"}, {"name": "suite", "value": "Traceability"},
+                   {"name": "tag", "value": "traceability"}],
+        "attachments": [{"name": "traceability matrix", "source": source, "type": "text/html"}],
+        "description": "Requirement -> items -> scenarios and item -> requirements, with coverage levels.",
+    }
+    path = results_dir / f"{result['uuid']}-result.json"
+    path.write_text(json.dumps(result), encoding="utf-8")
+    return path
