@@ -1,4 +1,4 @@
-"""python -m outline {check,trace}: consistency and traceability of the test outline."""
+"""python -m outline {check,trace,new}: consistency, traceability and new items of the test outline."""
 
 from __future__ import annotations
 
@@ -24,7 +24,7 @@ def main(argv: list[str] | None = None) -> int:
         "library and docs/requirements.md must agree.",
     )
     parser.add_argument("--root", default=str(REPO.root), help="repository root (default: %(default)s)")
-    sub = parser.add_subparsers(dest="command", required=True, metavar="{check,trace}")
+    sub = parser.add_subparsers(dest="command", required=True, metavar="{check,trace,new}")
 
     check = sub.add_parser(
         "check",
@@ -57,12 +57,29 @@ def main(argv: list[str] | None = None) -> int:
     trace.add_argument("--allure", metavar="DIR", help="add the HTML page to these allure results as one entry, "
                        "'Traceability matrix' (failed when a requirement is covered by nothing)")
 
+    new = sub.add_parser(
+        "new",
+        help="add a test item: a feature-file skeleton from the step library and its registry entry",
+        description="Writes features/<class>/<category>/<ID>.feature (the next free ID) with a Background for "
+        "the train profile and one @pending scenario, and adds the item to features/registry.yaml. Asks for "
+        "what is not given when run in a terminal.",
+    )
+    new.add_argument("--class", dest="cls", metavar="CLASS", help="test class, e.g. function")
+    new.add_argument("--category", help="category of the class, e.g. control")
+    new.add_argument("--title", help="what the item checks, in a few words")
+    new.add_argument("--req", help="requirement IDs it verifies, the primary first: CMD-02,PRO-01")
+    new.add_argument("--profile", default="crh2", help="train profile (default: %(default)s)")
+
     args = parser.parse_args(argv)
     tree = Tree.at(args.root)
     if args.command == "check":
         from .check import run
 
         return run(tree, None if args.no_steps else _step_modules(tree, args.step_module))
+    if args.command == "new":
+        from .new_item import run as new_item
+
+        return new_item(tree, args.cls, args.category, args.title, args.req, args.profile)
     from .trace import run
 
     return run(tree, args.results, md=args.md, html=args.html, allure=args.allure)
