@@ -52,7 +52,7 @@ trace: $(VENV_STAMP) ## python -m outline trace: requirement <-> item <-> scenar
 	$(PY) -m outline trace $(if $(wildcard $(RESULTS)),--results $(RESULTS))
 
 clean: ## remove reports and caches (keeps .venv and node_modules)
-	rm -rf $(RESULTS) $(HTML) .pytest_cache .hypothesis
+	rm -rf $(RESULTS) $(HTML) reports/history.jsonl reports/traceability.* .pytest_cache .hypothesis
 	find . -name __pycache__ -type d -not -path './$(VENV)/*' -not -path './node_modules/*' -prune -exec rm -rf {} +
 
 distclean: clean ## also remove .venv and node_modules

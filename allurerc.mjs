@@ -2,6 +2,8 @@
 export default {
   name: "CRH2 conformance",
   output: "./reports/html",
+  // Kept between `make report` runs (make clean removes it): the report shows each test's recent history.
+  historyPath: "./reports/history.jsonl",
   plugins: {
     awesome: {
       options: {

@@ -53,6 +53,15 @@ def pytest_configure(config: pytest.Config) -> None:
         config.addinivalue_line("markers", line)
 
 
+def pytest_sessionstart(session: pytest.Session) -> None:
+    config = session.config
+    results = getattr(config.option, "allure_report_dir", None)
+    if results and not hasattr(config, "workerinput"):      # once per run, not per xdist worker
+        from . import allure_meta
+
+        allure_meta.write(results, Path(config.rootpath), " ".join(["pytest", *config.invocation_params.args]))
+
+
 def pytest_bdd_apply_tag(tag: str, function):
     kind, value = tagvocab.classify(tag)  # TagError (a ValueError) for @typo:X: never silently ignored
     if kind is not None:
@@ -210,13 +219,31 @@ def _decorate(item: pytest.Item, reg: Registry | None) -> None:
             item.add_marker(_label("story", item_id))
         item.add_marker(_label("tag", f"item:{item_id}"))
     tms = _link_pattern(item.config, "tms")
+    lines = _requirement_lines(item.config)
     for req in reqs:
         item.add_marker(_label("requirement", req))
         item.add_marker(_label("tag", f"req:{req}"))
-        if tms:  # only with a tracker to point at: a bare "NET-03" link would lead nowhere
+        if tms:  # a tracker given with --allure-link-pattern tms:...: link there
             item.add_marker(pytest.mark.allure_link(tms.format(req), name=req, link_type="tms"))
+        elif req in lines:  # else its line in docs/requirements.md, relative to reports/html/index.html
+            item.add_marker(pytest.mark.allure_link(f"../../docs/requirements.md#L{lines[req]}",
+                                                    name=f"{req} (requirements.md line {lines[req]})",
+                                                    link_type="tms"))
     for profile in profiles:
         item.add_marker(_label("tag", f"profile:{profile}"))
+
+
+_REQ_LINES = pytest.StashKey[dict]()
+
+
+def _requirement_lines(config: pytest.Config) -> dict[str, int]:
+    if _REQ_LINES not in config.stash:
+        from .requirements import load_requirements
+
+        path = Path(config.rootpath) / "docs" / "requirements.md"
+        config.stash[_REQ_LINES] = ({r.id: r.line for r in load_requirements(path).values()}
+                                    if path.is_file() else {})
+    return config.stash[_REQ_LINES]
 
 
 def _wanted(config: pytest.Config, option: str) -> list[str]:

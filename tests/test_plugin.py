@@ -162,3 +162,22 @@ def test_allure_results_carry_outline_labels_and_unstarted_scenarios(project):
     (broken,) = results["R-CTL-01 Commands repeat every 10 ms"]
     assert broken["status"] == "broken"
     assert "SUT did not start" in broken["statusDetails"]["message"]
+
+
+def test_allure_results_get_categories_executor_and_requirement_line_links(project):
+    root = project()
+    proc = run_pytest(root, "features", "--alluredir", "results", "-p", "no:xdist")
+    assert proc.returncode == 0, proc.stdout[-1500:]
+    categories = json.loads((root / "results" / "categories.json").read_text())
+    assert [c["name"] for c in categories][:3] == ["SUT not reachable", "Product defect: the SUT does not conform",
+                                                   "Test defect: the suite or its input, the SUT not judged"]
+    executor = json.loads((root / "results" / "executor.json").read_text())
+    assert executor["type"] == "local" and "commit" in executor["buildName"]
+    notch = next(json.loads(p.read_text()) for p in (root / "results").glob("*-result.json")
+                 if json.loads(p.read_text())["name"] == "R-CTL-01 Traction notch reaches every car")
+    # Without a tracker pattern each requirement links to its line of docs/requirements.md (fixture: CMD-02 is
+    # on line 12, TST-03 on line 15), relative to reports/html/index.html.
+    assert [(link["name"], link["url"]) for link in notch["links"]] == [
+        ("CMD-02 (requirements.md line 12)", "../../docs/requirements.md#L12"),
+        ("TST-03 (requirements.md line 15)", "../../docs/requirements.md#L15"),
+    ]
