@@ -9,6 +9,7 @@ from __future__ import annotations
 
 import json
 import re
+from dataclasses import dataclass
 
 from sut.trace import Trace, TraceEvent
 
@@ -66,8 +67,26 @@ def _label(ev: TraceEvent) -> str:
     return f"{short} {ev.kind.split('.', 1)[-1]}"
 
 
-def wavejson(trace: Trace, start_us: int, end_us: int) -> dict | None:
-    """The diagram of [start_us, end_us], or None when nothing worth drawing happened."""
+@dataclass(frozen=True)
+class Bound:
+    """A timing requirement a Then step checked: `text` had to happen in [start_us, end_us]."""
+    text: str
+    start_us: int
+    end_us: int
+
+
+def _bound_lane(bound: Bound, start_us: int, slot_us: int, slots: int) -> dict:
+    first = max(0, (bound.start_us - start_us) // slot_us)
+    last = min(slots - 1, max(first, (bound.end_us - start_us - 1) // slot_us))
+    wave = ["1" if first <= i <= last else "0" for i in range(slots)]
+    ms = (bound.end_us - bound.start_us) / 1000
+    short = bound.text if len(bound.text) <= 40 else bound.text[:39] + "…"
+    return {"name": f"bound {ms:g} ms: {short}", "wave": _runs(wave)}
+
+
+def wavejson(trace: Trace, start_us: int, end_us: int, bounds: tuple[Bound, ...] = ()) -> dict | None:
+    """The diagram of [start_us, end_us], or None when nothing worth drawing happened. Each bound a Then step
+    checked is a lane of its own, high over the window in which the step required its event."""
     duration_ms = max(1.0, (end_us - start_us) / 1000)
     slot_ms = _slot_ms(duration_ms)
     slot_us = slot_ms * 1000
@@ -133,6 +152,9 @@ def wavejson(trace: Trace, start_us: int, end_us: int) -> dict | None:
     for name, changes in sorted(rxc.items()):
         if any(value != "idle" for _, value in changes):      # an RXC that stayed idle says nothing
             lanes.append(_data_lane(f"{name} source", changes, slots))
+    # Bounds first after the events lane: they are what the reviewer checks the other lanes against.
+    at = 1 if lanes and lanes[0]["name"] == "events" else 0
+    lanes[at:at] = [_bound_lane(b, start_us, slot_us, slots) for b in bounds]
     if not lanes or (len(lanes) == 1 and lanes[0]["name"] == "events"):
         return None
     return {"signal": lanes[:MAX_LANES],

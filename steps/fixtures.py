@@ -5,11 +5,14 @@ and the SUT is shut down; a backend that raised inside its simulation fails the 
 """
 from __future__ import annotations
 
+import re
+
 import pytest
 
 from sut.backends import BACKENDS, ENV_VAR, resolve
 from sut.driver import TrainDriver
 from steps import report
+from steps.diagram import Bound
 
 
 def pytest_addoption(parser: pytest.Parser) -> None:
@@ -81,6 +84,20 @@ def sut_class(request: pytest.FixtureRequest) -> type[TrainDriver]:
     return request.config.stash[_SUT_CLASS]
 
 
+_BOUNDS = pytest.StashKey[list]()
+
+
+def pytest_bdd_after_step(request, feature, scenario, step, step_func, step_func_args) -> None:
+    # A Then step that checked "... within <bound> ms" of the action: draw that window on the timing diagram.
+    args = step_func_args
+    # "within 15 ms of its transmission" is a latency of each command, not a window after the action.
+    if re.search(r"within [\d.]+ ms(?! of)", step.name) and isinstance(args.get("bound"), (int, float)) \
+            and isinstance(args.get("t_action"), int):
+        start = args["t_action"]
+        request.node.stash.setdefault(_BOUNDS, []).append(
+            Bound(step.name, start, start + round(args["bound"] * 1000)))
+
+
 @pytest.fixture
 def sut(sut_class: type[TrainDriver], request: pytest.FixtureRequest):
     declared = [p for p in _profiles_of(request.node) if p in sut_class.PROFILES]
@@ -90,7 +107,7 @@ def sut(sut_class: type[TrainDriver], request: pytest.FixtureRequest):
     failed = any(r is not None and r.failed for r in outcome)
     whole = failed or request.config.getoption("--whole-trace") == "all"
     try:
-        report.attach_run(driver, request, whole_trace=whole)
+        report.attach_run(driver, request, whole_trace=whole, bounds=tuple(request.node.stash.get(_BOUNDS, [])))
     finally:
         driver.shutdown()
 

@@ -13,7 +13,7 @@ import gzip
 import allure
 import pytest
 
-from steps.diagram import render_svg, wavejson as diagram_of
+from steps.diagram import Bound, render_svg, wavejson as diagram_of
 from sut.driver import TrainDriver
 from sut.trace import Trace
 
@@ -30,7 +30,8 @@ def _is_key(ev) -> bool:
     return not (ev.kind == "display.change" and isinstance(ev.get("value"), (int, float)))
 
 
-def attach_run(driver: TrainDriver, request: pytest.FixtureRequest, whole_trace: bool = True) -> None:
+def attach_run(driver: TrainDriver, request: pytest.FixtureRequest, whole_trace: bool = True,
+               bounds: tuple[Bound, ...] = ()) -> None:
     if not driver.powered:
         return
     trace = driver.trace
@@ -40,20 +41,21 @@ def attach_run(driver: TrainDriver, request: pytest.FixtureRequest, whole_trace:
     if whole_trace:
         allure.attach(gzip.compress(trace.to_csv().encode(), mtime=0), name=f"whole trace ({len(trace)} events)",
                       attachment_type="application/gzip", extension="csv.gz")
-    _attach_diagram(trace, key, driver.now_us)
+    _attach_diagram(trace, key, driver.now_us, bounds)
     _write_environment(driver, request.config)
 
 
-def _attach_diagram(trace: Trace, key: Trace, now_us: int) -> None:
+def _attach_diagram(trace: Trace, key: Trace, now_us: int, bounds: tuple[Bound, ...] = ()) -> None:
     """Draw from just before the first action after power-up (a fault, an input, the desk, an order; else
-    the first thing that happened) to the end of the scenario."""
+    the first thing that happened) to the end of the scenario, the start of every checked bound included."""
     acts = ("fault.", "env.", "in.", "desk.", "order.", "mcr.")
     moments = [ev.t for ev in key if ev.t > 0 and ev.kind.startswith(acts)] or [ev.t for ev in key if ev.t > 0]
+    moments += [b.start_us for b in bounds]
     if not moments:
         return
     first = min(moments)
     start = max(0, first - max(10_000, (now_us - first) // 10))
-    diagram = diagram_of(trace, start, now_us)
+    diagram = diagram_of(trace, start, max([now_us, *(b.end_us for b in bounds)]), bounds)
     if diagram is not None:
         allure.attach(render_svg(diagram), name="timing diagram", attachment_type=allure.attachment_type.SVG)
 

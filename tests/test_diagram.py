@@ -53,3 +53,15 @@ def test_a_long_run_is_drawn_in_hours_and_skipped_stretches_are_unknown_not_sile
     assert "2 h skipped" in lanes["events"]["data"]
     wave = lanes["cmd car1.CCU.sys1"]["wave"]
     assert wave[0] == "1" and wave[6] == "x" and "x" not in wave[18:]    # 1 h .. 3 h: 10-min slots 6..17
+
+
+def test_a_checked_bound_is_a_lane_high_over_its_window():
+    from steps.diagram import Bound, wavejson
+
+    events = [TraceEvent(0, "car1.desk", "desk.key", {"inserted": True}),
+              TraceEvent(100_000, "car1.CCU.sys1", "fault.fail", {})]
+    diagram = wavejson(Trace(events), 0, 480_000, (Bound("system 2 takes over within 50 ms", 100_000, 150_000),))
+    lane = next(lane for lane in diagram["signal"] if lane["name"].startswith("bound"))
+    assert lane["name"] == "bound 50 ms: system 2 takes over within 50 ms"
+    # 10 ms slots: high from slot 10 (100 ms) to slot 14 (up to 150 ms), low elsewhere
+    assert lane["wave"] == "0" + "." * 9 + "1" + "." * 4 + "0" + "." * (len(lane["wave"]) - 16)
