@@ -160,9 +160,11 @@ def check_tree(
 
     on_disk = {tree.rel(p): p for p in feature_files(tree.features)}
     listed = {item.feature: item for item in registry.items.values()} if registry else {}
+    listed |= {path: item for item in registry.items.values() for path in item.translations} if registry else {}
     for item in registry.items.values() if registry else []:
-        if item.feature not in on_disk:
-            P(Problem(reg_rel, item.line, f"item {item.id}: feature file {item.feature} does not exist"))
+        for path in (item.feature, *item.translations):
+            if path not in on_disk:
+                P(Problem(reg_rel, item.line, f"item {item.id}: feature file {path} does not exist"))
         for req in item.requirements:
             if known and req not in known:
                 P(Problem(reg_rel, item.line, f"item {item.id}: {req} is not defined in docs/requirements.md"))

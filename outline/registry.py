@@ -17,7 +17,7 @@ from .requirements import REQ_ID
 ITEM_ID = re.compile(r"^(?P<cls>[A-Z]+)-(?P<cat>[A-Z]+)-(?P<nn>\d{2})$")
 KEBAB = re.compile(r"^[a-z0-9]+(-[a-z0-9]+)*$")
 CODE = re.compile(r"^[A-Z]+$")
-ITEM_KEYS = {"id", "class", "category", "title", "requirements", "partly", "why", "feature"}
+ITEM_KEYS = {"id", "class", "category", "title", "requirements", "partly", "why", "feature", "translations"}
 
 
 @dataclass(frozen=True)
@@ -46,6 +46,7 @@ class Item:
     partly: dict[str, str] = field(default_factory=dict)
     why: str = ""               # why the item is in the outline, where the source does not name it
     line: int = 0
+    translations: tuple[str, ...] = ()   # the same item in other languages: <ID>.<language>.feature beside it
 
 
 @dataclass(frozen=True)
@@ -232,6 +233,14 @@ def _load_items(raw, classes: dict[str, TestClass], prefix: str, line: int, prob
         expected = expected_feature_path(item_id, cls_key, cat_key, prefix)
         if str(entry["feature"]) != expected:
             problems.append((where, f"item {item_id}: feature must be {expected}, not {entry['feature']}"))
+        translations = entry.get("translations") or []
+        if not isinstance(translations, list):
+            problems.append((where, f"item {item_id}: translations must be a list of feature files"))
+            translations = []
+        for path in translations:
+            if not re.fullmatch(re.escape(expected[:-len(".feature")]) + r"\.[a-z]{2}(-[A-Z]{2})?\.feature", str(path)):
+                problems.append((where, f"item {item_id}: a translation is {expected[:-len('.feature')]}.<language>"
+                                        f".feature (e.g. .zh-CN.feature), not {path}"))
         items[item_id] = Item(
             id=item_id,
             cls=cls_key,
@@ -242,5 +251,6 @@ def _load_items(raw, classes: dict[str, TestClass], prefix: str, line: int, prob
             partly={str(k): str(v) for k, v in partly.items()},
             why=str(entry.get("why") or ""),
             line=where,
+            translations=tuple(str(p) for p in translations),
         )
     return items

@@ -11,6 +11,7 @@ from steps.analysis import ms, us
 
 
 # -- on the ring ------------------------------------------------------------------------------------
+@then(parsers.parse("每个LCU在每条命令发出后{bound:g} ms内收到该命令"))
 @then(parsers.parse("every LCU receives every command within {bound:g} ms of its transmission"))
 def _(sut: TrainDriver, t_action: int, bound: float) -> None:
     trace, limit = sut.trace, us(bound)
@@ -47,6 +48,7 @@ def _(sut: TrainDriver, t_action: int, bound: float) -> None:
         assert min(gaps) >= us(bound), f"{node} sent two commands {ms(min(gaps))} apart, less than {bound} ms"
 
 
+@then(parsers.parse('只有"{node}"在环网上发送命令'))
 @then(parsers.parse('only "{node}" puts commands on the ring'))
 def _(sut: TrainDriver, t_action: int, node: str) -> None:
     senders = {ev.source.rsplit(".", 1)[0] for ev in sut.trace.select(kind="cmd.tx", since=t_action)}
@@ -74,6 +76,7 @@ def _(sut: TrainDriver, t_action: int, txc: str, after: float) -> None:
     assert not ring and not line, f"{txc} kept transmitting: {analysis.describe(ring + line)}"
 
 
+@then(parsers.parse("{after:g} ms起每条命令都带牵引级位{notch:d}和制动级位{step:d}"))
 @then(parsers.parse("from {after:g} ms on every command carries traction notch {notch:d} and brake step {step:d}"))
 def _(sut: TrainDriver, t_action: int, after: float, notch: int, step: int) -> None:
     sent = sut.trace.select(kind="cmd.tx", since=t_action + us(after))
@@ -83,24 +86,28 @@ def _(sut: TrainDriver, t_action: int, after: float, notch: int, step: int) -> N
 
 
 # -- at CI and BCU ----------------------------------------------------------------------------------
+@then(parsers.parse("每个CI和BCU在{bound:g} ms内经路径1收到牵引级位{notch:d}"))
 @then(parsers.parse("every CI and BCU receives traction notch {notch:d} over path 1 within {bound:g} ms"))
 def _(sut: TrainDriver, t_action: int, notch: int, bound: float) -> None:
     analysis.expect_taken(sut, analysis.command_devices(sut), t_action, bound, f"notch {notch} over path 1",
                    path=1, traction=notch)
 
 
+@then(parsers.parse("{car:d}号车的CI和BCU在{bound:g} ms内经路径1收到牵引级位{notch:d}"))
 @then(parsers.parse("the CI and BCU of car {car:d} receive traction notch {notch:d} over path 1 within {bound:g} ms"))
 def _(sut: TrainDriver, t_action: int, car: int, notch: int, bound: float) -> None:
     analysis.expect_taken(sut, analysis.command_devices(sut, car), t_action, bound, f"notch {notch} over path 1",
                    path=1, traction=notch)
 
 
+@then(parsers.parse("每个BCU在{bound:g} ms内经路径1收到制动级位{step:d}"))
 @then(parsers.parse("every BCU receives brake step {step:d} over path 1 within {bound:g} ms"))
 def _(sut: TrainDriver, t_action: int, step: int, bound: float) -> None:
     bcus = [d for d in analysis.command_devices(sut) if d.endswith(".BCU")]
     analysis.expect_taken(sut, bcus, t_action, bound, f"brake step {step} over path 1", path=1, brake=step)
 
 
+@then(parsers.parse('每个BCU在{bound:g} ms内经路径{path:d}收到制动级位"{step}"'))
 @then(parsers.parse('every BCU receives brake step "{step}" over path {path:d} within {bound:g} ms'))
 def _(sut: TrainDriver, t_action: int, step: str, path: int, bound: float) -> None:
     bcus = [d for d in analysis.command_devices(sut) if d.endswith(".BCU")]
@@ -108,24 +115,28 @@ def _(sut: TrainDriver, t_action: int, step: str, path: int, bound: float) -> No
                    brake_step=step)
 
 
+@then(parsers.parse('每个CI和BCU在{bound:g} ms内经路径{path:d}收到牵引级位"{step}"'))
 @then(parsers.parse('every CI and BCU receives traction step "{step}" over path {path:d} within {bound:g} ms'))
 def _(sut: TrainDriver, t_action: int, step: str, path: int, bound: float) -> None:
     analysis.expect_taken(sut, analysis.command_devices(sut), t_action, bound, f"traction step {step} over path {path}",
                    path=path, traction_step=step)
 
 
+@then(parsers.parse('{car:d}号车的CI和BCU在{bound:g} ms内经路径{path:d}收到牵引级位"{step}"'))
 @then(parsers.parse('the CI and BCU of car {car:d} receive traction step "{step}" over path {path:d} within {bound:g} ms'))
 def _(sut: TrainDriver, t_action: int, car: int, step: str, path: int, bound: float) -> None:
     analysis.expect_taken(sut, analysis.command_devices(sut, car), t_action, bound,
                    f"traction step {step} over path {path}", path=path, traction_step=step)
 
 
+@then(parsers.parse('{car:d}号车的BCU在{bound:g} ms内经路径{path:d}收到制动级位"{step}"'))
 @then(parsers.parse('the BCU of car {car:d} receives brake step "{step}" over path {path:d} within {bound:g} ms'))
 def _(sut: TrainDriver, t_action: int, car: int, step: str, path: int, bound: float) -> None:
     analysis.expect_taken(sut, [f"car{car}.BCU"], t_action, bound, f"brake step {step} over path {path}", path=path,
                    brake_step=step)
 
 
+@then(parsers.parse("{after:g} ms起{car:d}号车以外的每个CI和BCU经路径1收到牵引级位{notch:d}"))
 @then(parsers.parse("from {after:g} ms on every CI and BCU outside car {car:d} receives traction notch {notch:d} "
                     "over path 1"))
 def _(sut: TrainDriver, t_action: int, after: float, car: int, notch: int) -> None:
@@ -168,6 +179,7 @@ def _(sut: TrainDriver, t_action: int, notch: int) -> None:
     assert not odd, f"devices received other notches: {analysis.describe(odd)}"
 
 
+@then(parsers.parse("没有CI或BCU超过{bound:g} ms收不到命令"))
 @then(parsers.parse("no CI or BCU goes without a command for more than {bound:g} ms"))
 def _(sut: TrainDriver, t_action: int, bound: float) -> None:
     for device in analysis.command_devices(sut):
@@ -178,6 +190,7 @@ def _(sut: TrainDriver, t_action: int, bound: float) -> None:
 
 
 # -- RED-02: takeover --------------------------------------------------------------------------------
+@then(parsers.parse("系统{new:d}的第一条命令比系统{old:d}的最后一条晚{lo:g} ms至{hi:g} ms加一个命令周期"))
 @then(parsers.parse("system {new:d}'s first command follows system {old:d}'s last by {lo:g} ms to {hi:g} ms plus "
                     "one command interval"))
 def _(sut: TrainDriver, t_action: int, new: int, old: int, lo: float, hi: float) -> None:

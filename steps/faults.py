@@ -7,7 +7,9 @@ from sut.driver import TrainDriver
 from steps import analysis
 
 
+@given(parsers.parse('"{a}"与"{b}"之间的环网链路已断开'))
 @given(parsers.parse('the ring link between "{a}" and "{b}" is cut'))
+@when(parsers.parse('"{a}"与"{b}"之间的环网链路断开'), target_fixture="t_action")
 @when(parsers.parse('the ring link between "{a}" and "{b}" is cut'), target_fixture="t_action")
 def _(sut: TrainDriver, a: str, b: str) -> int:
     sut.cut_link(a, b)
@@ -20,7 +22,9 @@ def _(sut: TrainDriver, a: str, b: str) -> int:
     return sut.now_us
 
 
+@given("所有环网链路已断开")
 @given("every ring link is cut")
+@when("所有环网链路断开", target_fixture="t_action")
 @when("every ring link is cut", target_fixture="t_action")
 def _(sut: TrainDriver) -> int:
     sut.cut_ring()
@@ -35,6 +39,7 @@ def _(sut: TrainDriver, kind: str, a: str, b: str) -> int:
 
 
 @given(parsers.parse('board "{board}" has failed'))
+@when(parsers.parse('板卡"{board}"故障'), target_fixture="t_action")
 @when(parsers.parse('board "{board}" fails'), target_fixture="t_action")
 def _(sut: TrainDriver, board: str) -> int:
     sut.fail(board)
@@ -56,6 +61,7 @@ def _(sut: TrainDriver, board: str) -> int:
 
 
 @given(parsers.parse('the supply "{supply}" is off'))
+@when(parsers.parse('电源"{supply}"被关断'), target_fixture="t_action")
 @when(parsers.parse('the supply "{supply}" is switched off'), target_fixture="t_action")
 def _(sut: TrainDriver, supply: str) -> int:
     sut.power_off(supply)
@@ -74,6 +80,7 @@ def _(sut: TrainDriver, node: str, size: int) -> int:
     return sut.now_us
 
 
+@given(parsers.parse('在"{a}"与"{b}"之间的环网链路上接入分析仪'))
 @given(parsers.parse('an analyser is attached to the ring link between "{a}" and "{b}"'))
 def _(sut: TrainDriver, a: str, b: str) -> None:
     sut.tap_link(a, b)

@@ -90,8 +90,10 @@ _BOUNDS = pytest.StashKey[list]()
 def pytest_bdd_after_step(request, feature, scenario, step, step_func, step_func_args) -> None:
     # A Then step that checked "... within <bound> ms" of the action: draw that window on the timing diagram.
     args = step_func_args
-    # "within 15 ms of its transmission" is a latency of each command, not a window after the action.
-    if re.search(r"within [\d.]+ ms(?! of)", step.name) and isinstance(args.get("bound"), (int, float)) \
+    # "within 15 ms of its transmission" (zh-CN "发出后15 ms内") is a latency of each command, not a window
+    # after the action.
+    if re.search(r"within [\d.]+ ms(?! of)|(?<![后\d.])[\d.]+ ms内", step.name) \
+            and isinstance(args.get("bound"), (int, float)) \
             and isinstance(args.get("t_action"), int):
         start = args["t_action"]
         request.node.stash.setdefault(_BOUNDS, []).append(

@@ -5,6 +5,7 @@ from pytest_bdd import parsers, then
 
 from sut.codecs import arcnet
 from sut.driver import TrainDriver
+from steps import zh
 from steps import analysis
 from steps.analysis import ms, us
 
@@ -120,6 +121,7 @@ def _monitor_rx(sut: TrainDriver, cab: int, since: int) -> dict[str, list[int]]:
     return by_node
 
 
+@then(parsers.parse("{cab:d}号司机室监视器每{lo:g}至{hi:g} ms收到其他每个节点的状态数据"))
 @then(parsers.parse("the cab {cab:d} monitor receives status data from every other node every {lo:g} to {hi:g} ms"))
 def _(sut: TrainDriver, t_action: int, cab: int, lo: float, hi: float) -> None:
     by_node = _monitor_rx(sut, cab, t_action)
@@ -148,12 +150,14 @@ def _(sut: TrainDriver, t_action: int, cab: int, after: float) -> None:
     assert not got, f"status data still arrived: {analysis.describe(got)}"
 
 
+@then(parsers.parse('{cab:d}号司机室监视器显示"{text}"'))
 @then(parsers.parse('the cab {cab:d} monitor shows "{text}"'))
 def _(sut: TrainDriver, cab: int, text: str) -> None:
     faults = sut.monitor(cab)["faults"]
     assert text in faults, f"the cab {cab} monitor shows {faults or 'no faults'}, not {text!r}"
 
 
+@then(parsers.parse("{cab:d}号司机室监视器不显示任何故障"))
 @then(parsers.parse("the cab {cab:d} monitor shows no faults"))
 def _(sut: TrainDriver, cab: int) -> None:
     faults = sut.monitor(cab)["faults"]
@@ -182,6 +186,7 @@ def _tapped(sut: TrainDriver, t_action: int, frame: str | None = None):
     return found
 
 
+@then(parsers.parse("被分析链路上的每个{frame}帧携带{size:d}字节数据"), converters={"frame": zh.frame})
 @then(parsers.parse("every {frame} frame on the analysed link carries {size:d} bytes of data"))
 def _(sut: TrainDriver, t_action: int, frame: str, size: int) -> None:
     odd = [ev for ev in _tapped(sut, t_action, frame) if ev["data_bytes"] != size]

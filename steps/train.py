@@ -7,11 +7,13 @@ from sut.driver import TrainDriver
 from steps import analysis
 
 
+@given(parsers.re(r"一列(?P<cars>\d+)辆编组的CRH2动车组"), converters={"cars": int})
 @given(parsers.re(r"an? (?P<cars>\d+)-car CRH2 train set"), converters={"cars": int})
 def _(sut: TrainDriver, cars: int) -> None:
     sut.configure(sets=1, cars_per_set=cars)
 
 
+@given(parsers.parse("两列{cars:d}辆编组的CRH2动车组重联"))
 @given(parsers.parse("two {cars:d}-car CRH2 train sets coupled together"))
 def _(sut: TrainDriver, cars: int) -> None:
     sut.configure(sets=2, cars_per_set=cars)
@@ -22,6 +24,7 @@ def _(sut: TrainDriver) -> None:
     sut.power_on()
 
 
+@given(parsers.parse("列车已上电{ms:d} ms"), target_fixture="t_action")
 @given(parsers.parse("the train has been powered up for {ms:d} ms"), target_fixture="t_action")
 def _(sut: TrainDriver, ms: int) -> int:
     sut.power_on()
@@ -29,11 +32,13 @@ def _(sut: TrainDriver, ms: int) -> int:
     return sut.now_us
 
 
+@when(parsers.parse("经过{ms:d} ms"))
 @when(parsers.parse("{ms:d} ms pass"))
 def _(sut: TrainDriver, ms: int) -> None:
     sut.advance_ms(ms)
 
 
+@when(parsers.parse("经过{s:d} s"))
 @when(parsers.parse("{s:d} s pass"))
 def _(sut: TrainDriver, s: int) -> None:
     sut.advance_ms(s * 1000)

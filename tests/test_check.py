@@ -110,3 +110,25 @@ def test_out_of_scope_must_give_a_reason_and_not_name_a_claimed_requirement(tmp_
     tree = _good_tree_with(tmp_path / "again", 'out_of_scope:\n  NET-01: "layout"\n  NET-03: "duplicate"\n')
     problems = [str(p) for p in check_tree(tree, None, shared=[]).problems]
     assert problems == ["features/registry.yaml:28: out_of_scope: NET-03 is claimed by item F-NET-01; take it out"]
+
+
+def test_a_translation_is_listed_by_its_item_and_named_after_it(tmp_path: Path):
+    import shutil
+
+    shutil.copytree(DATA / "good", tmp_path / "good")
+    root = tmp_path / "good"
+    registry = root / "features" / "registry.yaml"
+    english = root / "features" / "routine" / "control" / "R-CTL-01.feature"
+    (english.parent / "R-CTL-01.zh-CN.feature").write_text(english.read_text(encoding="utf-8"), encoding="utf-8")
+    text = registry.read_text(encoding="utf-8")
+    # unlisted: a problem like any other unknown feature file
+    assert "features/routine/control/R-CTL-01.zh-CN.feature: not listed in features/registry.yaml" in \
+        [str(p) for p in check_tree(Tree.at(root), None, shared=[]).problems]
+    listed = text.replace("    feature: features/routine/control/R-CTL-01.feature\n",
+                          "    feature: features/routine/control/R-CTL-01.feature\n"
+                          "    translations: [features/routine/control/R-CTL-01.zh-CN.feature]\n")
+    registry.write_text(listed, encoding="utf-8")
+    assert check_tree(Tree.at(root), None, shared=[]).problems == []
+    registry.write_text(listed.replace("R-CTL-01.zh-CN.feature]", "R-CTL-01-chinese.feature]"), encoding="utf-8")
+    problems = [str(p) for p in check_tree(Tree.at(root), None, shared=[]).problems]
+    assert any("a translation is features/routine/control/R-CTL-01.<language>.feature" in p for p in problems), problems

@@ -28,5 +28,6 @@ def test_every_feature_file_is_bound():
     from outline.registry import load_registry
 
     bound = {f"features/{p}" for p in feature_paths(REPO.features)}
-    listed = {item.feature for item in load_registry(REPO.registry).items.values()}
+    listed = {path for item in load_registry(REPO.registry).items.values()
+              for path in (item.feature, *item.translations)}
     assert bound == listed
