@@ -26,6 +26,8 @@ class Trace:
     by_item: dict[str, tuple[str, tuple[str, ...], dict[str, str]]] = field(default_factory=dict)
     uncovered: list[str] = field(default_factory=list)
     status: dict[str, str] = field(default_factory=dict)  # scenario title as written -> last status
+    requirements: dict = field(default_factory=dict)  # the baseline the tables follow (ID -> Requirement)
+    out_of_scope: dict[str, str] | None = None  # the registry's, None without the key
 
 
 def _run_names(scenario: Scenario) -> list[str]:
@@ -41,8 +43,8 @@ def _last_status(scenario: Scenario, by_name: dict[str, str]) -> str:
 
 def build_trace(tree: Tree, results_dir: str | None = None) -> Trace:
     result = check_tree(tree, definitions=None)
-    trace = Trace()
     registry = result.registry
+    trace = Trace(requirements=result.requirements, out_of_scope=registry.out_of_scope if registry else None)
     by_name = statuses_by_name(load_results(results_dir)) if results_dir else None
     for feature in result.features.values():
         for scenario in feature.scenarios:
@@ -118,20 +120,17 @@ def run(tree: Tree, results_dir: str | None, out=sys.stdout, md: str | None = No
         return 0
     import os
 
-    from .check import check_tree
     from .coverage import counts, coverage
     from .render import render, write_allure_result
 
-    checked = check_tree(tree, definitions=None)
-    registry = checked.registry
-    rows = coverage(trace, checked.requirements, registry.out_of_scope if registry else None)
+    rows = coverage(trace, trace.requirements, trace.out_of_scope)
     for path, kind in ((md, "md"), (html, "html")):
         if path:
             doc = os.path.relpath(tree.requirements, Path(path).resolve().parent)
             Path(path).parent.mkdir(parents=True, exist_ok=True)
-            Path(path).write_text(render(kind, rows, trace, checked.requirements, doc, results_dir), encoding="utf-8")
+            Path(path).write_text(render(kind, rows, trace, trace.requirements, doc, results_dir), encoding="utf-8")
     if allure:
-        page = render("html", rows, trace, checked.requirements, "requirements.md", results_dir)
+        page = render("html", rows, trace, trace.requirements, "requirements.md", results_dir)
         write_allure_result(allure, page, rows)
     c = counts(rows)
     print(f"traceability: {c['full']} full, {c['partly']} partly, {c['none']} none, {c['out of scope']} out of "

@@ -38,15 +38,19 @@ def _(sut: TrainDriver, kind: str, a: str, b: str) -> int:
     return sut.now_us
 
 
+# A board, or a whole unit, module or device ("car1.CCU", "car1.IO1", "car2.VVVF", the "CFSK" of an ATP).
 @given(parsers.parse('board "{board}" has failed'))
+@given(parsers.parse('"{board}" has failed'))
 @when(parsers.parse('板卡"{board}"故障'), target_fixture="t_action")
 @when(parsers.parse('board "{board}" fails'), target_fixture="t_action")
+@when(parsers.parse('"{board}" fails'), target_fixture="t_action")
 def _(sut: TrainDriver, board: str) -> int:
     sut.fail(board)
     return sut.now_us
 
 
 @when(parsers.parse('board "{board}" is repaired'), target_fixture="t_action")
+@when(parsers.parse('"{board}" is repaired'), target_fixture="t_action")
 def _(sut: TrainDriver, board: str) -> int:
     sut.repair(board)
     return sut.now_us

@@ -64,23 +64,10 @@ def _(sut: TrainDriver) -> int:
 
 
 # -- faults ---------------------------------------------------------------------------------------
-@given(parsers.parse('"{unit}" has failed'))
-@when(parsers.parse('"{unit}" fails'), target_fixture="t_action")
-def _(sut: TrainDriver, unit: str) -> int:
-    sut.fail(unit)
-    return sut.now_us
-
-
 @when(parsers.parse('{units} fail together'), target_fixture="t_action")
 def _(sut: TrainDriver, units: str) -> int:
     for unit in _names(units):
         sut.fail(unit)
-    return sut.now_us
-
-
-@when(parsers.parse('"{unit}" is repaired'), target_fixture="t_action")
-def _(sut: TrainDriver, unit: str) -> int:
-    sut.repair(unit)
     return sut.now_us
 
 

@@ -47,10 +47,6 @@ class TrainDriver(abc.ABC):
             raise UnknownName(f"profile of {cls.__qualname__}", profile, cls.PROFILES)
         return cls()
 
-    @property
-    def profile(self) -> str | None:
-        return self.PROFILES[0] if self.PROFILES else None
-
     # -- composition and life cycle ------------------------------------------------------------
     @abc.abstractmethod
     def configure(self, *, sets: int = 1, cars_per_set: int = 8) -> None:

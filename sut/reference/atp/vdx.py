@@ -121,10 +121,10 @@ class VdxInterface:
     def _drive(self) -> None:
         was = self.eb2r.powered
         fs = self.fs_on and not self.testing
-        if fs and not was and not self.testing:
+        if fs and not was:
             self.released_at = self.kernel.now
             self._emit("VDX", "fs.on")
-        elif not fs and was and not self.testing:
+        elif was and not fs and not self.testing:    # a self-test's 3 ms pull-down is not a switch-off
             self._emit("VDX", "fs.off")
         # During a self-test the output is pulled low for 3 ms; the coil keeps the relay (VDX-04).
         self.eb2r.power(fs)

@@ -18,7 +18,7 @@ from typing import Any, Callable
 from sut.codecs.mvb import MasterFrame, SlaveFrame, check_sequence, decode_master, decode_slave, slave_size_bits
 from sut.reference.kernel import Kernel
 from sut.reference.metro import ports
-from sut.reference.metro.bus import LINES, DualLineBus, FrameError
+from sut.reference.metro.bus import LINES, Carried, DualLineBus, FrameError
 from sut.reference.metro.config import MetroConfig
 from sut.reference.metro.ports import Command, IoPort
 from sut.reference.metro.units import (CAB_CARS, CAB_DEVICES, MOTOR_DEVICES, UNIT_CARS, ControlUnit, Device,
@@ -71,8 +71,6 @@ class MvbSegment:
 
 
 class MetroTrain:
-    BULK_SKIP = ("events",)
-
     def __init__(self, cfg: MetroConfig):
         self.cfg = cfg
         t, b = cfg.timing, cfg.behaviour
@@ -174,9 +172,7 @@ class MetroTrain:
         bus = seg.bus
         address = self._address(unit, what, target)
         wire = MasterFrame(f_code, address).encode()
-        self._tap(bus, "master", wire)
-        got = bus.carry(wire, decode_master, lambda a, b_, why: self._line_switch(bus, a, b_, why))
-        self._discards(bus, got)
+        got = self._carry(bus, "master", wire, decode_master)
         if got.data is None:
             self.emit(bus.name, "mvb.msg", master=master_name, f_code=f_code, address=address, line=None,
                       responder=None, lost=True)
@@ -191,9 +187,7 @@ class MetroTrain:
             wire = _one_check_encode(data) if long_one else SlaveFrame(data).encode()
             decode: Callable = ((lambda raw: _one_check_decode(raw, size)) if long_one
                                 else (lambda raw: decode_slave(raw, size)))
-            self._tap(bus, "slave", wire)
-            got = bus.carry(wire, decode, lambda a, b_, why: self._line_switch(bus, a, b_, why))
-            self._discards(bus, got)
+            got = self._carry(bus, "slave", wire, decode)
             if got.data is not None:
                 line = got.line
                 self._deliver(seg, master, what, target, got.data.data)
@@ -370,32 +364,31 @@ class MetroTrain:
         t = self.cfg.timing
         now = self.kernel.now
         for seg in self.segments.values():
-            current = self.nodes.get(seg.master) if seg.master else None
-            if current is not None and current.alive:
-                continue
-            silent = now - seg.last_master_t
-            waiting = [n for n in seg.ranks if n != seg.master]
-            for position, name in enumerate(waiting, start=1):
-                node = self.nodes[name]
-                if node.alive and silent >= position * t.mvb_master_timeout_us:
-                    before, seg.master = seg.master, name
-                    seg.last_master_t = now
-                    self.emit(name, "master.take", bus=seg.bus.name, after=before)
-                    self._raise(node, f"MVB master of unit {seg.unit} ({before} silent)")
-                    break
-        current = self.nodes.get(self.wtb_master) if self.wtb_master else None
-        if current is not None and current.on_wtb:
-            return
-        silent = now - self.wtb_last_master_t
-        waiting = [n for n in self.cfg.behaviour.wtb_backup_ranks if n != self.wtb_master]
+            name = self._successor(seg.ranks, seg.master, seg.last_master_t, t.mvb_master_timeout_us, "alive")
+            if name is not None:
+                before, seg.master, seg.last_master_t = seg.master, name, now
+                self.emit(name, "master.take", bus=seg.bus.name, after=before)
+                self._raise(self.nodes[name], f"MVB master of unit {seg.unit} ({before} silent)")
+        name = self._successor(self.cfg.behaviour.wtb_backup_ranks, self.wtb_master, self.wtb_last_master_t,
+                               t.wtb_backup_step_us, "on_wtb")
+        if name is not None:
+            before, self.wtb_master, self.wtb_last_master_t = self.wtb_master, name, now
+            self.emit(name, "master.take", bus="WTB", after=before)
+            self._raise(self.nodes[name], f"WTB master ({before} silent)")
+
+    def _successor(self, ranks: tuple[str, ...], master: str | None, last_frame_us: int, step_us: int,
+                   up: str) -> str | None:
+        """Who takes a bus whose master is down: the first of the others, in rank order, that is up (`up`:
+        the unit attribute that says so) and whose place x `step_us` of silence has passed; None if nobody."""
+        current = self.nodes.get(master) if master else None
+        if current is not None and getattr(current, up):
+            return None
+        silent = self.kernel.now - last_frame_us
+        waiting = [n for n in ranks if n != master]
         for position, name in enumerate(waiting, start=1):
-            node = self.nodes[name]
-            if node.on_wtb and silent >= position * t.wtb_backup_step_us:
-                before, self.wtb_master = self.wtb_master, name
-                self.wtb_last_master_t = now
-                self.emit(name, "master.take", bus="WTB", after=before)
-                self._raise(node, f"WTB master ({before} silent)")
-                break
+            if getattr(self.nodes[name], up) and silent >= position * step_us:
+                return name
+        return None
 
     # -- WTB --------------------------------------------------------------------------------------
     def _wtb_cycle(self) -> None:
@@ -447,9 +440,7 @@ class MetroTrain:
             return
         bus = self.wtb
         wire = ports.wtb_encode({"poll": polled, "m": master_name})
-        self._tap(bus, "master", wire)
-        got = bus.carry(wire, ports.wtb_decode, lambda a, b_, why: self._line_switch(bus, a, b_, why))
-        self._discards(bus, got)
+        got = self._carry(bus, "master", wire, ports.wtb_decode)
         if got.data is None:
             self.emit("WTB", "wtb.msg", master=master_name, polled=polled, line=None, answered=False, lost=True)
             self._diagnose_lines(bus, master)
@@ -460,9 +451,7 @@ class MetroTrain:
         line, master_line = None, got.line
         if telegram is not None:
             wire = ports.wtb_encode(telegram)
-            self._tap(bus, "slave", wire)
-            got = bus.carry(wire, ports.wtb_decode, lambda a, b_, why: self._line_switch(bus, a, b_, why))
-            self._discards(bus, got)
+            got = self._carry(bus, "slave", wire, ports.wtb_decode)
             if got.data is not None:
                 line = got.line
                 for receiver in self.nodes.values():
@@ -558,13 +547,12 @@ class MetroTrain:
                 line.reported = False
                 self._raise(master, f"{bus.name} line {ln}: restored")
 
-    def _line_switch(self, bus: DualLineBus, before: str, after: str, why: str) -> None:
-        self.emit(bus.name, "line.switch", frm=before, to=after, reason=why)
-
-    def _discards(self, bus: DualLineBus, got: Any) -> None:
+    def _carry(self, bus: DualLineBus, frame_type: str, wire: bytes, decode: Callable[[bytes], Any]) -> Carried:
+        """One frame over both lines, as the analyser, the receivers and the diagnosis see it."""
+        if bus.name in self.tapped:
+            self.emit(bus.name, "bus.frame", type=frame_type, hex=wire.hex())
+        got = bus.carry(wire, decode,
+                        lambda frm, to, why: self.emit(bus.name, "line.switch", frm=frm, to=to, reason=why))
         for error in got.errors:
             self.emit(bus.name, "frame.discard", error=error)
-
-    def _tap(self, bus: DualLineBus, frame_type: str, wire: bytes, **fields: Any) -> None:
-        if bus.name in self.tapped:
-            self.emit(bus.name, "bus.frame", type=frame_type, hex=wire.hex(), **fields)
+        return got
