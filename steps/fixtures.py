@@ -6,6 +6,7 @@ and the SUT is shut down; a backend that raised inside its simulation fails the 
 from __future__ import annotations
 
 import re
+from pathlib import Path
 
 import pytest
 
@@ -27,6 +28,9 @@ def pytest_addoption(parser: pytest.Parser) -> None:
     group.addoption("--whole-trace", choices=("failed", "all"), default="failed",
                     help="attach the whole SUT trace (gzipped CSV) to the report for failed scenarios only "
                          "(default) or for all; the timing diagram and key events are always attached")
+    group.addoption("--trace-dir", default=None, metavar="DIR",
+                    help="also write each scenario's whole trace to DIR/<test id>.csv (to compare runs: two "
+                         "runs of one SUT, in-process against remote, serial against -n auto)")
 
 
 @pytest.hookimpl(wrapper=True)
@@ -110,8 +114,18 @@ def sut(sut_class: type[TrainDriver], request: pytest.FixtureRequest):
     whole = failed or request.config.getoption("--whole-trace") == "all"
     try:
         report.attach_run(driver, request, whole_trace=whole, bounds=tuple(request.node.stash.get(_BOUNDS, [])))
+        trace_dir = request.config.getoption("--trace-dir")
+        if trace_dir:
+            _write_trace(Path(trace_dir), request.node.nodeid, driver)
     finally:
         driver.shutdown()
+
+
+def _write_trace(folder: Path, nodeid: str, driver: TrainDriver) -> None:
+    folder.mkdir(parents=True, exist_ok=True)
+    name = re.sub(r"[^\w.\[\]-]+", "_", nodeid.split("::")[-1])
+    text = driver.trace.to_csv() if driver.powered else ""
+    (folder / f"{name}.csv").write_text(text, encoding="utf-8")
 
 
 @pytest.fixture

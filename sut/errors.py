@@ -31,3 +31,16 @@ class NotPoweredUp(SutError):
 
 class NotSupported(SutError):
     """The backend does not model this (python-can style: optional features raise, never fake)."""
+
+
+class SutUnreachable(SutError):
+    """The SUT could not be reached or stopped making sense: refused, closed, silent past the timeout, or
+    answering with something that is not the protocol. The scenario's verdict is "SUT not reachable"."""
+
+    def __init__(self, where: str, why: str):
+        super().__init__(f"SUT not reachable at {where}: {why}")
+        self.where, self.why = where, why
+
+
+class RemoteError(SutError):
+    """The remote SUT raised something that is not one of the driver interface's errors (a bug in it)."""

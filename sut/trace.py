@@ -52,6 +52,9 @@ class Trace:
     def __iter__(self) -> Iterator[TraceEvent]:
         return iter(self._events)
 
+    def __getitem__(self, index: int | slice) -> TraceEvent | list[TraceEvent]:
+        return self._events[index]
+
     def select(self, kind: str | None = None, source: str | None = None, since: int | None = None,
                until: int | None = None, **where: Any) -> list[TraceEvent]:
         """Events matching all given criteria. `kind` may end in `.*`; `source` is exact, a dotted prefix

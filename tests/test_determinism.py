@@ -1,0 +1,48 @@
+"""Determinism (issue 9): the verdicts and every event of every trace depend on the features and the SUT only.
+
+The reference has no randomness to seed: virtual time in integer microseconds and a sequence number for
+ties (sut/reference/kernel.py). What could still leak in is the process: string hashing (set and dict order
+under another PYTHONHASHSEED), the order pytest-xdist hands scenarios to workers, state left over from the
+previous scenario in the same worker. So the same sample runs three times: serially with two hash seeds, and
+on two xdist workers; the verdicts and the traces (`--trace-dir`, CSV) must be byte-identical.
+"""
+from __future__ import annotations
+
+import os
+import re
+import subprocess
+import sys
+from pathlib import Path
+
+from tests.test_faulty_variants import ROOT
+
+# Every profile, the timing-heavy parts (takeover, token, power interruption, VDX self-test) and zh-CN.
+SAMPLE = "R-CTL-03,R-DIA-02,F-NET-13,F-NET-03,F-ILK-05,H-PWR-02,F-ATP-04,F-ATP-12,F-NET-21,F-CTL-15"
+OUTCOME = re.compile(r"^(PASSED|FAILED|SKIPPED|ERROR) (\S+)", re.M)
+
+
+def _run(trace_dir: Path, hash_seed: str, *args: str) -> list[tuple[str, str]]:
+    cmd = [sys.executable, "-m", "pytest", "features", "-q", "-rA", "-p", "no:cacheprovider",
+           f"--item={SAMPLE}", f"--trace-dir={trace_dir}", *args]
+    env = dict(os.environ, PYTHONHASHSEED=hash_seed, PYTHONDONTWRITEBYTECODE="1")
+    result = subprocess.run(cmd, cwd=ROOT, capture_output=True, text=True, env=env, timeout=900)
+    assert result.returncode == 0, result.stdout[-3000:] + result.stderr[-2000:]
+    return sorted((name, outcome) for outcome, name in OUTCOME.findall(result.stdout))
+
+
+def _traces(folder: Path) -> dict[str, bytes]:
+    return {p.name: p.read_bytes() for p in sorted(folder.glob("*.csv"))}
+
+
+def test_two_runs_and_a_parallel_run_give_identical_verdicts_and_traces(tmp_path: Path) -> None:
+    first = _run(tmp_path / "first", "1", "-p", "no:xdist")
+    second = _run(tmp_path / "second", "2", "-p", "no:xdist")
+    parallel = _run(tmp_path / "parallel", "3", "-n", "2")
+    assert len(first) >= 60
+    assert first == second, "two serial runs disagree"
+    assert first == parallel, "a run on two xdist workers disagrees with a serial run"
+    traces = _traces(tmp_path / "first")
+    assert len(traces) == len(first) and sum(map(len, traces.values())) > 1_000_000
+    for other in ("second", "parallel"):
+        differ = [name for name, text in _traces(tmp_path / other).items() if traces.get(name) != text]
+        assert not differ and len(_traces(tmp_path / other)) == len(traces), f"{other}: traces differ: {differ[:5]}"
