@@ -102,7 +102,11 @@ def decode_pac(wire: bytes) -> tuple[int, int, bytes]:
     if len(wire) < 8 or wire[0] != SOH:
         raise FrameError(f"not an ARCNET packet: {len(wire)} bytes starting {wire[:1].hex() or 'nothing'}")
     long = wire[4] == 0
-    _, declared = declared_length(wire)
+    offset, declared = declared_length(wire)
+    n = declared - offset - 2
+    if not (257 <= n <= MAX_DATA if long else 1 <= n <= 253):     # 254..256 cannot be sent, > 508 not at all
+        raise FrameError(f"ARCNET packet length byte wire[{offset - 1}] = {wire[offset - 1]:#04x} declares {n} data "
+                         f"bytes; a {'long packet carries 257..508' if long else 'short packet carries 1..253'}")
     if len(wire) != declared:
         raise FrameError(f"ARCNET packet length byte says {declared} bytes, the frame has {len(wire)}")
     try:

@@ -21,6 +21,8 @@ def check_ok(wire: bytes) -> bool:
     # The same checks as decode_pac, without building the parsed view: every node runs this on every frame.
     if len(wire) < 8 or wire[0] != SOH or wire[2] != wire[3]:
         return False
+    if wire[4] in (1, 2) or wire[4] == 0 and wire[5] < 4:     # 254/255 or 509..512 data bytes (ATA 878.1)
+        return False
     return len(wire) == declared_length(wire)[1] and crc16_arc(wire[1:-2]) == int.from_bytes(wire[-2:], "little")
 
 

@@ -37,6 +37,11 @@ _CMD = struct.Struct(">BBHHH")
 READY, FAULT = 0x0001, 0x0002
 
 
+def _size(data: bytes, layout: struct.Struct, what: str) -> None:
+    if len(data) != layout.size:
+        raise FrameError(f"{what} of {len(data)} bytes: the port is {layout.size} bytes")
+
+
 @dataclass(frozen=True)
 class IoPort:
     di: int          # DI01 is bit 0
@@ -48,6 +53,8 @@ class IoPort:
 
     @classmethod
     def decode(cls, data: bytes) -> "IoPort":
+        """The port in a 128-bit slave frame's data; FrameError if `data` is not 16 bytes."""
+        _size(data, _IO, "MVB I/O module port")
         di, a1, a2, a3, life = _IO.unpack(data)
         return cls(di, (a1, a2, a3), life)
 
@@ -69,6 +76,8 @@ class Command:
 
     @classmethod
     def decode(cls, data: bytes) -> "Command":
+        """The command in a 64-bit slave frame's data; FrameError if it is not 8 bytes or holds no valid command."""
+        _size(data, _CMD, "train command port")
         mode, direction, traction, brake, seq = _CMD.unpack(data)
         if mode >= len(MODES) or direction >= len(DIRECTIONS) or traction > 10_000 or brake > 10_000:
             raise FrameError(f"train command port holds no valid command: {data.hex()}")
@@ -88,10 +97,23 @@ def wtb_encode(telegram: dict) -> bytes:
 
 
 def wtb_decode(wire: bytes) -> dict:
+    """The telegram in a WTB frame; FrameError if the frame check sequence fails or the body is not a UTF-8 JSON
+    object."""
     if len(wire) < 3:
         raise FrameError(f"WTB frame of {len(wire)} bytes is shorter than its frame check sequence")
     body, fcs = wire[:-2], int.from_bytes(wire[-2:], "little")
     want = crc16_x25(body)
     if fcs != want:
         raise FrameError(f"WTB frame check sequence failed: received {fcs:#06x}, computed {want:#06x}")
-    return json.loads(body)
+    try:
+        telegram = json.loads(body.decode("utf-8"))
+    except UnicodeDecodeError as exc:
+        raise FrameError(f"WTB telegram is not UTF-8: {exc}") from None
+    except RecursionError:
+        raise FrameError(f"WTB telegram nests too deep ({len(body)} bytes)") from None
+    except ValueError as exc:           # JSONDecodeError, an integer over the str-to-int digit limit
+        raise FrameError(f"WTB telegram is not JSON: {exc}") from None
+    if not isinstance(telegram, dict):
+        kind = {list: "array", str: "string", bool: "boolean", type(None): "null"}.get(type(telegram), "number")
+        raise FrameError(f"WTB telegram is a JSON {kind}, not an object")
+    return telegram
