@@ -11,6 +11,9 @@ VENV := .venv
 PY := $(VENV)/bin/python
 VENV_STAMP := $(VENV)/.installed
 NODE_STAMP := node_modules/.installed
+# Debian's Chromium, for the test that opens a generated report headless (tests/test_report_in_browser.py).
+CHROMIUM := /usr/bin/chromium
+SUDO := $(if $(filter 0,$(shell id -u)),,sudo)
 RESULTS := reports/allure-results
 HTML := reports/html
 
@@ -39,7 +42,7 @@ report: $(VENV_STAMP) $(NODE_STAMP) ## run every feature, build reports/html/ind
 	$(PY) -m outline.summary $(RESULTS); \
 	exit $$status
 
-test: $(VENV_STAMP) ## the project's own tests, then the whole conformance run; fails if either fails
+test: $(VENV_STAMP) $(NODE_STAMP) $(CHROMIUM) ## the project's own tests, then the whole conformance run; fails if either fails
 	@$(PY) -m pytest tests $(XDIST); t=$$?; \
 	$(PY) -m pytest features $(XDIST) $(SUT_ARG) $(PYTEST_ARGS); f=$$?; \
 	echo "make test: tests exit $$t, conformance run exit $$f"; \
@@ -66,3 +69,9 @@ $(VENV_STAMP): pyproject.toml
 $(NODE_STAMP): package.json package-lock.json
 	npm ci --no-audit --no-fund --loglevel=error
 	touch $@
+
+# Installed once, when missing (a fresh machine's package lists may be empty or stale: update first).
+$(CHROMIUM):
+	$(SUDO) apt-get update -qq
+	$(SUDO) env DEBIAN_FRONTEND=noninteractive apt-get install -y -qq --no-install-recommends chromium >/dev/null
+	test -x $@
