@@ -16,6 +16,7 @@ from pytest_bdd import given, parsers, then, when
 
 from sut.driver import TrainDriver
 from steps.analysis import describe, intervals, ms, us
+from steps import zh
 
 SECTION = re.compile(r"(?P<a>[\d.]+)-(?P<b>[\d.]+) m (?P<f>\d+) Hz")
 
@@ -37,16 +38,19 @@ def _rear_edge(sut: TrainDriver, boundary: float, kmh: float) -> float:
 
 
 # -- rig set-up ---------------------------------------------------------------------------------------
+@given("试验台上的一套CTCS-2 200C型车载ATP")
 @given("a CTCS-2 200C on-board ATP on the test rig")
 def _(sut: TrainDriver) -> None:
     sut.configure(sets=1)
 
 
+@given(parsers.parse("一列装有CTCS-2 200C型车载ATP的{cars:d}辆编组CRH2动车组"))
 @given(parsers.parse("a CTCS-2 200C on-board ATP fitted to an {cars:d}-car CRH2 train set"))
 def _(sut: TrainDriver, cars: int) -> None:
     sut.configure(sets=1, cars_per_set=cars)
 
 
+@given("ATP已完成启机自检", target_fixture="t_action")
 @given("the ATP has completed its start-up self-test", target_fixture="t_action")
 def _(sut: TrainDriver) -> int:
     sut.power_on()
@@ -58,7 +62,9 @@ def _(sut: TrainDriver) -> int:
     return sut.now_us
 
 
+@given(parsers.parse("列车位于{pos:g} m处,速度为{kmh:g} km/h"))
 @given(parsers.parse("the train is at {pos:g} m running at {kmh:g} km/h"))
+@when(parsers.parse("将列车置于{pos:g} m处,速度设为{kmh:g} km/h"), target_fixture="t_action")
 @when(parsers.parse("the train is set to {pos:g} m running at {kmh:g} km/h"), target_fixture="t_action")
 def _(sut: TrainDriver, pos: float, kmh: float) -> int:
     sut.set_input("position", pos)
@@ -66,12 +72,14 @@ def _(sut: TrainDriver, pos: float, kmh: float) -> int:
     return sut.now_us
 
 
+@given(parsers.parse("列车静止于{boundary:g} m区段分界点的前端临界位置前方{delta:g} m处"))
 @given(parsers.parse("the train stands {delta:g} m ahead of the front edge for the section boundary at {boundary:g} m"))
 def _(sut: TrainDriver, delta: float, boundary: float) -> None:
     sut.set_input("speed", 0)
     sut.set_input("position", _front_edge(sut, boundary) + delta)
 
 
+@when(parsers.parse("列车停在{pos:g} m处"), target_fixture="t_action")
 @when(parsers.parse("the train stops at {pos:g} m"), target_fixture="t_action")
 def _(sut: TrainDriver, pos: float) -> int:
     sut.set_input("speed", 0)
@@ -79,7 +87,9 @@ def _(sut: TrainDriver, pos: float) -> int:
     return sut.now_us
 
 
+@given(parsers.parse("信号发生器发送载频{carrier:d} Hz、低频码{code:w}"))
 @given(parsers.parse("the signal generator sends {carrier:d} Hz with code {code:w}"))
+@when(parsers.parse("信号发生器切换为载频{carrier:d} Hz、低频码{code:w}"), target_fixture="t_action")
 @when(parsers.parse("the signal generator switches to {carrier:d} Hz with code {code:w}"), target_fixture="t_action")
 def _(sut: TrainDriver, carrier: int, code: str) -> int:
     sut.set_input("carrier", carrier)
@@ -87,6 +97,8 @@ def _(sut: TrainDriver, carrier: int, code: str) -> int:
     return sut.now_us
 
 
+@when(parsers.parse("信号发生器发送载频{carrier:d} Hz,仅持续{comparisons:d}次比较,随后恢复为{back:d} Hz"),
+      target_fixture="t_action")
 @when(parsers.parse("the signal generator sends {carrier:d} Hz for {comparisons:d} comparisons, then {back:d} Hz again"),
       target_fixture="t_action")
 def _(sut: TrainDriver, carrier: int, comparisons: int, back: int) -> int:
@@ -97,18 +109,21 @@ def _(sut: TrainDriver, carrier: int, comparisons: int, back: int) -> int:
     return start
 
 
+@given(parsers.parse("信号发生器模拟{kind}轨道电路,信号幅度为{mv:g} mV"))
 @given(parsers.parse("the signal generator reports amplitude {mv:g} mV on a {kind} track circuit"))
 def _(sut: TrainDriver, mv: float, kind: str) -> None:
     sut.set_input("amplitude", mv)
     sut.set_input("track circuit type", kind)
 
 
+@when(parsers.parse("司机在DMI上选择{which:w}载频"), converters={"which": zh.atp_line}, target_fixture="t_action")
 @when(parsers.parse("the driver selects the {which:w}-line carrier set at the DMI"), target_fixture="t_action")
 def _(sut: TrainDriver, which: str) -> int:
     sut.monitor_order(1, "carrier set", which)
     return sut.now_us
 
 
+@when(parsers.parse('ATP输入"{name}"被置位'), target_fixture="t_action")
 @when(parsers.parse('the ATP input "{name}" is set'), target_fixture="t_action")
 def _(sut: TrainDriver, name: str) -> int:
     sut.set_input(name, True)
@@ -121,8 +136,11 @@ def _balise(sut: TrainDriver, group: str, *packets: dict) -> int:
     return sut.now_us
 
 
+@given(parsers.parse('列车已通过应答器组"{group}",其描述的轨道电路为{spec},行车许可终点为{eoa:g} m'))
 @given(parsers.parse('the train has passed balise group "{group}" describing track circuits {spec} '
                      'and an end of authority at {eoa:g} m'))
+@when(parsers.parse('列车通过应答器组"{group}",其描述的轨道电路为{spec},行车许可终点为{eoa:g} m'),
+      target_fixture="t_action")
 @when(parsers.parse('the train passes balise group "{group}" describing track circuits {spec} '
                     'and an end of authority at {eoa:g} m'), target_fixture="t_action")
 def _(sut: TrainDriver, group: str, spec: str, eoa: float) -> int:
@@ -131,46 +149,56 @@ def _(sut: TrainDriver, group: str, spec: str, eoa: float) -> int:
     return _balise(sut, group, {"type": "CTCS-1", "sections": sections}, {"type": "MA", "end_m": eoa})
 
 
+@when(parsers.parse('列车通过侧线应答器组"{group}",收到默认报文'), target_fixture="t_action")
 @when(parsers.parse('the train passes side-line balise group "{group}" sending the default telegram'),
       target_fixture="t_action")
 def _(sut: TrainDriver, group: str) -> int:
     return _balise(sut, group, {"type": "default", "side_line": True})
 
 
+@given(parsers.parse('列车已通过应答器组"{group}",收到{direction:w}信息'), converters={"direction": zh.atp_line})
 @given(parsers.parse('the train has passed balise group "{group}" with {direction:w}-line information'))
+@when(parsers.parse('列车通过应答器组"{group}",收到{direction:w}信息'), converters={"direction": zh.atp_line},
+      target_fixture="t_action")
 @when(parsers.parse('the train passes balise group "{group}" with {direction:w}-line information'),
       target_fixture="t_action")
 def _(sut: TrainDriver, group: str, direction: str) -> int:
     return _balise(sut, group, {"type": "line direction", "direction": direction})
 
 
+@given(parsers.parse('列车已通过应答器组"{group}",其预告自{start:g} m起、长{length:g} m的分相区(ETCS-68)'))
 @given(parsers.parse('the train has passed balise group "{group}" announcing a neutral section from {start:g} m, '
                      '{length:g} m long (ETCS-68)'))
 def _(sut: TrainDriver, group: str, start: float, length: float) -> None:
     _balise(sut, group, {"type": "ETCS-68", "start_m": start, "length_m": length})
 
 
+@given(parsers.parse('列车已通过应答器组"{group}",其给出{at:g} m处的停车点'))
 @given(parsers.parse('the train has passed balise group "{group}" giving a stop point at {at:g} m'))
 def _(sut: TrainDriver, group: str, at: float) -> None:
     _balise(sut, group, {"type": "stop point", "at_m": at, "psd": False})
 
 
+@given(parsers.parse('列车已通过应答器组"{group}",其给出{at:g} m处的停车点,站台设有屏蔽门'))
 @given(parsers.parse('the train has passed balise group "{group}" giving a stop point at {at:g} m '
                      'with platform screen doors'))
 def _(sut: TrainDriver, group: str, at: float) -> None:
     _balise(sut, group, {"type": "stop point", "at_m": at, "psd": True})
 
 
+@given(parsers.parse('列车已通过应答器组"{group}",其链接{at:g} m处的应答器组"{nxt}"'))
 @given(parsers.parse('the train has passed balise group "{group}" linking to group "{nxt}" at {at:g} m'))
 def _(sut: TrainDriver, group: str, nxt: str, at: float) -> None:
     _balise(sut, group, {"type": "linking", "next": [(nxt, at)]})
 
 
+@when(parsers.parse('列车通过应答器组"{group}",收到{packet}信息包'), target_fixture="t_action")
 @when(parsers.parse('the train passes balise group "{group}" with an {packet} packet'), target_fixture="t_action")
 def _(sut: TrainDriver, group: str, packet: str) -> int:
     return _balise(sut, group, {"type": packet})
 
 
+@when(parsers.parse("列车以{kmh:g} km/h从{a:g} m运行到{b:g} m"), target_fixture="t_action")
 @when(parsers.parse("the train runs from {a:g} m to {b:g} m at {kmh:g} km/h"), target_fixture="t_action")
 def _(sut: TrainDriver, a: float, b: float, kmh: float) -> int:
     sut.set_input("position", a)
@@ -181,44 +209,52 @@ def _(sut: TrainDriver, a: float, b: float, kmh: float) -> int:
 
 
 # -- what the ATP decides ---------------------------------------------------------------------------------
+@then(parsers.parse("ATP处于{mode:w}模式"), converters={"mode": zh.atp_mode})
 @then(parsers.parse("the ATP is in mode {mode:w}"))
 def _(sut: TrainDriver, mode: str) -> None:
     assert sut.output("ATP mode") == mode, f"the ATP is in mode {sut.output('ATP mode')}, not {mode}"
 
 
+@then(parsers.re(r"ATP(?:输出(?P<brake>.+?)制动|不输出制动)"), converters={"brake": zh.atp_brake})
 @then(parsers.parse("the ATP commands {brake} brake"))
 def _(sut: TrainDriver, brake: str) -> None:
     want = "none" if brake == "no" else brake
     assert sut.output("ATP brake") == want, f"the ATP commands {sut.output('ATP brake')} brake, not {want}"
 
 
+@then(parsers.parse("ATP给出{permission}"), converters={"permission": zh.atp_permission})
 @then(parsers.parse("the ATP grants {permission}"))
 def _(sut: TrainDriver, permission: str) -> None:
     assert sut.output(permission) == "granted", f"{permission} is {sut.output(permission)}, not granted"
 
 
+@then(parsers.parse("ATP不给出{permission}"), converters={"permission": zh.atp_permission})
 @then(parsers.parse("the ATP withholds {permission}"))
 def _(sut: TrainDriver, permission: str) -> None:
     assert sut.output(permission) == "withheld", f"{permission} is {sut.output(permission)}, not withheld"
 
 
+@then(parsers.parse('DMI显示"{text}"'), converters={"text": zh.atp_dmi_text})
 @then(parsers.parse('the DMI shows "{text}"'))
 def _(sut: TrainDriver, text: str) -> None:
     shown = sut.monitor(1)["faults"]
     assert any(text in m for m in shown), f"the DMI does not show {text!r}: {shown}"
 
 
+@then(parsers.parse('DMI不显示"{text}"'), converters={"text": zh.atp_dmi_text})
 @then(parsers.parse('the DMI does not show "{text}"'))
 def _(sut: TrainDriver, text: str) -> None:
     shown = sut.monitor(1)["faults"]
     assert not any(text in m for m in shown), f"the DMI shows {text!r}: {shown}"
 
 
+@then("线路数据被删除")
 @then("the line data is deleted")
 def _(sut: TrainDriver, t_action: int) -> None:
     assert sut.trace.first(kind="linedata.delete", since=t_action) is not None, "the line data was kept"
 
 
+@then("线路数据被保留")
 @then("the line data is kept")
 def _(sut: TrainDriver, t_action: int) -> None:
     deleted = sut.trace.select(kind="linedata.delete", since=t_action)
@@ -226,6 +262,7 @@ def _(sut: TrainDriver, t_action: int) -> None:
 
 
 # -- CFSK ----------------------------------------------------------------------------------------------------
+@then(parsers.parse("CFSK经{n:d}次比较一致后将载频{carrier:d} Hz与低频码{code:w}一起上报"))
 @then(parsers.parse("the CFSK reports {carrier:d} Hz with code {code:w} together, after {n:d} agreeing comparisons"))
 def _(sut: TrainDriver, t_action: int, carrier: int, code: str, n: int) -> None:
     report = sut.trace.first(kind="cfsk.report", since=t_action, carrier=carrier)
@@ -238,12 +275,14 @@ def _(sut: TrainDriver, t_action: int, carrier: int, code: str, n: int) -> None:
         f"{(n - 1) * period / 1000:g}..{n * period / 1000:g} ms"
 
 
+@then(parsers.parse("CFSK不上报载频{carrier:d} Hz"))
 @then(parsers.parse("the CFSK does not report {carrier:d} Hz"))
 def _(sut: TrainDriver, t_action: int, carrier: int) -> None:
     reports = sut.trace.select(kind="cfsk.report", since=t_action, carrier=carrier)
     assert not reports, f"the CFSK reported {carrier} Hz: {describe(reports)}"
 
 
+@then("安全计算机收到CFSK故障信息,未收到译码结果")
 @then("the safety computer gets the CFSK fault and no decoded result")
 def _(sut: TrainDriver, t_action: int) -> None:
     fault = sut.trace.first(kind="cfsk.fault", since=t_action)
@@ -252,11 +291,13 @@ def _(sut: TrainDriver, t_action: int) -> None:
     assert not decoded, f"decoded results after the CFSK fault: {describe(decoded)}"
 
 
+@then(parsers.parse("CFSK使用{which:w}载频"), converters={"which": zh.atp_line})
 @then(parsers.parse("the CFSK uses the {which:w}-line carrier set"))
 def _(sut: TrainDriver, which: str) -> None:
     assert sut.output("CFSK carrier set") == which, f"the CFSK uses the {sut.output('CFSK carrier set')} set"
 
 
+@then(parsers.parse("ATP为CFSK记录{fields}"), converters={"fields": zh.atp_record_fields})
 @then(parsers.parse("the ATP records for the CFSK {fields}"))
 def _(sut: TrainDriver, fields: str) -> None:
     records = [r for r in sut.records("ATP") if "CFSK" in r]
@@ -267,6 +308,7 @@ def _(sut: TrainDriver, fields: str) -> None:
 
 
 # -- carrier consistency (ATP-02) ------------------------------------------------------------------------------
+@then(parsers.parse("速度为{kmh:g} km/h时,ATP在接收范围后端越过{boundary:g} m处判定载频不一致"))
 @then(parsers.parse("the ATP declares the carrier inconsistent as the rear of the receiver range passes "
                     "{boundary:g} m at {kmh:g} km/h"))
 def _(sut: TrainDriver, t_action: int, boundary: float, kmh: float) -> None:
@@ -278,12 +320,14 @@ def _(sut: TrainDriver, t_action: int, boundary: float, kmh: float) -> None:
         f"declared at {event['at_m']} m; the formula puts the edge at {edge:.2f} m (+{slack:.2f} m)"
 
 
+@then("ATP判定载频一致")
 @then("the ATP finds the carrier consistent")
 def _(sut: TrainDriver, t_action: int) -> None:
     bad = sut.trace.select(kind="carrier.inconsistent", since=t_action)
     assert not bad, f"the ATP declared the carrier inconsistent: {describe(bad)}"
 
 
+@then("ATP判定载频不一致")
 @then("the ATP declares the carrier inconsistent")
 def _(sut: TrainDriver, t_action: int) -> None:
     assert sut.trace.first(kind="carrier.inconsistent", since=t_action) is not None, \
@@ -291,6 +335,7 @@ def _(sut: TrainDriver, t_action: int) -> None:
 
 
 # -- DEF self-test (ATP-08) ---------------------------------------------------------------------------------------
+@then(parsers.parse("DEF自检按{step:g} s间隔执行{n:d}个检测步骤,并在{total:g} s内完成"))
 @then(parsers.parse("the DEF self-test ran {n:d} steps {step:g} s apart and finished within {total:g} s"))
 def _(sut: TrainDriver, n: int, step: float, total: float) -> None:
     steps = sut.trace.select(kind="def.step")
@@ -303,6 +348,7 @@ def _(sut: TrainDriver, n: int, step: float, total: float) -> None:
         f"the DEF self-test took {ms(done.t - steps[0].t) if done else 'forever'} (bound {total} s)"
 
 
+@then("DEF自检在回读错误时中止")
 @then("the DEF self-test stops at a wrong read-back")
 def _(sut: TrainDriver) -> None:
     wrong = sut.trace.first(kind="def.step", readback="wrong")
@@ -311,6 +357,7 @@ def _(sut: TrainDriver) -> None:
 
 
 # -- neutral section, linking (ATP-11, ATP-12) ------------------------------------------------------------------
+@then(parsers.parse("ATP自{a:g} m至{b:g} m输出过分相命令,误差不超过{tol:g} m"))
 @then(parsers.parse("the ATP commands neutral-section passing from {a:g} m to {b:g} m, to within {tol:g} m"))
 def _(sut: TrainDriver, t_action: int, a: float, b: float, tol: float) -> None:
     changes = sut.trace.select(kind="neutral.command", since=t_action)
@@ -321,6 +368,7 @@ def _(sut: TrainDriver, t_action: int, a: float, b: float, tol: float) -> None:
     assert b <= off[0]["at_m"] <= b + tol, f"passing ended at {off[0]['at_m']} m, section to {b} m"
 
 
+@then(parsers.parse('丢失应答器组"{group}"时的链接反应为{reaction}'), converters={"reaction": zh.atp_reaction})
 @then(parsers.parse('the linking reaction to the missing group "{group}" is {reaction}'))
 def _(sut: TrainDriver, t_action: int, group: str, reaction: str) -> None:
     event = sut.trace.first(kind="linking.missing", since=t_action, group=group)

@@ -26,6 +26,7 @@ def _(sut: TrainDriver, t_action: int, bound: float) -> None:
                                         f"more than {bound} ms")
 
 
+@then(parsers.parse("命令经过的每个节点增加的延时不超过{bound:g} ms"))
 @then(parsers.parse("each node on the way adds at most {bound:g} ms to a command"))
 def _(sut: TrainDriver, t_action: int, bound: float) -> None:
     deliveries = analysis.command_deliveries(sut.trace, since=t_action)
@@ -36,6 +37,7 @@ def _(sut: TrainDriver, t_action: int, bound: float) -> None:
         f"{ms(worst.latency // worst.hops)} per node, more than {bound} ms")
 
 
+@then(parsers.parse("CCU发送命令的间隔不小于{bound:g} ms"))
 @then(parsers.parse("commands leave the CCU at intervals of at least {bound:g} ms"))
 def _(sut: TrainDriver, t_action: int, bound: float) -> None:
     by_node: dict[str, list[int]] = {}
@@ -55,18 +57,21 @@ def _(sut: TrainDriver, t_action: int, node: str) -> None:
     assert senders == {node}, f"commands came from {sorted(senders) or 'nobody'}, expected only {node}"
 
 
+@then(parsers.parse('"{node}"不在环网上发送命令'))
 @then(parsers.parse('"{node}" puts no commands on the ring'))
 def _(sut: TrainDriver, t_action: int, node: str) -> None:
     found = sut.trace.select(kind="cmd.tx", source=f"{node}.MDM8", since=t_action)
     assert not found, f"{node} sent commands: {analysis.describe(found)}"
 
 
+@then(parsers.parse('{after:g} ms起"{node}"不在环网上发送命令'))
 @then(parsers.parse('"{node}" puts no commands on the ring from {after:g} ms on'))
 def _(sut: TrainDriver, t_action: int, node: str, after: float) -> None:
     found = sut.trace.select(kind="cmd.tx", source=f"{node}.MDM8", since=t_action + us(after))
     assert not found, f"{node} sent commands: {analysis.describe(found)}"
 
 
+@then(parsers.parse('{after:g} ms起"{txc}"既不向环网也不向自诊断传输线发送任何数据'))
 @then(parsers.parse('"{txc}" puts nothing on the ring or the self-diagnostic line from {after:g} ms on'))
 def _(sut: TrainDriver, t_action: int, txc: str, after: float) -> None:
     system = txc.rsplit(".", 1)[0]
@@ -154,16 +159,19 @@ def _nothing_over(sut: TrainDriver, devices: list[str], since: int, path: int) -
         assert not got, f"{device} received commands over path {path}: {analysis.describe(got)}"
 
 
+@then(parsers.parse("{car:d}号车的{device:w}经路径{path:d}收不到任何命令"))
 @then(parsers.parse("the {device:w} of car {car:d} receives nothing over path {path:d}"))
 def _(sut: TrainDriver, t_action: int, device: str, car: int, path: int) -> None:
     _nothing_over(sut, [f"car{car}.{device}"], t_action, path)
 
 
+@then(parsers.parse("{car:d}号车的CI和BCU都收不到经路径{path:d}的命令"))
 @then(parsers.parse("the CI and BCU of car {car:d} receive nothing over path {path:d}"))
 def _(sut: TrainDriver, t_action: int, car: int, path: int) -> None:
     _nothing_over(sut, analysis.command_devices(sut, car), t_action, path)
 
 
+@then("经路径2和3传送的命令只含牵引A、B挡和制动A、B挡")
 @then("commands over paths 2 and 3 carry only the traction and brake steps A and B")
 def _(sut: TrainDriver, t_action: int) -> None:
     takes = [ev for ev in sut.trace.select(kind="cmd.in", since=t_action) if ev["path"] in (2, 3)]
@@ -173,6 +181,7 @@ def _(sut: TrainDriver, t_action: int) -> None:
     assert not odd, f"paths 2/3 carried more than the A/B steps: {analysis.describe(odd)}"
 
 
+@then(parsers.parse("没有CI或BCU收到{notch:d}级以外的牵引级位"))
 @then(parsers.parse("no CI or BCU receives a traction notch other than {notch:d}"))
 def _(sut: TrainDriver, t_action: int, notch: int) -> None:
     odd = [ev for ev in sut.trace.select(kind="cmd.in", since=t_action, path=1) if ev["traction"] != notch]
@@ -208,6 +217,7 @@ def _(sut: TrainDriver, t_action: int, new: int, old: int, lo: float, hi: float)
                                    f"{ms(top)} (command interval {ms(interval)})")
 
 
+@then(parsers.parse('系统1正常时只有{cab:d}号车CCU的系统1发送命令'))
 @then(parsers.parse('while system 1 is healthy only system 1 of the car {cab:d} CCU sends commands'))
 def _(sut: TrainDriver, t_action: int, cab: int) -> None:
     sent = sut.trace.select(kind="cmd.tx", since=t_action)
@@ -217,16 +227,19 @@ def _(sut: TrainDriver, t_action: int, cab: int) -> None:
 
 
 # -- RED-03: cab lamps -------------------------------------------------------------------------------
+@then(parsers.parse('{cab:d}号司机室的"{lamp}"指示灯点亮'))
 @then(parsers.parse('the "{lamp}" lamp of cab {cab:d} is lit'))
 def _(sut: TrainDriver, lamp: str, cab: int) -> None:
     assert sut.lamp(cab, lamp), f"the {lamp} lamp of cab {cab} is dark"
 
 
+@then(parsers.parse('{cab:d}号司机室的"{lamp}"指示灯熄灭'))
 @then(parsers.parse('the "{lamp}" lamp of cab {cab:d} is dark'))
 def _(sut: TrainDriver, lamp: str, cab: int) -> None:
     assert not sut.lamp(cab, lamp), f"the {lamp} lamp of cab {cab} is lit"
 
 
+@then(parsers.parse('{cab:d}号司机室的"{lamp}"指示灯始终未熄灭'))
 @then(parsers.parse('the "{lamp}" lamp of cab {cab:d} never went dark'))
 def _(sut: TrainDriver, t_action: int, lamp: str, cab: int) -> None:
     offs = sut.trace.select(kind="lamp.off", source=f"car{cab}.cab", since=t_action, lamp=lamp)

@@ -43,6 +43,7 @@ def _(sut: TrainDriver, cab: int, notch: int) -> int:
     return sut.now_us
 
 
+@given(parsers.parse("{cab:d}号司机室的制动手柄在{step:d}级"))
 @given(parsers.parse("the brake handle of cab {cab:d} is at step {step:d}"))
 @when(parsers.parse("司机将{cab:d}号司机室的制动手柄移到{step:d}级"), target_fixture="t_action")
 @when(parsers.parse("the driver moves the brake handle of cab {cab:d} to step {step:d}"),

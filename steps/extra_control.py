@@ -8,15 +8,18 @@ from __future__ import annotations
 from pytest_bdd import parsers, then
 
 from sut.driver import TrainDriver
-from steps import analysis
+from steps import analysis, zh
 from steps.analysis import ms, us
 
 # The same value grammar as steps/vehicle.py: lower-case words and hyphens, so "open no later than" is never
 # read as one longer value.
 VALUE = r"[a-z][a-z -]*[a-z]"
 NUMBER = r"\d+(?:\.\d+)?"
+# In a Chinese sentence: a Chinese state word (zh.CORE_STATES, converted to the English value) or the English one.
+ZH_VALUE = rf"{zh.CORE_STATE_RE}|{VALUE}"
 
 
+@then(parsers.parse("{after:g} ms起每个CI和BCU经路径1只收到牵引级位{notch:d}和制动级位{step:d}"))
 @then(parsers.parse("from {after:g} ms on every CI and BCU receives only traction notch {notch:d} and brake step "
                     "{step:d} over path 1"))
 def _(sut: TrainDriver, t_action: int, after: float, notch: int, step: int) -> None:
@@ -32,6 +35,7 @@ def _(sut: TrainDriver, t_action: int, after: float, notch: int, step: int) -> N
         assert not odd, f"{device} received other than notch {notch} / step {step} over path 1: {analysis.describe(odd)}"
 
 
+@then(parsers.parse('{after:g} ms起没有CI或BCU收到"{direction}"方向指令'), converters={"direction": zh.direction})
 @then(parsers.parse('from {after:g} ms on no CI or BCU receives direction "{direction}"'))
 def _(sut: TrainDriver, t_action: int, after: float, direction: str) -> None:
     since = t_action + us(after)
@@ -44,6 +48,8 @@ def _(sut: TrainDriver, t_action: int, after: float, direction: str) -> None:
         assert not odd, f"{device} received direction {direction}: {analysis.describe(odd)}"
 
 
+@then(parsers.re(rf'"(?P<a>[^"]+)"变为(?P<va>{ZH_VALUE})的时刻不晚于"(?P<b>[^"]+)"变为(?P<vb>{ZH_VALUE})后'
+                 rf'(?P<bound>{NUMBER}) ms'), converters={"bound": float, "va": zh.core_state, "vb": zh.core_state})
 @then(parsers.re(rf'the "(?P<a>[^"]+)" became (?P<va>{VALUE}) no later than (?P<bound>{NUMBER}) ms after the '
                  rf'"(?P<b>[^"]+)" became (?P<vb>{VALUE})'), converters={"bound": float})
 def _(sut: TrainDriver, t_action: int, a: str, va: str, bound: float, b: str, vb: str) -> None:
@@ -60,6 +66,7 @@ def _(sut: TrainDriver, t_action: int, a: str, va: str, bound: float, b: str, vb
     assert sut.output(a) == va, f"the {a} is {sut.output(a)} now, not {va}"
 
 
+@then(parsers.parse('{cab:d}号司机室监视器不再显示"{text}"'))
 @then(parsers.parse('the cab {cab:d} monitor no longer shows "{text}"'))
 def _(sut: TrainDriver, cab: int, text: str) -> None:
     faults = sut.monitor(cab)["faults"]

@@ -10,7 +10,7 @@ from __future__ import annotations
 from pytest_bdd import parsers, then
 
 from sut.driver import TrainDriver
-from steps import analysis
+from steps import analysis, zh
 from steps.analysis import ms, same_value, us
 
 
@@ -18,6 +18,8 @@ def _display_changes(sut: TrainDriver, cab: int, name: str, since: int):
     return sut.trace.select(kind="display.change", source=f"car{cab}.monitor", since=since, name=name)
 
 
+@then(parsers.parse('{cab:d}号司机室监视器上"{name}"在{bound:g} ms内变为"{value}"'),
+      converters={"value": zh.core_state})
 @then(parsers.parse('the cab {cab:d} monitor changes "{name}" to "{value}" within {bound:g} ms'))
 def _(sut: TrainDriver, t_action: int, cab: int, name: str, value: str, bound: float) -> None:
     """A change, not a state: the first value the monitor displays after the action is the wanted one,
@@ -33,6 +35,7 @@ def _(sut: TrainDriver, t_action: int, cab: int, name: str, value: str, bound: f
     assert same_value(shown, value), f"the cab {cab} monitor now displays {name} as {shown!r}, not {value!r}"
 
 
+@then(parsers.parse('{cab:d}号司机室监视器上"{name}"从未显示为"{value}"'), converters={"value": zh.core_state})
 @then(parsers.parse('the cab {cab:d} monitor never displayed "{name}" as "{value}"'))
 def _(sut: TrainDriver, t_action: int, cab: int, name: str, value: str) -> None:
     shown = sut.monitor(cab)["display"].get(name)
@@ -42,6 +45,7 @@ def _(sut: TrainDriver, t_action: int, cab: int, name: str, value: str) -> None:
     assert not same_value(shown, value), f"the cab {cab} monitor displays {name} as {value}"
 
 
+@then(parsers.parse('{after:g} ms起{cab:d}号司机室监视器上"{name}"保持不变'))
 @then(parsers.parse('the cab {cab:d} monitor kept "{name}" unchanged from {after:g} ms on'))
 def _(sut: TrainDriver, t_action: int, cab: int, name: str, after: float) -> None:
     shown = sut.monitor(cab)["display"].get(name)
@@ -51,6 +55,8 @@ def _(sut: TrainDriver, t_action: int, cab: int, name: str, after: float) -> Non
     assert not changes, f"the cab {cab} monitor changed {name}: {analysis.describe(changes)}"
 
 
+@then(parsers.parse('"{name}"变为"{value}"后{cab:d}号司机室监视器在{bound:g} ms内随之显示'),
+      converters={"value": zh.core_state})
 @then(parsers.parse('the cab {cab:d} monitor follows "{name}" to "{value}" within {bound:g} ms'))
 def _(sut: TrainDriver, t_action: int, cab: int, name: str, value: str, bound: float) -> None:
     """The train's output changed after the action, and the monitor displayed the new state within the
@@ -67,6 +73,7 @@ def _(sut: TrainDriver, t_action: int, cab: int, name: str, value: str, bound: f
     assert same_value(now, value), f"the cab {cab} monitor now displays {name} as {now!r}, not {value!r}"
 
 
+@then(parsers.parse("{a:d}号与{b:d}号司机室监视器显示的数值一致"))
 @then(parsers.parse("the cab {a:d} and cab {b:d} monitors display the same values"))
 def _(sut: TrainDriver, a: int, b: int) -> None:
     shown_a, shown_b = sut.monitor(a)["display"], sut.monitor(b)["display"]
@@ -77,12 +84,14 @@ def _(sut: TrainDriver, a: int, b: int) -> None:
     assert not differ, f"cab {a} / cab {b} monitors differ: {differ}"
 
 
+@then(parsers.parse('{cab:d}号司机室监视器的数据来自"{node}"'))
 @then(parsers.parse('the cab {cab:d} monitor is fed by "{node}"'))
 def _(sut: TrainDriver, cab: int, node: str) -> None:
     fed_by = sut.monitor(cab)["fed_by"]
     assert fed_by == node, f"the cab {cab} monitor is fed by {fed_by}, not {node}"
 
 
+@then(parsers.parse('{cab:d}号司机室监视器显示"{text}"且无其他故障'))
 @then(parsers.parse('the cab {cab:d} monitor shows "{text}" and no other fault'))
 def _(sut: TrainDriver, cab: int, text: str) -> None:
     faults = sut.monitor(cab)["faults"]

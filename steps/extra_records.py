@@ -14,7 +14,7 @@ import pytest
 from pytest_bdd import parsers, then, when
 
 from sut.driver import TrainDriver
-from steps import analysis
+from steps import analysis, zh
 from steps.analysis import ms, us
 
 WATCH_STEP_US = 1000
@@ -35,6 +35,7 @@ def _watched(watch: dict[str, Any] | None, cab: int) -> list[tuple[int, tuple[st
     return watch["samples"]
 
 
+@when(parsers.parse("持续观察{cab:d}号司机室监视器{span:d} ms"), target_fixture="monitor_watch")
 @when(parsers.parse("the cab {cab:d} monitor is watched for {span:d} ms"), target_fixture="monitor_watch")
 def _(sut: TrainDriver, monitor_watch: dict[str, Any] | None, cab: int, span: int) -> dict[str, Any]:
     if monitor_watch is not None and monitor_watch["cab"] == cab:
@@ -50,6 +51,7 @@ def _(sut: TrainDriver, monitor_watch: dict[str, Any] | None, cab: int, span: in
     return {"cab": cab, "samples": samples}
 
 
+@then(parsers.parse('{cab:d}号司机室监视器在{bound:g} ms内显示出"{text}"'))
 @then(parsers.parse('the cab {cab:d} monitor showed "{text}" within {bound:g} ms'))
 def _(monitor_watch: dict[str, Any] | None, t_action: int, cab: int, text: str, bound: float) -> None:
     """Measured from the last action; if the text was already shown when the watch began, the watch's
@@ -61,6 +63,7 @@ def _(monitor_watch: dict[str, Any] | None, t_action: int, cab: int, text: str, 
     assert hit - t_action <= us(bound), f"{text!r} was shown {ms(hit - t_action)} after the action, limit {bound} ms"
 
 
+@then(parsers.parse('{cab:d}号司机室监视器在{bound:g} ms内不再显示"{text}"'))
 @then(parsers.parse('the cab {cab:d} monitor stopped showing "{text}" within {bound:g} ms'))
 def _(monitor_watch: dict[str, Any] | None, t_action: int, cab: int, text: str, bound: float) -> None:
     samples = [(t, shown) for t, shown in _watched(monitor_watch, cab) if t >= t_action]
@@ -70,18 +73,22 @@ def _(monitor_watch: dict[str, Any] | None, t_action: int, cab: int, text: str, 
     assert gone - t_action <= us(bound), f"{text!r} was shown until {ms(gone - t_action)} after the action, limit {bound} ms"
 
 
+@then(parsers.parse('{cab:d}号司机室监视器始终未显示"{text}"'))
 @then(parsers.parse('the cab {cab:d} monitor never showed "{text}"'))
 def _(monitor_watch: dict[str, Any] | None, cab: int, text: str) -> None:
     shown_at = [t for t, shown in _watched(monitor_watch, cab) if text in shown]
     assert not shown_at, f"the cab {cab} monitor showed {text!r} at {ms(shown_at[0])}"
 
 
+@then(parsers.parse("{cab:d}号司机室监视器始终未显示任何故障"))
 @then(parsers.parse("the cab {cab:d} monitor never showed a fault"))
 def _(monitor_watch: dict[str, Any] | None, cab: int) -> None:
     odd = [(t, shown) for t, shown in _watched(monitor_watch, cab) if shown]
     assert not odd, f"the cab {cab} monitor showed {list(odd[0][1])} at {ms(odd[0][0])}"
 
 
+@then(parsers.parse("{cab:d}号司机室监视器除令牌重新生成期间的短暂静默外未显示任何故障,"
+                    "每次静默在{bound:g} ms内结束"))
 @then(parsers.parse("the cab {cab:d} monitor showed no fault but the silences of a token regeneration, "
                     "each over within {bound:g} ms"))
 def _(monitor_watch: dict[str, Any] | None, cab: int, bound: float) -> None:
@@ -101,12 +108,14 @@ def _(monitor_watch: dict[str, Any] | None, cab: int, bound: float) -> None:
     assert not samples[-1][1], f"the cab {cab} monitor still shows {list(samples[-1][1])}"
 
 
+@then(parsers.parse('{cab:d}号司机室监视器除"{text}"外未显示任何故障'))
 @then(parsers.parse('the cab {cab:d} monitor showed no fault but "{text}"'))
 def _(monitor_watch: dict[str, Any] | None, cab: int, text: str) -> None:
     others = sorted({f for _, shown in _watched(monitor_watch, cab) for f in shown if f != text})
     assert not others, f"the cab {cab} monitor also showed {others}"
 
 
+@then(parsers.parse('{cab:d}号司机室监视器不显示"{text}"'))
 @then(parsers.parse('the cab {cab:d} monitor does not show "{text}"'))
 def _(sut: TrainDriver, cab: int, text: str) -> None:
     faults = sut.monitor(cab)["faults"]
@@ -121,23 +130,27 @@ def _hdlc_polls(sut: TrainDriver, devices: list[str], since: int, lo: float, hi:
         analysis.expect_period(times, lo, hi, f"{device} polled over HDLC since {ms(since)}")
 
 
+@then(parsers.parse("每个CI和BCU每{lo:g}至{hi:g} ms经HDLC被轮询一次"))
 @then(parsers.parse("every CI and BCU is polled over HDLC every {lo:g} to {hi:g} ms"))
 def _(sut: TrainDriver, t_action: int, lo: float, hi: float) -> None:
     _hdlc_polls(sut, analysis.command_devices(sut), t_action, lo, hi)
 
 
+@then(parsers.parse("{car:d}号车以外的每个CI和BCU每{lo:g}至{hi:g} ms经HDLC被轮询一次"))
 @then(parsers.parse("every CI and BCU outside car {car:d} is polled over HDLC every {lo:g} to {hi:g} ms"))
 def _(sut: TrainDriver, t_action: int, car: int, lo: float, hi: float) -> None:
     others = [d for d in analysis.command_devices(sut) if not d.startswith(f"car{car}.")]
     _hdlc_polls(sut, others, t_action, lo, hi)
 
 
+@then(parsers.parse("{car:d}号车未装设{device:w}"))
 @then(parsers.parse("car {car:d} has no {device:w}"))
 def _(sut: TrainDriver, car: int, device: str) -> None:
     got = sut.devices(car)
     assert f"car{car}.{device}" not in got, f"car {car} has a {device}: {sorted(got)}"
 
 
+@then(parsers.parse("每辆车的{device:w}每{lo:g}至{hi:g} ms被轮询一次"))
 @then(parsers.parse("the {device:w} of every car is polled every {lo:g} to {hi:g} ms"))
 def _(sut: TrainDriver, t_action: int, device: str, lo: float, hi: float) -> None:
     for car in analysis.cars(sut):
@@ -149,6 +162,7 @@ def _(sut: TrainDriver, t_action: int, device: str, lo: float, hi: float) -> Non
         analysis.expect_period((ev.t for ev in polls), lo, hi, f"{name} polled")
 
 
+@then(parsers.parse('"{device}"接在{milliamps:d} mA电流环上'))
 @then(parsers.parse('"{device}" is on a {milliamps:d} mA current loop'))
 def _(sut: TrainDriver, t_action: int, device: str, milliamps: int) -> None:
     loops = {ev["loop"] for ev in sut.trace.select(kind="loop.*", source=device, since=t_action)}
@@ -164,11 +178,13 @@ def _one_way(sut: TrainDriver, since: int, device: str, kind: str, lo: float, hi
     analysis.expect_period((ev.t for ev in events), lo, hi, f"transfers with {device}")
 
 
+@then(parsers.parse('"{device}"只接收其LCU发来的数据,每{lo:g}至{hi:g} ms一次'))
 @then(parsers.parse('"{device}" only receives from its LCU, every {lo:g} to {hi:g} ms'))
 def _(sut: TrainDriver, t_action: int, device: str, lo: float, hi: float) -> None:
     _one_way(sut, t_action, device, "loop.send", lo, hi)
 
 
+@then(parsers.parse('"{device}"只向其LCU发送数据,每{lo:g}至{hi:g} ms一次'))
 @then(parsers.parse('"{device}" only sends to its LCU, every {lo:g} to {hi:g} ms'))
 def _(sut: TrainDriver, t_action: int, device: str, lo: float, hi: float) -> None:
     _one_way(sut, t_action, device, "loop.report", lo, hi)
@@ -181,12 +197,15 @@ def _fault_records(sut: TrainDriver, master: str, node: str) -> list[list[str]]:
     return [t.split("|") for t in texts if t.startswith("F|")]
 
 
+@then(parsers.parse('"{master}"保存有"{node}"的{count:d}条故障记录'))
 @then(parsers.parse('"{master}" holds {count:d} fault record(s) of "{node}"'))
 def _(sut: TrainDriver, master: str, count: int, node: str) -> None:
     records = _fault_records(sut, master, node)
     assert len(records) == count, f"{master} holds {len(records)} fault records of {node}: {records}"
 
 
+@then(parsers.parse('"{master}"保存有"{node}"关于"{board}"{event:w}的故障记录,其时间戳与该事件相差'
+                    '不超过{bound:g} ms'), converters={"event": zh.core_event})
 @then(parsers.parse('"{master}" holds a fault record of "{node}" saying "{board}" {event:w}, stamped within '
                     '{bound:g} ms of it'))
 def _(sut: TrainDriver, t_action: int, master: str, node: str, board: str, event: str, bound: float) -> None:
@@ -197,12 +216,14 @@ def _(sut: TrainDriver, t_action: int, master: str, node: str, board: str, event
         f"the record is stamped {records[-1][1]} ms; the {event} happened at {ms(t_action)} (limit {bound} ms)")
 
 
+@then(parsers.parse("{cab:d}号司机室的检修画面共有{count:d}行"))
 @then(parsers.parse("the maintenance view of cab {cab:d} holds {count:d} line(s)"))
 def _(sut: TrainDriver, cab: int, count: int) -> None:
     history = sut.monitor(cab)["maintenance"]
     assert len(history) == count, f"the maintenance view of cab {cab} holds {len(history)} lines: {history}"
 
 
+@then(parsers.parse('{cab:d}号司机室的检修画面未列出"{text}"'))
 @then(parsers.parse('the maintenance view of cab {cab:d} does not list "{text}"'))
 def _(sut: TrainDriver, cab: int, text: str) -> None:
     history = sut.monitor(cab)["maintenance"]

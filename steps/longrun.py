@@ -50,6 +50,7 @@ def hours_us(hours: float) -> int:
     return round(hours * HOUR_US)
 
 
+@when(parsers.parse("列车连续运行{hours:g} h,每{every:g} h采样一个稳态时段"), target_fixture="t_action")
 @when(parsers.parse("the train runs for {hours:g} h, sampled for one steady period every {every:g} h"),
       target_fixture="t_action")
 def _(sut: TrainDriver, long_run: LongRun, hours: float, every: float) -> int:
@@ -57,12 +58,14 @@ def _(sut: TrainDriver, long_run: LongRun, hours: float, every: float) -> int:
     return sut.now_us
 
 
+@when(parsers.parse("列车连续运行{hours:g} h"), target_fixture="t_action")
 @when(parsers.parse("the train runs for {hours:g} h"), target_fixture="t_action")
 def _(sut: TrainDriver, long_run: LongRun, hours: float) -> int:
     _run(sut, long_run, hours_us(hours), long_run.sample_every_us)
     return sut.now_us
 
 
+@when(parsers.parse("列车运行至上电后{hours:g} h,每{every:g} h采样一个稳态时段"), target_fixture="t_action")
 @when(parsers.parse("the train runs until {hours:g} h after power-up, sampled for one steady period every "
                     "{every:g} h"), target_fixture="t_action")
 def _(sut: TrainDriver, long_run: LongRun, hours: float, every: float) -> int:
@@ -70,6 +73,7 @@ def _(sut: TrainDriver, long_run: LongRun, hours: float, every: float) -> int:
     return sut.now_us
 
 
+@when(parsers.parse("列车运行至上电后{hours:g} h"), target_fixture="t_action")
 @when(parsers.parse("the train runs until {hours:g} h after power-up"), target_fixture="t_action")
 def _(sut: TrainDriver, long_run: LongRun, hours: float) -> int:
     _run(sut, long_run, _until(sut, hours), long_run.sample_every_us)
@@ -110,6 +114,7 @@ def stretches(trace: Trace, start: int, end: int) -> list[tuple[int, int]]:
 
 
 # -- whole-run checks from the counters ------------------------------------------------------------
+@then("运行期间没有节点进行令牌初始化")
 @then("no node initialised the token during the run")
 def _(sut: TrainDriver, long_run: LongRun) -> None:
     _ = long_run.span_us
@@ -118,6 +123,7 @@ def _(sut: TrainDriver, long_run: LongRun) -> None:
     assert not again, f"token initialisations during the run: {again}"
 
 
+@then("运行期间没有节点丢弃帧")
 @then("no node discarded a frame during the run")
 def _(sut: TrainDriver, long_run: LongRun) -> None:
     _ = long_run.span_us
@@ -125,11 +131,13 @@ def _(sut: TrainDriver, long_run: LongRun) -> None:
     assert not bad, f"frames discarded during the run: {bad}"
 
 
+@then(parsers.parse("整个运行期间每个节点每{lo:g}至{hi:g} ms发送一次状态数据"))
 @then(parsers.parse("every node sent status data once every {lo:g} to {hi:g} ms over the whole run"))
 def _(sut: TrainDriver, long_run: LongRun, lo: float, hi: float) -> None:
     _expect_count(long_run, "status sent", lo, hi, "sent status data")
 
 
+@then(parsers.parse("整个运行期间每个节点每{lo:g}至{hi:g} ms收到一次令牌"))
 @then(parsers.parse("every node received the token once every {lo:g} to {hi:g} ms over the whole run"))
 def _(sut: TrainDriver, long_run: LongRun, lo: float, hi: float) -> None:
     _expect_count(long_run, "tokens received", lo, hi, "received the token")
@@ -145,6 +153,7 @@ def _expect_count(run: LongRun, counter: str, lo: float, hi: float, what: str) -
             f"{node} {what} {got} times in {span / HOUR_US:g} h: a cycle of {lo:g}..{hi:g} ms gives {fewest}..{most}")
 
 
+@then(parsers.parse('每个LCU都收到了"{ccu}"在运行期间发出的每条命令'))
 @then(parsers.parse('every LCU received every command "{ccu}" sent during the run'))
 def _(sut: TrainDriver, long_run: LongRun, ccu: str) -> None:
     sent = long_run.delta(ccu, "commands sent")
@@ -155,6 +164,7 @@ def _(sut: TrainDriver, long_run: LongRun, ccu: str) -> None:
         assert abs(got - sent) <= 1, f"{lcu} received {got} of the {sent} commands {ccu} sent"
 
 
+@then(parsers.parse("每个LCU的时钟与上电以来的时间相差不超过{bound:g} ms"))
 @then(parsers.parse("the clock of every LCU reads the time since power-up within {bound:g} ms"))
 def _(sut: TrainDriver, long_run: LongRun, bound: float) -> None:
     _ = long_run.span_us
@@ -166,6 +176,7 @@ def _(sut: TrainDriver, long_run: LongRun, bound: float) -> None:
 
 
 # -- timing in the samples -------------------------------------------------------------------------
+@then(parsers.parse("每个采样时段内,{cab:d}号司机室监视器每{lo:g}至{hi:g} ms收到其他每个节点的状态数据"))
 @then(parsers.parse("in every sample the cab {cab:d} monitor receives status data from every other node "
                     "every {lo:g} to {hi:g} ms"))
 def _(sut: TrainDriver, long_run: LongRun, cab: int, lo: float, hi: float) -> None:
@@ -192,6 +203,7 @@ def _(sut: TrainDriver, long_run: LongRun, cab: int, lo: float, hi: float) -> No
 
 
 # -- the recorder ----------------------------------------------------------------------------------
+@then(parsers.parse('"{master}"按时间先后保存以下故障记录,每条的时间戳误差不超过{bound:g} ms:'))
 @then(parsers.parse('"{master}" holds these fault records, oldest first, each stamped within {bound:g} ms:'))
 def _(sut: TrainDriver, master: str, bound: float, datatable: list[list[str]]) -> None:
     header, *rows = datatable

@@ -12,6 +12,7 @@ from pytest_bdd import given, parsers, then, when
 
 from sut.codecs import mvb
 from sut.driver import TrainDriver
+from steps import zh
 from steps.analysis import describe, intervals, ms, us
 
 QUOTED = re.compile(r'"([^"]+)"')
@@ -35,12 +36,15 @@ def _polls(sut: TrainDriver, bus: str, since: int) -> list:
 
 
 # -- composition and desk -------------------------------------------------------------------------
+@given("一列装有列车控制与诊断系统的6辆编组地铁列车")
 @given("a 6-car metro train with its train control and diagnosis system")
 def _(sut: TrainDriver) -> None:
     sut.configure(sets=1, cars_per_set=6)
 
 
+@given(parsers.parse("{cab:d}号司机室的司控器处于{pct:d} %牵引位"))
 @given(parsers.parse("the master controller of cab {cab:d} demands {pct:d} % traction"))
+@when(parsers.parse("司机将{cab:d}号司机室的司控器移到{pct:d} %牵引位"), target_fixture="t_action")
 @when(parsers.parse("the driver moves the master controller of cab {cab:d} to {pct:d} % traction"),
       target_fixture="t_action")
 def _(sut: TrainDriver, cab: int, pct: int) -> int:
@@ -49,6 +53,7 @@ def _(sut: TrainDriver, cab: int, pct: int) -> int:
     return sut.now_us
 
 
+@when(parsers.parse("司机将{cab:d}号司机室的司控器移到{pct:d} %制动位"), target_fixture="t_action")
 @when(parsers.parse("the driver moves the master controller of cab {cab:d} to {pct:d} % brake"),
       target_fixture="t_action")
 def _(sut: TrainDriver, cab: int, pct: int) -> int:
@@ -57,6 +62,7 @@ def _(sut: TrainDriver, cab: int, pct: int) -> int:
     return sut.now_us
 
 
+@when("司机将紧急运行开关置于接通位", target_fixture="t_action")
 @when("the driver turns the emergency-operation switch on", target_fixture="t_action")
 def _(sut: TrainDriver) -> int:
     sut.set_input("emergency operation", True)
@@ -64,6 +70,7 @@ def _(sut: TrainDriver) -> int:
 
 
 # -- faults ---------------------------------------------------------------------------------------
+@when(parsers.parse('{units}同时故障'), target_fixture="t_action")
 @when(parsers.parse('{units} fail together'), target_fixture="t_action")
 def _(sut: TrainDriver, units: str) -> int:
     for unit in _names(units):
@@ -71,25 +78,30 @@ def _(sut: TrainDriver, units: str) -> int:
     return sut.now_us
 
 
+@given(parsers.parse('"{bus}"的线路{line:w}已被切断'))
 @given(parsers.parse('line {line:w} of "{bus}" is cut'))
+@when(parsers.parse('"{bus}"的线路{line:w}被切断'), target_fixture="t_action")
 @when(parsers.parse('line {line:w} of "{bus}" is cut'), target_fixture="t_action")
 def _(sut: TrainDriver, line: str, bus: str) -> int:
     sut.cut_line(bus, line)
     return sut.now_us
 
 
+@when(parsers.parse('"{bus}"的线路{line:w}恢复'), target_fixture="t_action")
 @when(parsers.parse('line {line:w} of "{bus}" is restored'), target_fixture="t_action")
 def _(sut: TrainDriver, line: str, bus: str) -> int:
     sut.restore_line(bus, line)
     return sut.now_us
 
 
+@when(parsers.parse('"{bus}"的线路{line:w}上接下来的{count:d}帧受到干扰'), target_fixture="t_action")
 @when(parsers.parse('the next {count:d} frames on line {line:w} of "{bus}" are disturbed'), target_fixture="t_action")
 def _(sut: TrainDriver, count: int, line: str, bus: str) -> int:
     sut.disturb_line(bus, line, count)
     return sut.now_us
 
 
+@when(parsers.parse('"{bus}"的两条线路上接下来的{count:d}帧都受到干扰'), target_fixture="t_action")
 @when(parsers.parse('the next {count:d} frames on both lines of "{bus}" are disturbed'), target_fixture="t_action")
 def _(sut: TrainDriver, count: int, bus: str) -> int:
     for line in "AB":
@@ -97,7 +109,9 @@ def _(sut: TrainDriver, count: int, bus: str) -> int:
     return sut.now_us
 
 
+@given(parsers.parse('"{module}"的输入{channel:w}因接线故障恒为{value:d}'))
 @given(parsers.parse('a wiring fault holds input {channel:w} of "{module}" at {value:d}'))
+@when(parsers.parse('发生接线故障,使"{module}"的输入{channel:w}恒为{value:d}'), target_fixture="t_action")
 @when(parsers.parse('a wiring fault comes to hold input {channel:w} of "{module}" at {value:d}'),
       target_fixture="t_action")
 def _(sut: TrainDriver, channel: str, module: str, value: int) -> int:
@@ -105,12 +119,14 @@ def _(sut: TrainDriver, channel: str, module: str, value: int) -> int:
     return sut.now_us
 
 
+@given(parsers.parse('在总线"{bus}"上接入分析仪'))
 @given(parsers.parse('an analyser is attached to "{bus}"'))
 def _(sut: TrainDriver, bus: str) -> None:
     sut.tap_bus(bus)
 
 
 # -- masters ------------------------------------------------------------------------------------------
+@then(parsers.parse('"{node}"在{bound:g} ms内成为WTB主站并一直保持'))
 @then(parsers.parse('"{node}" is the WTB master within {bound:g} ms and stays so'))
 def _(sut: TrainDriver, t_action: int, node: str, bound: float) -> None:
     polls = _polls(sut, "WTB", t_action)
@@ -123,6 +139,7 @@ def _(sut: TrainDriver, t_action: int, node: str, bound: float) -> None:
     assert polls[-1].t >= sut.now_us - 2 * 25_000, f"{node} stopped sending WTB master frames at {ms(polls[-1].t)}"
 
 
+@then(parsers.parse('{nodes}均不发出WTB主帧'))
 @then(parsers.parse('no WTB master frame comes from {nodes}'))
 def _(sut: TrainDriver, t_action: int, nodes: str) -> None:
     banned = set(_names(nodes))
@@ -130,12 +147,14 @@ def _(sut: TrainDriver, t_action: int, nodes: str) -> None:
     assert not bad, f"WTB master frames from {sorted({p['master'] for p in bad})}: {describe(bad)}"
 
 
+@then(parsers.parse("WTB通信在{bound:g} ms内中止"))
 @then(parsers.parse("the WTB falls silent within {bound:g} ms"))
 def _(sut: TrainDriver, t_action: int, bound: float) -> None:
     late = _polls(sut, "WTB", t_action + us(bound))
     assert not late, f"the WTB still carries frames {bound} ms after the fault: {describe(late)}"
 
 
+@then(parsers.parse("WTB主站至少每{bound:g} ms轮询每个节点一次"))
 @then(parsers.parse("the WTB master polls every node at least every {bound:g} ms"))
 def _(sut: TrainDriver, t_action: int, bound: float) -> None:
     polls = _polls(sut, "WTB", t_action)
@@ -148,6 +167,7 @@ def _(sut: TrainDriver, t_action: int, bound: float) -> None:
         assert worst <= us(bound), f"{node} went {ms(worst)} without a WTB poll (bound {bound} ms)"
 
 
+@then(parsers.parse('"{node}"在{bound:g} ms内成为"{bus}"的主站并一直保持'))
 @then(parsers.parse('"{node}" is the master of "{bus}" within {bound:g} ms and stays so'))
 def _(sut: TrainDriver, t_action: int, node: str, bus: str, bound: float) -> None:
     polls = _polls(sut, bus, t_action)
@@ -159,6 +179,7 @@ def _(sut: TrainDriver, t_action: int, node: str, bus: str, bound: float) -> Non
     assert not others, f"after {node} took {bus}, others polled it: {describe(others)}"
 
 
+@then(parsers.parse('"{node}"在"{bus}"上发出的主帧间隔从不超过{bound:g} ms'))
 @then(parsers.parse('the master frames of "{node}" on "{bus}" are never more than {bound:g} ms apart'))
 def _(sut: TrainDriver, t_action: int, node: str, bus: str, bound: float) -> None:
     times = [p.t for p in _polls(sut, bus, t_action) if p["master"] == node]
@@ -167,6 +188,7 @@ def _(sut: TrainDriver, t_action: int, node: str, bus: str, bound: float) -> Non
     assert worst <= us(bound), f"{node} left {bus} without a master frame for {ms(worst)} (bound {bound} ms)"
 
 
+@then(parsers.parse('{cars}的每个设备都应答"{node}"在"{bus}"上发出的状态数据请求'))
 @then(parsers.parse('every device of {cars} answers the status polls of "{node}" on "{bus}"'))
 def _(sut: TrainDriver, t_action: int, cars: str, node: str, bus: str) -> None:
     polls = [p for p in _polls(sut, bus, t_action) if p["master"] == node and mvb.data_class(p["f_code"])
@@ -182,6 +204,7 @@ def _(sut: TrainDriver, t_action: int, cars: str, node: str, bus: str) -> None:
 
 
 # -- lines (RED-06) -------------------------------------------------------------------------------------
+@then(parsers.parse('"{bus}"上没有丢失任何报文'))
 @then(parsers.parse('no message on "{bus}" is lost'))
 def _(sut: TrainDriver, t_action: int, bus: str) -> None:
     polls = _polls(sut, bus, t_action)
@@ -190,6 +213,7 @@ def _(sut: TrainDriver, t_action: int, bus: str) -> None:
     assert not lost, f"{len(lost)} of {len(polls)} messages on {bus} lost: {describe(lost)}"
 
 
+@then(parsers.parse('"{bus}"上的接收端采用线路{line:w}'))
 @then(parsers.parse('the receivers on "{bus}" take line {line:w}'))
 def _(sut: TrainDriver, t_action: int, bus: str, line: str) -> None:
     polls = [p for p in _polls(sut, bus, t_action) if p["line"] is not None]
@@ -197,6 +221,7 @@ def _(sut: TrainDriver, t_action: int, bus: str, line: str) -> None:
     assert polls[-1]["line"] == line, f"the last frame on {bus} was taken from line {polls[-1]['line']}"
 
 
+@then(parsers.parse('"{bus}"的线路{line:w}上校验失败的帧被丢弃'))
 @then(parsers.parse('frames from line {line:w} of "{bus}" that fail their check are discarded'))
 def _(sut: TrainDriver, t_action: int, line: str, bus: str) -> None:
     discards = sut.trace.select(kind="frame.discard", source=bus, since=t_action)
@@ -205,6 +230,7 @@ def _(sut: TrainDriver, t_action: int, line: str, bus: str) -> None:
 
 
 # -- traction and brake at the VVVF and BECU -----------------------------------------------------------
+@then(parsers.parse("每个VVVF施加{pct:g} %牵引"))
 @then(parsers.parse("every VVVF applies {pct:g} % traction"))
 def _(sut: TrainDriver, pct: float) -> None:
     wrong = {d: sut.reading(f"{d}.traction") for d in _sinks(sut, "VVVF")}
@@ -212,6 +238,7 @@ def _(sut: TrainDriver, pct: float) -> None:
     assert not wrong, f"VVVF traction other than {pct} %: {wrong}"
 
 
+@then(parsers.parse("每个BECU施加{pct:g} %制动"))
 @then(parsers.parse("every BECU applies {pct:g} % brake"))
 def _(sut: TrainDriver, pct: float) -> None:
     wrong = {d: sut.reading(f"{d}.brake") for d in _sinks(sut, "BECU")}
@@ -219,11 +246,13 @@ def _(sut: TrainDriver, pct: float) -> None:
     assert not wrong, f"BECU brake other than {pct} %: {wrong}"
 
 
+@then(parsers.parse("每个VVVF在{bound:g} ms内施加{pct:g} %牵引"))
 @then(parsers.parse("every VVVF applies {pct:g} % traction within {bound:g} ms"))
 def _(sut: TrainDriver, t_action: int, pct: float, bound: float) -> None:
     _reached(sut, "VVVF", pct, t_action, bound)
 
 
+@then(parsers.parse("每个BECU在{bound:g} ms内施加{pct:g} %制动"))
 @then(parsers.parse("every BECU applies {pct:g} % brake within {bound:g} ms"))
 def _(sut: TrainDriver, t_action: int, pct: float, bound: float) -> None:
     _reached(sut, "BECU", pct, t_action, bound)
@@ -239,6 +268,7 @@ def _reached(sut: TrainDriver, kind: str, pct: float, t_action: int, bound: floa
         assert sut.reading(f"{device}.{quantity}") == pct, f"{device} no longer applies {pct} % {quantity}"
 
 
+@then("各VVVF和BECU施加的牵引、制动均保持不变")
 @then("no VVVF or BECU changes what it applies")
 def _(sut: TrainDriver, t_action: int) -> None:
     changes = [e for e in sut.trace.select(kind="pd.change", since=t_action)
@@ -246,42 +276,49 @@ def _(sut: TrainDriver, t_action: int) -> None:
     assert not changes, f"traction or brake changed after {ms(t_action)}: {describe(changes)}"
 
 
+@then("列车已停车")
 @then("the train has come to a stop")
 def _(sut: TrainDriver) -> None:
     assert sut.reading("speed") == 0, f"the train still runs at {sut.reading('speed')} km/h"
 
 
 # -- records and the display ----------------------------------------------------------------------------
+@then(parsers.parse('"{unit}"保存有记录"{text}"'))
 @then(parsers.parse('"{unit}" holds a record "{text}"'))
 def _(sut: TrainDriver, unit: str, text: str) -> None:
     records = sut.records(unit)
     assert any(text in r for r in records), f"{unit} holds no record with {text!r}; it holds {records}"
 
 
+@then(parsers.parse('"{unit}"中记录"{text}"恰好保存了一次'))
 @then(parsers.parse('"{unit}" holds the record "{text}" exactly once'))
 def _(sut: TrainDriver, unit: str, text: str) -> None:
     found = [r for r in sut.records(unit) if text in r]
     assert len(found) == 1, f"{unit} holds {len(found)} records with {text!r}: {found}"
 
 
+@then(parsers.parse('"{unit}"没有保存任何记录'))
 @then(parsers.parse('"{unit}" holds no record'))
 def _(sut: TrainDriver, unit: str) -> None:
     records = sut.records(unit)
     assert not records, f"{unit} stores records although it has no memory board: {records}"
 
 
+@then(parsers.parse('{cab:d}号司机室的DU显示"{text}"'))
 @then(parsers.parse('the cab {cab:d} display shows "{text}"'))
 def _(sut: TrainDriver, cab: int, text: str) -> None:
     shown = sut.monitor(cab)
     assert any(text in f for f in shown["faults"]), f"the cab {cab} display does not show {text!r}: {shown}"
 
 
+@then(parsers.parse('{cab:d}号司机室的DU不显示"{text}"'))
 @then(parsers.parse('the cab {cab:d} display does not show "{text}"'))
 def _(sut: TrainDriver, cab: int, text: str) -> None:
     shown = sut.monitor(cab)
     assert not any(text in f for f in shown["faults"]), f"the cab {cab} display shows {text!r}: {shown}"
 
 
+@then(parsers.parse('{cab:d}号司机室的DU显示运行模式为"{mode}"'), converters={"mode": zh.metro_mode})
 @then(parsers.parse('the cab {cab:d} display shows the mode "{mode}"'))
 def _(sut: TrainDriver, cab: int, mode: str) -> None:
     shown = sut.monitor(cab)
@@ -310,6 +347,7 @@ def _frames(sut: TrainDriver, bus: str, since: int) -> list[tuple[mvb.MasterFram
     return [tuple(pair) for pair in out]
 
 
+@then(parsers.parse('"{bus}"上的每一帧都能解码为符合IEC 61375-3-1的MVB帧,且长度与其F_code所要求的一致'))
 @then(parsers.parse('every frame on "{bus}" decodes as an IEC 61375-3-1 MVB frame of the size its F_code asks'))
 def _(sut: TrainDriver, t_action: int, bus: str) -> None:
     pairs = _frames(sut, bus, t_action)
@@ -319,6 +357,7 @@ def _(sut: TrainDriver, t_action: int, bus: str) -> None:
     assert {16, 64, 128} <= sizes, f"the frames on {bus} had only the sizes {sorted(sizes)}"
 
 
+@then(parsers.parse('"{bus}"上的主帧请求{classes}'), converters={"classes": zh.metro_data_classes})
 @then(parsers.parse('the master frames on "{bus}" ask for {classes}'))
 def _(sut: TrainDriver, t_action: int, bus: str, classes: str) -> None:
     seen = {mvb.data_class(m.f_code).value for m, _ in _frames(sut, bus, t_action)}
@@ -326,6 +365,7 @@ def _(sut: TrainDriver, t_action: int, bus: str, classes: str) -> None:
     assert wanted <= seen, f"{bus} carried {sorted(seen)}; missing {sorted(wanted - seen)}"
 
 
+@then(parsers.parse('"{bus}"上的每个过程数据端口都以不超过{bound:g} ms的固定周期被轮询'))
 @then(parsers.parse('every process-data port on "{bus}" is polled at one fixed period of at most {bound:g} ms'))
 def _(sut: TrainDriver, t_action: int, bus: str, bound: float) -> None:
     by_port: dict[tuple[int, int], list[int]] = {}
@@ -341,6 +381,7 @@ def _(sut: TrainDriver, t_action: int, bus: str, bound: float) -> None:
         assert max(gaps) <= us(bound), f"port {address:#05x} polled every {ms(max(gaps))} (bound {bound} ms)"
 
 
+@then(parsers.parse('{cab:d}号司机室的DU显示WTB主站为"{node}"'))
 @then(parsers.parse('the cab {cab:d} display shows "{node}" as WTB master'))
 def _(sut: TrainDriver, cab: int, node: str) -> None:
     shown = sut.monitor(cab)

@@ -9,23 +9,30 @@ from __future__ import annotations
 from pytest_bdd import given, parsers, then, when
 
 from sut.driver import TrainDriver
-from steps import analysis
+from steps import analysis, zh
 from steps.analysis import ms, same_value, us
 
 
+@given(parsers.parse('已在{cab:d}号司机室监视器上将"{name}"设为"{value}"'),
+       converters={"value": zh.core_state})
 @given(parsers.parse('"{name}" has been ordered to "{value}" on the cab {cab:d} monitor'))
+@when(parsers.parse('司机在{cab:d}号司机室监视器上将"{name}"设为"{value}"'), converters={"value": zh.core_state},
+      target_fixture="t_action")
 @when(parsers.parse('the driver orders "{name}" to "{value}" on the cab {cab:d} monitor'), target_fixture="t_action")
 def _(sut: TrainDriver, name: str, value: str, cab: int) -> int:
     sut.monitor_order(cab, name, value)
     return sut.now_us
 
 
+@then(parsers.parse('{cab:d}号司机室监视器上"{name}"显示为"{value}"'), converters={"value": zh.core_state})
 @then(parsers.parse('the cab {cab:d} monitor displays "{name}" as "{value}"'))
 def _(sut: TrainDriver, cab: int, name: str, value: str) -> None:
     shown = sut.monitor(cab)["display"].get(name)
     assert same_value(shown, value), f"the cab {cab} monitor displays {name} as {shown!r}, not {value!r}"
 
 
+@then(parsers.parse('{cab:d}号司机室监视器上"{name}"在{bound:g} ms内显示为"{value}"'),
+      converters={"value": zh.core_state})
 @then(parsers.parse('the cab {cab:d} monitor displays "{name}" as "{value}" within {bound:g} ms'))
 def _(sut: TrainDriver, t_action: int, cab: int, name: str, value: str, bound: float) -> None:
     shown = sut.monitor(cab)["display"].get(name)
@@ -37,12 +44,14 @@ def _(sut: TrainDriver, t_action: int, cab: int, name: str, value: str, bound: f
         assert delay <= us(bound), f"{name} was displayed as {value} after {ms(delay)}, limit {bound} ms"
 
 
+@then(parsers.parse('{cab:d}号司机室监视器上"{name}"的显示值在{lo:g}至{hi:g}之间'))
 @then(parsers.parse('the cab {cab:d} monitor displays "{name}" between {lo:g} and {hi:g}'))
 def _(sut: TrainDriver, cab: int, name: str, lo: float, hi: float) -> None:
     shown = sut.monitor(cab)["display"].get(name)
     assert shown is not None and lo <= float(shown) <= hi, f"the cab {cab} monitor displays {name} as {shown!r}"
 
 
+@then(parsers.parse('{cab:d}号司机室监视器上"{name}"的显示值在{bound:g} ms内进入{lo:g}至{hi:g}之间'))
 @then(parsers.parse('the cab {cab:d} monitor displays "{name}" between {lo:g} and {hi:g} within {bound:g} ms'))
 def _(sut: TrainDriver, t_action: int, cab: int, name: str, lo: float, hi: float, bound: float) -> None:
     changes = sut.trace.select(kind="display.change", source=f"car{cab}.monitor", since=t_action, name=name)
@@ -51,18 +60,21 @@ def _(sut: TrainDriver, t_action: int, cab: int, name: str, lo: float, hi: float
     assert hit.t - t_action <= us(bound), f"{name} reached the band after {ms(hit.t - t_action)}"
 
 
+@then(parsers.parse("里程在{lo:g}至{hi:g} km之间"))
 @then(parsers.parse("the mileage is between {lo:g} and {hi:g} km"))
 def _(sut: TrainDriver, lo: float, hi: float) -> None:
     km = sut.reading("mileage")
     assert lo <= km <= hi, f"the mileage is {km:.6f} km, outside {lo:g}..{hi:g} km"
 
 
+@then(parsers.re(r'(?P<cab>\d+)号司机室的检修画面列出"(?P<text>[^"]+)"'), converters={"cab": int})
 @then(parsers.re(r'the maintenance view of cab (?P<cab>\d+) lists "(?P<text>[^"]+)"'), converters={"cab": int})
 def _(sut: TrainDriver, cab: int, text: str) -> None:
     history = sut.monitor(cab)["maintenance"]
     assert any(text in line for line in history), f"the maintenance view lists {history or 'nothing'}"
 
 
+@then(parsers.parse('{cab:d}号司机室的检修画面中"{first}"列在"{second}"之前'))
 @then(parsers.parse('the maintenance view of cab {cab:d} lists "{first}" before "{second}"'))
 def _(sut: TrainDriver, cab: int, first: str, second: str) -> None:
     history = sut.monitor(cab)["maintenance"]
@@ -71,6 +83,8 @@ def _(sut: TrainDriver, cab: int, first: str, second: str) -> None:
     assert where[first] < where[second], f"{second!r} is listed before {first!r}: {history}"
 
 
+@then(parsers.parse('"{master}"保存有"{node}"关于"{board}"{event:w}的故障记录'),
+      converters={"event": zh.core_event})
 @then(parsers.parse('"{master}" holds a fault record of "{node}" saying "{board}" {event:w}'))
 def _(sut: TrainDriver, master: str, node: str, board: str, event: str) -> None:
     records = [r.rstrip(b"\0").decode("ascii", "replace") for r in sut.block_store(master).get(node, [])]
@@ -78,6 +92,8 @@ def _(sut: TrainDriver, master: str, node: str, board: str, event: str) -> None:
     assert any(r.startswith("F|") and r.endswith(want) for r in records), f"{master} holds {records} from {node}"
 
 
+@then(parsers.parse('每个CI在{bound:g} ms内收到"{direction}"方向指令'),
+      converters={"direction": zh.direction})
 @then(parsers.parse('every CI receives direction "{direction}" within {bound:g} ms'))
 def _(sut: TrainDriver, t_action: int, direction: str, bound: float) -> None:
     cis = [d for d in analysis.command_devices(sut) if d.endswith(".CI")]

@@ -15,6 +15,7 @@ def _node(source: str) -> str:
 
 
 # -- token ------------------------------------------------------------------------------------------
+@then(parsers.parse("每个节点在上电后{lo:g}至{hi:g} ms发送令牌初始化"))
 @then(parsers.parse("every node sends a token initialisation {lo:g} to {hi:g} ms after power-up"))
 def _(sut: TrainDriver, lo: float, hi: float) -> None:
     inits = {}
@@ -25,6 +26,7 @@ def _(sut: TrainDriver, lo: float, hi: float) -> None:
         assert us(lo) <= inits[node] <= us(hi), f"{node} sent it at {ms(inits[node])}, outside {lo}..{hi} ms"
 
 
+@then(parsers.parse('首次令牌初始化后{lo:g}至{hi:g} ms由"{node}"生成令牌'))
 @then(parsers.parse('the token is formed by "{node}" {lo:g} to {hi:g} ms after the first token initialisation'))
 def _(sut: TrainDriver, t_action: int, node: str, lo: float, hi: float) -> None:
     init = sut.trace.first(kind="token.init", since=t_action)
@@ -39,6 +41,7 @@ def _(sut: TrainDriver, t_action: int, node: str, lo: float, hi: float) -> None:
     assert not others, f"other nodes formed tokens too: {analysis.describe(others)}"
 
 
+@then(parsers.parse("令牌到达每个下一节点的时间比到达上一节点晚{lo:g}至{hi:g} ms"))
 @then(parsers.parse("the token arrives at each next node {lo:g} to {hi:g} ms after the one before"))
 def _(sut: TrainDriver, t_action: int, lo: float, hi: float) -> None:
     arrivals = sut.trace.select(kind="token.rx", since=t_action)
@@ -49,6 +52,7 @@ def _(sut: TrainDriver, t_action: int, lo: float, hi: float) -> None:
                                            f"{_node(b.source)} had it, outside {lo}..{hi} ms")
 
 
+@then("令牌按环网顺序依次经过各节点")
 @then("the token visits the nodes in ring order")
 def _(sut: TrainDriver, t_action: int) -> None:
     nodes = sut.ring_nodes()
@@ -59,6 +63,7 @@ def _(sut: TrainDriver, t_action: int) -> None:
         assert nodes[(ia + 1) % len(nodes)] == b, f"the token went from {a} to {b}, not to the next node"
 
 
+@then(parsers.parse('"{node}"收到令牌后{lo:g}至{hi:g} ms将令牌沿原路送回'))
 @then(parsers.parse('"{node}" sends the token back the way it came {lo:g} to {hi:g} ms after receiving it'))
 def _(sut: TrainDriver, t_action: int, node: str, lo: float, hi: float) -> None:
     trace = sut.trace
@@ -75,6 +80,7 @@ def _(sut: TrainDriver, t_action: int, node: str, lo: float, hi: float) -> None:
                                             f"outside {lo}..{hi} ms")
 
 
+@then(parsers.parse("每个节点至少每{bound:g} ms收到一次令牌"))
 @then(parsers.parse("every node receives the token at least every {bound:g} ms"))
 def _(sut: TrainDriver, t_action: int, bound: float) -> None:
     for node in sut.ring_nodes():
@@ -84,12 +90,14 @@ def _(sut: TrainDriver, t_action: int, bound: float) -> None:
         assert worst <= us(bound), f"{node} went {ms(worst)} without the token (limit {bound} ms)"
 
 
+@then("没有节点发送令牌初始化")
 @then("no node sends a token initialisation")
 def _(sut: TrainDriver, t_action: int) -> None:
     inits = sut.trace.select(kind="token.init", since=t_action)
     assert not inits, f"token initialisations: {analysis.describe(inits)}"
 
 
+@then(parsers.parse("最后一次令牌传递后{lo:g}至{hi:g} ms发生令牌初始化"))
 @then(parsers.parse("a token initialisation follows the last token pass by {lo:g} to {hi:g} ms"))
 def _(sut: TrainDriver, t_action: int, lo: float, hi: float) -> None:
     trace = sut.trace
@@ -101,6 +109,7 @@ def _(sut: TrainDriver, t_action: int, lo: float, hi: float) -> None:
     assert us(lo) <= gap <= us(hi), f"token initialisation {ms(gap)} after the token was last seen, outside {lo}..{hi} ms"
 
 
+@then(parsers.parse("{bound:g} ms内重新有且只有一个令牌在所有节点间循环"))
 @then(parsers.parse("within {bound:g} ms one token circulates again through every node"))
 def _(sut: TrainDriver, t_action: int, bound: float) -> None:
     trace = sut.trace
@@ -132,6 +141,7 @@ def _(sut: TrainDriver, t_action: int, cab: int, lo: float, hi: float) -> None:
         analysis.expect_period(by_node.get(node, []), lo, hi, f"status data from {node} at the cab {cab} monitor")
 
 
+@then(parsers.parse("{cab:d}号司机室监视器至少每{bound:g} ms收到一次其他每个节点的状态数据"))
 @then(parsers.parse("the cab {cab:d} monitor receives status data from every other node at least every {bound:g} ms"))
 def _(sut: TrainDriver, t_action: int, cab: int, bound: float) -> None:
     by_node = _monitor_rx(sut, cab, t_action)
@@ -144,6 +154,7 @@ def _(sut: TrainDriver, t_action: int, cab: int, bound: float) -> None:
         assert worst <= us(bound), f"no status data from {node} for {ms(worst)} (limit {bound} ms)"
 
 
+@then(parsers.parse("{after:g} ms后{cab:d}号司机室监视器不再收到其他节点的状态数据"))
 @then(parsers.parse("the cab {cab:d} monitor receives no status data from other nodes after {after:g} ms"))
 def _(sut: TrainDriver, t_action: int, cab: int, after: float) -> None:
     got = sut.trace.select(kind="status.rx", source=f"car{cab}.monitor", since=t_action + us(after))
@@ -164,6 +175,7 @@ def _(sut: TrainDriver, cab: int) -> None:
     assert not faults, f"the cab {cab} monitor shows {faults}"
 
 
+@then(parsers.parse('"{node}"最后收到"{other}"的状态数据距今不超过{bound:g} ms'))
 @then(parsers.parse('"{node}" has status data from "{other}" no older than {bound:g} ms'))
 def _(sut: TrainDriver, node: str, other: str, bound: float) -> None:
     age = sut.status_table(node)[other]
@@ -171,6 +183,7 @@ def _(sut: TrainDriver, node: str, other: str, bound: float) -> None:
         f"{node} last heard {other} {'never' if age is None else ms(age) + ' ago'} (limit {bound} ms)")
 
 
+@then(parsers.parse('"{node}"已至少{bound:g} ms未收到"{other}"的状态数据'))
 @then(parsers.parse('"{node}" has had no status data from "{other}" for at least {bound:g} ms'))
 def _(sut: TrainDriver, node: str, other: str, bound: float) -> None:
     age = sut.status_table(node)[other]
@@ -193,6 +206,7 @@ def _(sut: TrainDriver, t_action: int, frame: str, size: int) -> None:
     assert not odd, f"{frame} frames of another size: {analysis.describe(odd)}"
 
 
+@then(parsers.parse("被分析链路的传输速率为{rate:g} Mbit/s且误差不超过{tol:g} %"))
 @then(parsers.parse("the analysed link carries {rate:g} Mbit/s within {tol:g} %"))
 def _(sut: TrainDriver, t_action: int, rate: float, tol: float) -> None:
     for ev in _tapped(sut, t_action):
@@ -204,12 +218,14 @@ def _(sut: TrainDriver, t_action: int, rate: float, tol: float) -> None:
                                                  f"{want_us:.1f} us at {rate} Mbit/s")
 
 
+@then(parsers.parse("被分析链路的传输介质为{medium}"), converters={"medium": zh.core_medium})
 @then(parsers.parse("the analysed link is {medium}"))
 def _(sut: TrainDriver, t_action: int, medium: str) -> None:
     media = {ev["medium"] for ev in _tapped(sut, t_action)}
     assert media == {medium}, f"the analysed link is {sorted(media)}, expected {medium}"
 
 
+@then(parsers.parse('被分析链路上"{node}"的状态帧和数据块帧都不会抢在等待发送的命令帧之前发送'))
 @then(parsers.parse('on the analysed link no status or block frame of "{node}" goes ahead of a waiting command'))
 def _(sut: TrainDriver, t_action: int, node: str) -> None:
     """NET-06 at one node: between a command reaching the node's MDM8 (handed over by its TXC, `cmd.tx`, or
@@ -232,6 +248,7 @@ def _(sut: TrainDriver, t_action: int, node: str) -> None:
                            f"behind {analysis.describe(ahead)}")
 
 
+@then(parsers.parse('"{node}"丢弃被损坏的{frame}帧'), converters={"frame": zh.frame})
 @then(parsers.parse('"{node}" discards the corrupted {frame} frame'))
 def _(sut: TrainDriver, t_action: int, node: str, frame: str) -> None:
     found = sut.trace.select(kind="frame.discard", source=f"{node}.MDM8", since=t_action, frame=frame)
@@ -239,6 +256,7 @@ def _(sut: TrainDriver, t_action: int, node: str, frame: str) -> None:
 
 
 # -- block data -------------------------------------------------------------------------------------
+@then(parsers.parse('"{master}"在其状态数据中准许"{node}"进行数据块传输'))
 @then(parsers.parse('"{master}" grants "{node}" the block transfer in its status data'))
 def _(sut: TrainDriver, t_action: int, master: str, node: str) -> None:
     grant = sut.trace.first(kind="block.grant", source=f"{master}.CPU3", since=t_action, node=node)
@@ -247,6 +265,7 @@ def _(sut: TrainDriver, t_action: int, master: str, node: str) -> None:
     assert announced is not None and announced["grant"] > 0, f"{master}'s status data did not carry the grant"
 
 
+@then(parsers.parse('"{node}"在获准之前不发送数据块'))
 @then(parsers.parse('"{node}" sends no block before it is granted'))
 def _(sut: TrainDriver, t_action: int, node: str) -> None:
     first = sut.trace.first(kind="block.tx", source=f"{node}.CPU3", since=t_action)
@@ -255,6 +274,7 @@ def _(sut: TrainDriver, t_action: int, node: str) -> None:
     assert grant is not None, f"{node} sent block 0 at {ms(first.t)} without a grant"
 
 
+@then(parsers.parse('"{master}"分{count:d}个{size:d}字节的数据块收到"{node}"的记录且每块比前一块至少晚{gap:g} ms'))
 @then(parsers.parse('"{master}" receives the record of "{node}" in {count:d} blocks of {size:d} bytes, '
                     'each at least {gap:g} ms after the one before'))
 def _(sut: TrainDriver, t_action: int, master: str, node: str, count: int, size: int, gap: float) -> None:
@@ -266,6 +286,7 @@ def _(sut: TrainDriver, t_action: int, master: str, node: str, count: int, size:
     assert gaps and min(gaps) >= us(gap), f"blocks sent {ms(min(gaps))} apart, less than {gap} ms"
 
 
+@then(parsers.parse('"{master}"保存有"{node}"的{size:d}字节记录'))
 @then(parsers.parse('"{master}" holds the {size:d}-byte record of "{node}"'))
 def _(sut: TrainDriver, master: str, size: int, node: str) -> None:
     records = sut.block_store(master).get(node, [])
@@ -273,6 +294,7 @@ def _(sut: TrainDriver, master: str, size: int, node: str) -> None:
         f"{master} holds {len(records)} records of {node} ({[len(r) for r in records]} bytes), not this one")
 
 
+@then(parsers.parse('"{master}"没有保存"{node}"的任何记录'))
 @then(parsers.parse('"{master}" holds no record of "{node}"'))
 def _(sut: TrainDriver, master: str, node: str) -> None:
     got = sut.block_store(master).get(node, [])
@@ -280,6 +302,7 @@ def _(sut: TrainDriver, master: str, node: str) -> None:
 
 
 # -- vehicle level ----------------------------------------------------------------------------------
+@then(parsers.parse('"{device}"每{lo:g}至{hi:g} ms被轮询一次'))
 @then(parsers.parse('"{device}" is polled every {lo:g} to {hi:g} ms'))
 def _(sut: TrainDriver, t_action: int, device: str, lo: float, hi: float) -> None:
     kind = "cmd.in" if device.endswith((".CI", ".BCU")) else "loop.poll"
@@ -287,6 +310,7 @@ def _(sut: TrainDriver, t_action: int, device: str, lo: float, hi: float) -> Non
     analysis.expect_period(times, lo, hi, f"{device} polled")
 
 
+@then(parsers.parse('"{device}"为单向连接且从不应答'))
 @then(parsers.parse('"{device}" is connected one way and never answers'))
 def _(sut: TrainDriver, t_action: int, device: str) -> None:
     events = sut.trace.select(kind="loop.*", source=device, since=t_action)
@@ -295,6 +319,7 @@ def _(sut: TrainDriver, t_action: int, device: str) -> None:
     assert not answered, f"{device} is polled or answers: {analysis.describe(answered)}"
 
 
+@then(parsers.parse("分析仪看到的每一帧都能解码为ARCNET令牌或数据包且数据包不少于{packets:d}个"))
 @then(parsers.parse("every frame the analyser saw decodes as an ARCNET token or packet, {packets:d} packets at least"))
 def _(sut: TrainDriver, t_action: int, packets: int) -> None:
     """NET-10 with the suite's own codec (sut/codecs/arcnet.py): ITT = 04 + destination twice; PAC = 01,
@@ -316,6 +341,7 @@ def _(sut: TrainDriver, t_action: int, packets: int) -> None:
     assert count >= packets, f"only {count} packets decoded"
 
 
+@then(parsers.parse("分析仪发现被损坏的{kind}帧未通过ARCNET校验"), converters={"kind": zh.frame})
 @then(parsers.parse("the analyser finds the corrupted {kind} frame failing its ARCNET check"))
 def _(sut: TrainDriver, t_action: int, kind: str) -> None:
     bad = []

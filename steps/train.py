@@ -4,7 +4,7 @@ from __future__ import annotations
 from pytest_bdd import given, parsers, then, when
 
 from sut.driver import TrainDriver
-from steps import analysis
+from steps import analysis, zh
 
 
 @given(parsers.re(r"一列(?P<cars>\d+)辆编组的CRH2动车组"), converters={"cars": int})
@@ -19,6 +19,7 @@ def _(sut: TrainDriver, cars: int) -> None:
     sut.configure(sets=2, cars_per_set=cars)
 
 
+@given("列车已上电")
 @given("the train is powered up")
 def _(sut: TrainDriver) -> None:
     sut.power_on()
@@ -44,6 +45,7 @@ def _(sut: TrainDriver, s: int) -> None:
     sut.advance_ms(s * 1000)
 
 
+@then(parsers.parse("环网上每辆车都有一个LCU且每辆头车都有一个含系统1和系统2的CCU"))
 @then(parsers.parse("every car has an LCU on the ring and every cab car a CCU with systems 1 and 2"))
 def _(sut: TrainDriver) -> None:
     nodes = sut.ring_nodes()
@@ -58,6 +60,7 @@ def _(sut: TrainDriver) -> None:
     assert first in cabs and last in cabs, f"the end cars {first} and {last} must be cab cars; cabs: {cabs}"
 
 
+@then(parsers.parse('"{unit}"的板卡为{boards}'), converters={"boards": zh.core_list})
 @then(parsers.parse('the boards of "{unit}" are {boards}'))
 def _(sut: TrainDriver, unit: str, boards: str) -> None:
     want = sorted(b.strip() for b in boards.replace(" and ", ",").split(",") if b.strip())
@@ -65,6 +68,7 @@ def _(sut: TrainDriver, unit: str, boards: str) -> None:
     assert got == want, f"{unit} has boards {got}, expected {want}"
 
 
+@then(parsers.parse('{car:d}号车装有设备{devices}'), converters={"devices": zh.core_list})
 @then(parsers.parse('car {car:d} has the devices {devices}'))
 def _(sut: TrainDriver, car: int, devices: str) -> None:
     want = {f"car{car}.{d.strip()}" for d in devices.replace(" and ", ",").split(",") if d.strip()}

@@ -10,47 +10,57 @@ from pytest_bdd import given, parsers, then, when
 
 from sut.driver import TrainDriver
 from steps.analysis import describe, intervals, ms, us
+from steps import zh
 
 SELFTEST_PERIOD_US = 5_000_000          # VDX-03: every 5 s
 THRESHOLD_V = 6.0                       # VDX-03
 
 
+@given("一套CTCS3-300T车载ATP及其VDX紧急制动接口")
 @given("a CTCS3-300T ATP with its VDX emergency-brake interface")
 def _(sut: TrainDriver) -> None:
     sut.configure(sets=1)
 
 
+@given(parsers.parse("VDX运行{firmware:w}固件"), converters={"firmware": zh.vdx_firmware})
 @given(parsers.parse("the VDX runs the {firmware:w} firmware"))
 def _(sut: TrainDriver, firmware: str) -> None:
     sut.set_input("VDX firmware", firmware)
 
 
+@given(parsers.parse("FS输出由{volts:g} V供电"))
 @given(parsers.parse("the FS output is fed with {volts:g} V"))
+@when(parsers.parse("VDX电源电压变为{volts:g} V"), target_fixture="t_action")
 @when(parsers.parse("the VDX supply goes to {volts:g} V"), target_fixture="t_action")
 def _(sut: TrainDriver, volts: float) -> int:
     sut.set_supply_voltage("VDX", volts)
     return sut.now_us
 
 
+@given("ATP已缓解紧急制动")
 @given("the ATP has released the emergency brake")
+@when("ATP缓解紧急制动", target_fixture="t_action")
 @when("the ATP releases the emergency brake", target_fixture="t_action")
 def _(sut: TrainDriver) -> int:
     sut.set_input("ATP emergency brake", False)
     return sut.now_us
 
 
+@when("ATP施加紧急制动", target_fixture="t_action")
 @when("the ATP applies the emergency brake", target_fixture="t_action")
 def _(sut: TrainDriver) -> int:
     sut.set_input("ATP emergency brake", True)
     return sut.now_us
 
 
+@when("ATP隔离开关置于隔离位", target_fixture="t_action")
 @when("the ATP isolation switch is turned on", target_fixture="t_action")
 def _(sut: TrainDriver) -> int:
     sut.set_input("ATP isolation switch", True)
     return sut.now_us
 
 
+@when("VDX重启", target_fixture="t_action")
 @when("the VDX is restarted", target_fixture="t_action")
 def _(sut: TrainDriver) -> int:
     sut.power_off("VDX")
@@ -83,6 +93,7 @@ def release_before_selftest(sut: TrainDriver, offset_ms: float) -> int:
     return release
 
 
+@when(parsers.parse("ATP在下一次FS自检前{offset:g} ms缓解紧急制动"), target_fixture="t_action")
 @when(parsers.parse("the ATP releases the emergency brake {offset:g} ms before the next FS self-test"),
       target_fixture="t_action")
 def _(sut: TrainDriver, offset: float) -> int:
@@ -90,16 +101,19 @@ def _(sut: TrainDriver, offset: float) -> int:
 
 
 # -- the loop and its relays (VDX-01, VDX-04) ------------------------------------------------------------
+@then(parsers.parse("紧急制动回路处于{state:w}状态"), converters={"state": zh.vdx_state})
 @then(parsers.parse("the emergency-brake loop is {state:w}"))
 def _(sut: TrainDriver, state: str) -> None:
     assert sut.output("EB loop") == state, f"the emergency-brake loop is {sut.output('EB loop')}, not {state}"
 
 
+@then(parsers.parse("{relay:w}继电器处于{state}状态"), converters={"state": zh.vdx_state})
 @then(parsers.parse("relay {relay:w} is {state}"))
 def _(sut: TrainDriver, relay: str, state: str) -> None:
     assert sut.output(relay) == state, f"{relay} is {sut.output(relay)}, not {state}"
 
 
+@then(parsers.parse("紧急制动回路在{bound:g} ms内断开"))
 @then(parsers.parse("the emergency-brake loop opens within {bound:g} ms"))
 def _(sut: TrainDriver, t_action: int, bound: float) -> None:
     opened = sut.trace.first(kind="loop.change", since=t_action, state="open")
@@ -107,6 +121,7 @@ def _(sut: TrainDriver, t_action: int, bound: float) -> None:
     assert opened.t - t_action <= us(bound), f"the loop opened after {ms(opened.t - t_action)} (bound {bound} ms)"
 
 
+@then("紧急制动回路保持闭合")
 @then("the emergency-brake loop stays closed")
 def _(sut: TrainDriver, t_action: int) -> None:
     opened = sut.trace.select(kind="loop.change", since=t_action, state="open")
@@ -119,6 +134,7 @@ def _selftests(sut: TrainDriver, since: int) -> list:
     return sut.trace.select(kind="selftest", since=since)
 
 
+@then(parsers.parse("每{period:g} s进行一次FS自检"))
 @then(parsers.parse("an FS self-test comes every {period:g} s"))
 def _(sut: TrainDriver, t_action: int, period: float) -> None:
     times = [e.t for e in _selftests(sut, t_action)]
@@ -127,6 +143,7 @@ def _(sut: TrainDriver, t_action: int, period: float) -> None:
     assert set(gaps) == {us(period * 1000)}, f"FS self-tests {ms(min(gaps))}..{ms(max(gaps))} apart, not {period} s"
 
 
+@then(parsers.parse("每次FS自检将FS输出拉低{length:g} ms,并在拉低{at:g} ms后采样"))
 @then(parsers.parse("each FS self-test pulls the FS output low for {length:g} ms and samples it {at:g} ms in"))
 def _(sut: TrainDriver, t_action: int, length: float, at: float) -> None:
     tests = _selftests(sut, t_action)
@@ -137,6 +154,7 @@ def _(sut: TrainDriver, t_action: int, length: float, at: float) -> None:
         assert test["sample_ms"] == at, f"a self-test sampled {test['sample_ms']} ms in, not {at} ms"
 
 
+@then(parsers.parse("凡采样电压达到{threshold:g} V及以上的FS自检均报C019,低于该值的均不报"))
 @then(parsers.parse("every FS self-test sampled at {threshold:g} V or more raised C019 and none below"))
 def _(sut: TrainDriver, threshold: float) -> None:
     tests = _selftests(sut, 0)
@@ -145,6 +163,7 @@ def _(sut: TrainDriver, threshold: float) -> None:
     assert not wrong, f"self-test verdicts against the {threshold} V threshold: {describe(wrong)}"
 
 
+@then("报C019故障,且紧急制动回路保持断开")
 @then("C019 is raised and the emergency-brake loop stays open")
 def _(sut: TrainDriver, t_action: int) -> None:
     raised = sut.trace.first(kind="fault.C019", since=t_action)
@@ -153,6 +172,7 @@ def _(sut: TrainDriver, t_action: int) -> None:
         f"after C019 the VDX shows {sut.output('VDX fault')}, the loop is {sut.output('EB loop')}"
 
 
+@then("不报C019故障")
 @then("no C019 is raised")
 def _(sut: TrainDriver, t_action: int) -> None:
     raised = sut.trace.select(kind="fault.C019", since=t_action)
@@ -160,6 +180,7 @@ def _(sut: TrainDriver, t_action: int) -> None:
         f"C019 raised: {describe(raised)}; self-tests: {describe(_selftests(sut, t_action))}"
 
 
+@then(parsers.parse("缓解后至少{least:g} ms才进行FS自检"))
 @then(parsers.parse("an FS self-test ran at least {least:g} ms after the release"))
 def _(sut: TrainDriver, t_action: int, least: float) -> None:
     tests = _selftests(sut, t_action)
@@ -175,6 +196,8 @@ def c019_sweep() -> dict:
     return {}
 
 
+@when(parsers.parse("在{volts} V下,缓解时刻从FS自检前{lo:d} ms逐毫秒扫描至{hi:d} ms"),
+      converters={"volts": zh.vdx_volts})
 @when(parsers.parse("the release is swept from {lo:d} to {hi:d} ms before an FS self-test at {volts} V"))
 def _(sut: TrainDriver, c019_sweep: dict, lo: int, hi: int, volts: str) -> None:
     for v in [float(x) for x in volts.replace(" and ", ",").split(",")]:
@@ -200,6 +223,7 @@ def _c019_offsets(c019_sweep: dict, volts: float) -> list[int]:
     return sorted(o for (v, o), hit in c019_sweep.items() if v == volts and hit)
 
 
+@then(parsers.parse("{volts:g} V下,凡在自检前不足{below:g} ms缓解的均报C019"))
 @then(parsers.parse("at {volts:g} V C019 is raised for every release under {below:g} ms before the test"))
 def _(c019_sweep: dict, volts: float, below: float) -> None:
     swept = sorted(o for (v, o) in c019_sweep if v == volts)
@@ -207,18 +231,21 @@ def _(c019_sweep: dict, volts: float, below: float) -> None:
     assert swept and not missing, f"at {volts:g} V no C019 for releases {missing} ms before the test"
 
 
+@then(parsers.parse("{volts:g} V下,凡在自检前{least:g} ms及以上缓解的均不报C019"))
 @then(parsers.parse("at {volts:g} V no C019 is raised for a release {least:g} ms or more before the test"))
 def _(c019_sweep: dict, volts: float, least: float) -> None:
     wrong = [o for o in _c019_offsets(c019_sweep, volts) if o >= least]
     assert not wrong, f"at {volts:g} V C019 for releases {wrong} ms before the test"
 
 
+@then(parsers.parse("任何缓解时刻均不报C019"))
 @then(parsers.parse("no C019 is raised at any offset"))
 def _(c019_sweep: dict) -> None:
     hits = sorted(k for k, hit in c019_sweep.items() if hit)
     assert c019_sweep and not hits, f"C019 at (V, ms before the test): {hits}"
 
 
+@then(parsers.parse("凡{low:g} V下报C019的缓解时刻,{high:g} V下也都报C019,且报C019的时刻更多"))
 @then(parsers.parse("C019 comes at {high:g} V for every offset it comes at {low:g} V, and for more"))
 def _(c019_sweep: dict, high: float, low: float) -> None:
     at_high, at_low = set(_c019_offsets(c019_sweep, high)), set(_c019_offsets(c019_sweep, low))

@@ -9,7 +9,7 @@ from __future__ import annotations
 from pytest_bdd import given, parsers, then, when
 
 from sut.driver import TrainDriver
-from steps import analysis
+from steps import analysis, zh
 from steps.analysis import ms, us
 
 
@@ -17,16 +17,22 @@ from steps.analysis import ms, us
 # sentence that goes on with "within 200 ms" can never be read as a longer value.
 VALUE = r"(?P<value>[a-z][a-z -]*[a-z])"
 NUMBER = r"\d+(?:\.\d+)?"
+# The same in a Chinese sentence: a Chinese state word (zh.CORE_STATES, converted to the English value) or the
+# English value itself.
+ZH_VALUE = rf"(?P<value>{zh.CORE_STATE_RE}|[a-z][a-z -]*[a-z])"
 
 
 # -- inputs -----------------------------------------------------------------------------------------
+@given(parsers.parse("列车以{kmh:g} km/h运行"))
 @given(parsers.parse("the train runs at {kmh:g} km/h"))
+@when(parsers.parse("列车速度变为{kmh:g} km/h"), target_fixture="t_action")
 @when(parsers.parse("the train speed changes to {kmh:g} km/h"), target_fixture="t_action")
 def _(sut: TrainDriver, kmh: float) -> int:
     sut.set_input("speed", kmh)
     return sut.now_us
 
 
+@when(parsers.parse("列车速度以每秒{rate:g} km/h从{a:g} km/h变化到{b:g} km/h"), target_fixture="t_action")
 @when(parsers.parse("the train speed goes from {a:g} km/h to {b:g} km/h at {rate:g} km/h per second"),
       target_fixture="t_action")
 def _(sut: TrainDriver, a: float, b: float, rate: float) -> int:
@@ -35,13 +41,16 @@ def _(sut: TrainDriver, a: float, b: float, rate: float) -> int:
     return sut.now_us
 
 
+@given(parsers.parse("总风管压力为{kpa:g} kPa"))
 @given(parsers.parse("the main air pipe pressure is {kpa:g} kPa"))
+@when(parsers.parse("总风管压力变为{kpa:g} kPa"), target_fixture="t_action")
 @when(parsers.parse("the main air pipe pressure changes to {kpa:g} kPa"), target_fixture="t_action")
 def _(sut: TrainDriver, kpa: float) -> int:
     sut.set_input("main pipe pressure", kpa)
     return sut.now_us
 
 
+@when(parsers.parse("总风管压力以每秒{rate:g} kPa从{a:g} kPa变化到{b:g} kPa"), target_fixture="t_action")
 @when(parsers.parse("the main air pipe pressure goes from {a:g} kPa to {b:g} kPa at {rate:g} kPa per second"),
       target_fixture="t_action")
 def _(sut: TrainDriver, a: float, b: float, rate: float) -> int:
@@ -50,67 +59,82 @@ def _(sut: TrainDriver, a: float, b: float, rate: float) -> int:
     return sut.now_us
 
 
+@when(parsers.parse("列车在{a:d}号车与{b:d}号车之间分离"), target_fixture="t_action")
 @when(parsers.parse("the train separates between car {a:d} and car {b:d}"), target_fixture="t_action")
 def _(sut: TrainDriver, a: int, b: int) -> int:
     sut.set_input(f"coupler car{a}~car{b}", "separated")
     return sut.now_us
 
 
+@given(parsers.parse("{car:d}号车的制动力为需求值的{pct:g} %"))
 @given(parsers.parse("the brake force of car {car:d} is {pct:g} % of the demand"))
 def _(sut: TrainDriver, car: int, pct: float) -> None:
     sut.set_input(f"car{car}.brake force", pct)
 
 
+@given(parsers.parse("车门处于{state:w}状态"), converters={"state": zh.core_state})
 @given(parsers.parse("the doors are {state:w}"))
+@when(parsers.parse("司机发出车门{state:w}指令"), converters={"state": zh.core_state}, target_fixture="t_action")
 @when(parsers.parse("the driver commands the doors {state:w}"), target_fixture="t_action")
 def _(sut: TrainDriver, state: str) -> int:
     sut.set_input("doors", state)
     return sut.now_us
 
 
+@given(parsers.parse("关门联锁旁路开关在{state:w}位"), converters={"state": zh.core_switch})
 @given(parsers.parse("the door-interlock bypass switch is {state:w}"))
+@when(parsers.parse("司机将关门联锁旁路开关置于{state:w}位"), converters={"state": zh.core_switch},
+      target_fixture="t_action")
 @when(parsers.parse("the driver turns the door-interlock bypass switch {state:w}"), target_fixture="t_action")
 def _(sut: TrainDriver, state: str) -> int:
     sut.set_input("door bypass", state)
     return sut.now_us
 
 
+@when(parsers.parse("ATP发出{kind:w}制动指令"), converters={"kind": zh.core_brake}, target_fixture="t_action")
 @when(parsers.parse("the ATP commands a {kind:w} brake"), target_fixture="t_action")
 def _(sut: TrainDriver, kind: str) -> int:
     sut.set_input("ATP brake", kind)
     return sut.now_us
 
 
+@when("ATP解除制动", target_fixture="t_action")
 @when("the ATP releases its brake", target_fixture="t_action")
 def _(sut: TrainDriver) -> int:
     sut.set_input("ATP brake", "none")
     return sut.now_us
 
 
+@when(parsers.parse("收到过分相{signal:w}信号"), converters={"signal": zh.core_signal}, target_fixture="t_action")
 @when(parsers.parse("the neutral-section {signal:w} signal arrives"), target_fixture="t_action")
 def _(sut: TrainDriver, signal: str) -> int:
     sut.set_input("neutral section signal", signal)
     return sut.now_us
 
 
+@given(parsers.parse('过分相装置报告"{state}"'), converters={"state": zh.core_state})
 @given(parsers.parse('the neutral-section device reports "{state}"'))
 def _(sut: TrainDriver, state: str) -> None:
     sut.set_input("neutral section device", state)
 
 
+@when("司机手动恢复过分相之前的状态", target_fixture="t_action")
 @when("the driver restores the pre-section state manually", target_fixture="t_action")
 def _(sut: TrainDriver) -> int:
     sut.set_input("neutral section restore", "manual restore")
     return sut.now_us
 
 
+@when("司机复位主电路", target_fixture="t_action")
 @when("the driver resets the main circuit", target_fixture="t_action")
 def _(sut: TrainDriver) -> int:
     sut.set_input("main circuit reset", "reset")
     return sut.now_us
 
 
+@given(parsers.parse('车辆输入"{name}"为"{value}"'), converters={"value": zh.core_state})
 @given(parsers.parse('the vehicle input "{name}" is "{value}"'))
+@when(parsers.parse('车辆输入"{name}"变为"{value}"'), converters={"value": zh.core_state}, target_fixture="t_action")
 @when(parsers.parse('the vehicle input "{name}" becomes "{value}"'), target_fixture="t_action")
 def _(sut: TrainDriver, name: str, value: str) -> int:
     """The catch-all: any input of the SUT's catalogue, so a new test item needs no new Python."""
@@ -128,12 +152,15 @@ def _changes(sut: TrainDriver, output: str, since: int, value: str | None = None
     return [ev for ev in found if value is None or ev["value"] == value]
 
 
+@then(parsers.re(rf'"(?P<output>[^"]+)"为{ZH_VALUE}'), converters={"value": zh.core_state})
 @then(parsers.re(rf'the "(?P<output>[^"]+)" is {VALUE}'))
 def _(sut: TrainDriver, output: str, value: str) -> None:
     got = sut.output(output)
     assert got == value, f"the {output} is {got}, expected {value}"
 
 
+@then(parsers.re(rf'"(?P<output>[^"]+)"在(?P<bound>{NUMBER}) ms内变为{ZH_VALUE}'),
+      converters={"bound": float, "value": zh.core_state})
 @then(parsers.re(rf'the "(?P<output>[^"]+)" is {VALUE} within (?P<bound>{NUMBER}) ms'),
       converters={"bound": float})
 def _(sut: TrainDriver, t_action: int, output: str, value: str, bound: float) -> None:
@@ -145,6 +172,7 @@ def _(sut: TrainDriver, t_action: int, output: str, value: str, bound: float) ->
         assert delay <= us(bound), f"the {output} became {value} after {ms(delay)}, limit {bound} ms"
 
 
+@then(parsers.re(rf'"(?P<output>[^"]+)"保持{ZH_VALUE}'), converters={"value": zh.core_state})
 @then(parsers.re(rf'the "(?P<output>[^"]+)" stays {VALUE}'))
 def _(sut: TrainDriver, t_action: int, output: str, value: str) -> None:
     changes = _changes(sut, output, t_action)
@@ -153,6 +181,8 @@ def _(sut: TrainDriver, t_action: int, output: str, value: str) -> None:
     assert got == value, f"the {output} is {got}, expected {value}"
 
 
+@then(parsers.re(rf'"(?P<output>[^"]+)"在总风管压力处于(?P<lo>{NUMBER})至(?P<hi>{NUMBER}) kPa之间时变为{ZH_VALUE}'),
+      converters={"lo": float, "hi": float, "value": zh.core_state})
 @then(parsers.re(rf'the "(?P<output>[^"]+)" became {VALUE} while the main air pipe pressure was between '
                  rf'(?P<lo>{NUMBER}) and (?P<hi>{NUMBER}) kPa'), converters={"lo": float, "hi": float})
 def _(sut: TrainDriver, t_action: int, output: str, value: str, lo: float, hi: float) -> None:
@@ -162,6 +192,8 @@ def _(sut: TrainDriver, t_action: int, output: str, value: str, lo: float, hi: f
     assert lo <= p <= hi, f"the {output} became {value} at {p:g} kPa, outside {lo:g}..{hi:g} kPa"
 
 
+@then(parsers.re(rf'"(?P<output>[^"]+)"在速度处于(?P<lo>{NUMBER})至(?P<hi>{NUMBER}) km/h之间时变为{ZH_VALUE}'),
+      converters={"lo": float, "hi": float, "value": zh.core_state})
 @then(parsers.re(rf'the "(?P<output>[^"]+)" became {VALUE} while the speed was between (?P<lo>{NUMBER}) and '
                  rf'(?P<hi>{NUMBER}) km/h'), converters={"lo": float, "hi": float})
 def _(sut: TrainDriver, t_action: int, output: str, value: str, lo: float, hi: float) -> None:
@@ -171,6 +203,7 @@ def _(sut: TrainDriver, t_action: int, output: str, value: str, lo: float, hi: f
     assert lo <= v <= hi, f"the {output} became {value} at {v:g} km/h, outside {lo:g}..{hi:g} km/h"
 
 
+@then(parsers.re(rf'"(?P<output>[^"]+)"始终未变为{ZH_VALUE}'), converters={"value": zh.core_state})
 @then(parsers.re(rf'the "(?P<output>[^"]+)" never became {VALUE}'))
 def _(sut: TrainDriver, t_action: int, output: str, value: str) -> None:
     changes = _changes(sut, output, t_action, value)
@@ -178,6 +211,7 @@ def _(sut: TrainDriver, t_action: int, output: str, value: str) -> None:
     assert sut.output(output) != value, f"the {output} is {value}"
 
 
+@then(parsers.parse('"{a}"与"{b}"在同一时刻变化'))
 @then(parsers.parse('the "{a}" and the "{b}" changed at the same instant'))
 def _(sut: TrainDriver, t_action: int, a: str, b: str) -> None:
     ca, cb = _changes(sut, a, t_action), _changes(sut, b, t_action)
@@ -185,6 +219,7 @@ def _(sut: TrainDriver, t_action: int, a: str, b: str) -> None:
     assert ca[0].t == cb[0].t, f"the {a} changed at {ms(ca[0].t)}, the {b} at {ms(cb[0].t)}"
 
 
+@then(parsers.parse("{after:g} ms起没有CI收到高于0级的牵引级位"))
 @then(parsers.parse("no CI receives a traction notch above 0 from {after:g} ms on"))
 def _(sut: TrainDriver, t_action: int, after: float) -> None:
     takes = [ev for ev in sut.trace.select(kind="cmd.in", source="*.CI", since=t_action + us(after))]
@@ -193,12 +228,14 @@ def _(sut: TrainDriver, t_action: int, after: float) -> None:
     assert not odd, f"traction reached a CI: {analysis.describe(odd)}"
 
 
+@then(parsers.parse("每个CI在{bound:g} ms内收到牵引级位{notch:d}"))
 @then(parsers.parse("every CI receives traction notch {notch:d} within {bound:g} ms"))
 def _(sut: TrainDriver, t_action: int, notch: int, bound: float) -> None:
     cis = [d for d in analysis.command_devices(sut) if d.endswith(".CI")]
     analysis.expect_taken(sut, cis, t_action, bound, f"traction notch {notch}", traction=notch)
 
 
+@then(parsers.parse("{after:g} ms起每个BCU收到制动级位{step:d}"))
 @then(parsers.parse("from {after:g} ms on every BCU receives brake step {step:d}"))
 def _(sut: TrainDriver, t_action: int, after: float, step: int) -> None:
     for device in [d for d in analysis.command_devices(sut) if d.endswith(".BCU")]:

@@ -2,14 +2,157 @@
 the English values the driver interface knows, so a Chinese sentence's words are converted first."""
 from __future__ import annotations
 
+import re
+from typing import Callable
+
+# How a Chinese sentence lists things: 、 ， , ; and the words 和/及 ("CPU3、MDM8和TXC").
+LIST_SEP = re.compile(r"\s*(?:[、,，;；]|和|及)\s*")
+
+
+def words(table: dict[str, str]) -> Callable[[str], str]:
+    """A converter: a Chinese word of `table` becomes its English value; anything else (English, numbers)
+    passes unchanged, so the Chinese sentence also takes the English values."""
+    def convert(word: str) -> str:
+        return table.get(word, word)
+    return convert
+
+
+def listing(text: str) -> str:
+    """CPU3、MDM8和TXC -> CPU3, MDM8, TXC; 120、137和137.5 -> 120, 137, 137.5 (the lists steps read);
+    English lists are left as they are."""
+    return LIST_SEP.sub(", ", text)
+
 DIRECTIONS = {"前进": "forward", "向前": "forward", "后退": "reverse", "向后": "reverse", "中立": "neutral",
               "零位": "neutral"}
 FRAMES = {"状态": "status", "命令": "command", "令牌": "token", "块": "block"}
 
 
-def direction(word: str) -> str:
-    return DIRECTIONS.get(word, word)
+direction = words(DIRECTIONS)
+frame = words(FRAMES)
 
 
-def frame(word: str) -> str:
-    return FRAMES.get(word, word)
+# -- steps/atp.py (CTCS-2 200C on-board ATP) --------------------------------------------------------------
+ATP_LINES = {"上行": "up", "下行": "down", "上": "up", "下": "down"}
+ATP_MODES = {"完全监控": "FS", "完全": "FS", "部分监控": "PS", "部分": "PS", "待机": "SB", "机车信号": "CS",
+             "休眠": "SL", "自动驾驶": "AM"}
+ATP_BRAKES = {"最大常用": "max service", "紧急": "emergency", "常用": "service", "无": "no"}
+ATP_PERMISSIONS = {"门控许可": "door enable", "开门许可": "door enable", "门允许": "door enable",
+                   "屏蔽门许可": "PSD permission", "屏蔽门开关许可": "PSD permission", "站台门许可": "PSD permission",
+                   "ATO允许": "ATO allowed"}
+ATP_DMI_TEXTS = {"CFSK故障": "CFSK fault", "载频不一致": "carrier inconsistent", "默认报文": "default telegram",
+                 "应答器信息错误": "balise information error", "DEF故障": "DEF fault"}
+ATP_REACTIONS = {"无反应": "none", "无": "none", "最大常用制动": "max service", "最大常用": "max service"}
+ATP_RECORD_FIELDS = {"低频码": "code", "低频信息": "code", "载频": "carrier", "信号幅度": "amplitude",
+                     "幅度": "amplitude", "运行状态": "state", "状态": "state", "轨道电路类型": "type", "类型": "type"}
+ATP_RECORD_VALUES = {"正常": "ok", "故障": "fault"}
+
+
+# 上行/下行 -> up/down (a carrier set, the line direction of a balise group).
+atp_line = words(ATP_LINES)
+atp_mode = words(ATP_MODES)
+
+
+def atp_brake(word: str | None) -> str:
+    """The brake the ATP commands: 最大常用 -> max service, ...; no word at all (ATP不输出制动) -> no."""
+    return "no" if word is None else ATP_BRAKES.get(word, word)
+
+
+atp_permission = words(ATP_PERMISSIONS)
+atp_dmi_text = words(ATP_DMI_TEXTS)
+atp_reaction = words(ATP_REACTIONS)
+
+
+def atp_record_fields(text: str) -> str:
+    """低频码LU、载频2300 Hz、信号幅度420 mV、状态正常和轨道电路类型ZPW-2000A -> code LU, carrier 2300, ...;
+    a list without a Chinese field name is returned unchanged."""
+    items = LIST_SEP.split(text.strip())
+    if not any(item.startswith(tuple(ATP_RECORD_FIELDS)) for item in items):
+        return text
+    out = []
+    for item in items:
+        key = max((k for k in ATP_RECORD_FIELDS if item.startswith(k)), key=len, default=None)
+        if key is None:
+            out.append(item)
+            continue
+        value = item[len(key):].strip().replace(" ", "")
+        if ATP_RECORD_FIELDS[key] == "carrier" and value.endswith("Hz"):
+            value = value[:-2]
+        out.append(f"{ATP_RECORD_FIELDS[key]} {ATP_RECORD_VALUES.get(value, value)}")
+    return ", ".join(out)
+
+
+# -- steps/vdx.py (the VDX emergency-brake interface) ---------------------------------------------------------
+VDX_FIRMWARES = {"旧版": "old", "旧": "old", "新版": "new", "新": "new"}
+VDX_STATES = {"断开": "open", "闭合": "closed", "得电": "energised", "励磁": "energised", "失电": "de-energised",
+              "失磁": "de-energised"}
+
+
+vdx_firmware = words(VDX_FIRMWARES)
+# 断开/闭合 (the emergency-brake loop), 得电/失电 (a relay) -> open/closed, energised/de-energised.
+vdx_state = words(VDX_STATES)
+
+
+vdx_volts = listing
+
+
+# -- steps/vehicle.py, monitor.py, network.py, train.py (core library) ---------------------------------------
+# Vehicle outputs and inputs (sut/reference/vehicle.py catalogue): one Chinese word names one English value,
+# so "断开" is always open (VCB, contactor) and a light or an air conditioner is 开启/关断, never 打开/关闭.
+CORE_STATES = {
+    "得电": "energised", "励磁": "energised", "失电": "de-energised", "失磁": "de-energised",
+    "缓解": "released", "释放": "released", "施加": "applied", "有指令": "commanded", "无指令": "not commanded",
+    "动作": "acting", "关闭": "closed", "闭合": "closed", "打开": "open", "断开": "open",
+    "允许": "permitted", "封锁": "blocked", "使能": "enabled",
+    "空闲": "idle", "已预告": "warned", "过分相中": "passing", "等待手动进入": "awaiting manual entry",
+    "等待手动恢复": "awaiting manual restore", "手动过分相中": "manual passing",
+    "运行": "running", "停止": "stopped", "无": "none", "下一站": "next station", "欢迎乘车": "welcome aboard",
+    "升起": "up", "降下": "down", "自供电": "own", "扩展供电": "extended", "无供电": "none",
+    "开启": "on", "关断": "off", "投入": "in", "切除": "cut out",
+    "连挂": "coupled", "分离": "separated", "正常": "normal", "油温过高": "over-temperature", "过温": "over-temperature",
+    "一次绕组过流": "primary overcurrent", "二次绕组过流": "secondary overcurrent",
+    "三次绕组过流": "tertiary overcurrent", "二次绕组接地": "secondary earth fault",
+    "三次绕组接地": "tertiary earth fault", "严重故障": "severe fault", "预告信号故障": "warning signal fault",
+    "手动恢复": "manual restore", "复位": "reset",
+}
+# The Chinese state words as a regex alternative (longest first), for the parsers.re output steps.
+CORE_STATE_RE = "|".join(sorted(CORE_STATES, key=len, reverse=True))
+CORE_SWITCH = {"ON": "on", "OFF": "off", "接通": "on", "断开": "off", "合": "on", "断": "off"}
+CORE_BRAKES = {"常用": "service", "紧急": "emergency"}
+CORE_SIGNALS = {"预告": "warning", "进入": "entry", "通过": "exit", "退出": "exit"}
+CORE_EVENTS = {"故障": "failed", "失效": "failed", "恢复": "recovered", "修复": "recovered"}
+CORE_MEDIA = {"光纤": "fibre", "双绞线": "twisted-pair"}
+
+
+# 断开 -> open, 失电 -> de-energised, 分离 -> separated, ...; anything else (English, numbers) unchanged.
+core_state = words(CORE_STATES)
+# A switch position: 接通/ON -> on, 断开/OFF -> off.
+core_switch = words(CORE_SWITCH)
+core_brake = words(CORE_BRAKES)
+# A neutral-section signal: 预告/进入/通过 -> warning/entry/exit.
+core_signal = words(CORE_SIGNALS)
+core_event = words(CORE_EVENTS)
+core_medium = words(CORE_MEDIA)
+
+
+core_list = listing
+
+
+# -- steps/metro.py (metro TCN profile), steps/environment.py, steps/extra_*.py -----------------------------
+# The display unit's modes (sut/reference/metro/tcds.py) and the MVB data classes (sut/codecs/mvb.py).
+METRO_MODES = {"正常": "normal", "正常模式": "normal", "无主控司机室": "no cab", "列车网络故障": "train network failure",
+               "紧急运行": "emergency operation", "紧急运行模式": "emergency operation", "上电": "power-up"}
+METRO_DATA_CLASSES = {"过程数据": "process data", "消息数据": "message data", "信息数据": "message data",
+                      "监视数据": "supervisory data", "监管数据": "supervisory data"}
+
+
+# 正常 -> normal, 列车网络故障 -> train network failure, 紧急运行 -> emergency operation.
+metro_mode = words(METRO_MODES)
+
+
+def metro_data_classes(text: str) -> str:
+    """过程数据和监视数据 -> process data, supervisory data (the list the MVB master-frame step reads);
+    a list without a Chinese data-class name is returned unchanged."""
+    items = [i for i in LIST_SEP.split(text.strip()) if i]
+    if not any(i in METRO_DATA_CLASSES for i in items):
+        return text
+    return ", ".join(METRO_DATA_CLASSES.get(i, i) for i in items)
