@@ -21,22 +21,26 @@ Then the full reference model: ReferenceTrain, key in cab 1, powered up, advance
 time (kernel callbacks, trace events, wall time); peak memory is taken in a second run under tracemalloc
 (which slows Python down ~2.5x, so it is never the timed run).
 
-Measured on this machine (2-core AMD EPYC VM, Python 3.11.7, SimPy 4.1.2, 2026-11-23). Two other
-CPU-bound jobs shared the cores (load 2-3), so single figures moved by up to 2x between runs; the ratios
-below are the spread over five runs of this script plus 9-round interleaved CPU-time probes:
-  variant            events/s (last run)   wall s / sim h   speed vs simpy-process (spread)
-  simpy-process      376 000               37               1.00
-  simpy-callback     496 000               28               0.95 .. 1.32
-  kernel-callback    454 000               31               0.72 .. 1.21, ~1.0 in the CPU-time probes
-  kernel-process     358 000               39               0.68 .. 0.95
-  => on this load our Kernel is at par with SimPy (callbacks), and slower than SimPy with generator
-     processes; the "several times faster" in kernel.py's docstring is not what this machine shows.
-     (Probe, not in this file: a Kernel subclass whose call_later pushes onto the heap itself instead of
-     calling call_at ran kernel-callback ~1.25-1.6x faster, so most of the cost is call overhead.)
-  reference model, 60 s virtual (key in cab 1, powered up): 310 844 kernel events, 173 239 trace events
-  (both deterministic), 5.7 .. 11.8 s wall depending on load -> 340 .. 710 s (6-12 min) wall per simulated
-  hour; peak traced memory 21.3 MB after 20 s -> ~64 MB per simulated minute, almost all of it the trace
-  list (~370 B per trace event; ~1.1 MB without it), i.e. ~3.8 GB per simulated hour if the trace is kept.
+Each run also prints, from that run alone, kernel vs SimPy events per second and their ratio, idiom by idiom
+(callbacks: kernel-callback / simpy-callback; processes: kernel-process / simpy-process) and best vs best.
+
+Measured on this machine (2-core AMD EPYC VM, Python 3.11.7, SimPy 4.1.2, 2026-11-23 21:09, defaults:
+60 s simulated, best of 3; load average 1.0, i.e. about one other CPU-bound job on the two cores):
+  variant            events/s   wall s / sim h   speed vs simpy-process
+  simpy-process      802 700    17.5             1.00
+  simpy-callback     781 700    18.0             0.97
+  kernel-callback    848 700    16.5             1.06
+  kernel-process     678 700    20.7             0.85
+  kernel vs SimPy: callbacks 1.09x (kernel faster), processes 0.85x (SimPy faster), best vs best 1.06x.
+  => on this load our Kernel is at par with SimPy: ~1.1x with callbacks (how the model is written), slower
+     with generator processes; the "several times faster" in kernel.py's docstring is not what this machine
+     shows. (An earlier session, at load 2-3, saw the same picture with a wider spread: kernel-callback
+     0.72 .. 1.21x of simpy-process over five runs, kernel-process 0.68 .. 0.95x.)
+  reference model, 60 s virtual (key in cab 1, powered up): 310 844 kernel events, 173 386 trace events
+  (both deterministic), 2.64 s wall -> 158 s (2.6 min) wall per simulated hour, 118 000 kernel events per
+  wall second (the model's callbacks cost ~7x the bare ring workload's); peak traced memory 21.5 MB after
+  20 s -> ~64 MB per simulated minute, almost all of it the trace list (~370 B per trace event), i.e.
+  ~3.9 GB per simulated hour if the trace is kept (long runs use TrainDriver.soak, bench/bulk_bench.py).
 Each run prints its own figures; rerun on a quiet machine before quoting them in DECISIONS.md.
 """
 from __future__ import annotations
@@ -345,6 +349,25 @@ def _fmt_int(n: int | None) -> str:
     return "-" if n is None else f"{n:,}"
 
 
+def ratio_lines(results: list[Result]) -> list[str]:
+    """Kernel vs SimPy on the same model in this run: events per wall second of each and their ratio, idiom
+    by idiom (callbacks, processes) and best against best."""
+    by = {r.name: r for r in results}
+    lines = []
+    pairs = [("callbacks", "kernel-callback", "simpy-callback"), ("processes", "kernel-process", "simpy-process")]
+    kernels = [r for r in results if r.name.startswith("kernel")]
+    simpys = [r for r in results if r.name.startswith("simpy")]
+    if kernels and simpys:
+        bk, bs = max(kernels, key=Result.events_per_s), max(simpys, key=Result.events_per_s)
+        pairs.append(("best of each", bk.name, bs.name))
+    for what, k, sp in pairs:
+        if k in by and sp in by:
+            ek, es = by[k].events_per_s(), by[sp].events_per_s()
+            lines.append(f"kernel vs SimPy, {what}: {k} {ek:,.0f} events/s, {sp} {es:,.0f} events/s "
+                         f"-> ratio {ek / es:.2f}x ({'kernel faster' if ek > es else 'SimPy faster'})")
+    return lines
+
+
 def report(results: list[Result], ref: RefResult | None, sim_us: int, repeat: int, plain: bool) -> None:
     base = next((r for r in results if r.name == "simpy-process"), results[0] if results else None)
     expected = expected_count(sim_us)
@@ -360,6 +383,7 @@ def report(results: list[Result], ref: RefResult | None, sim_us: int, repeat: in
              f"(count and checksum): {'yes' if same and all(r.tally.count == expected for r in results) else 'NO'}"]
     for r in results:
         notes.append(f"  {r.name:16} {r.what}")
+    notes += ratio_lines(results)
     ref_headers, ref_rows = [], []
     if ref is not None:
         ref_headers = ["reference model", "value"]

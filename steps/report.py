@@ -30,9 +30,16 @@ def _is_key(ev) -> bool:
     return not (ev.kind == "display.change" and isinstance(ev.get("value"), (int, float)))
 
 
+def recording(config: pytest.Config) -> bool:
+    """Whether this run writes Allure results (--alluredir): without them every attachment is dropped."""
+    return bool(getattr(config.option, "allure_report_dir", None))
+
+
 def attach_run(driver: TrainDriver, request: pytest.FixtureRequest, whole_trace: bool = True,
                bounds: tuple[Bound, ...] = ()) -> None:
-    if not driver.powered:
+    # Building the diagram and the CSVs is a sixth of a plain run's time (bench/suite_bench.py): skip it
+    # when nobody records them.
+    if not driver.powered or not recording(request.config):
         return
     trace = driver.trace
     key = Trace([ev for ev in trace if _is_key(ev)])
