@@ -55,20 +55,20 @@ def test_a_crh2_only_sut_skips_every_metro_scenario() -> None:
 
 
 def _scenarios_tagged(tag: str) -> tuple[int, list[str]]:
-    """Cases (examples expanded) of the feature files carrying `tag`, counted from the files themselves,
-    and the items of those files."""
+    """Cases (examples expanded) of the feature files carrying `tag`, counted from the files themselves
+    (English and zh-CN keywords), and the items of those files."""
     total, items = 0, []
     for path in (ROOT / "features").rglob("*.feature"):
-        text = path.read_text(encoding="utf-8")
-        if tag not in text.splitlines()[0]:
+        lines = path.read_text(encoding="utf-8").splitlines()
+        tags = next((line for line in lines if line.startswith("@")), "")   # after a "# language:" line
+        if tag not in tags.split():
             continue
-        items.append(path.stem)
-        lines = text.splitlines()
-        total += sum(1 for line in lines if line.strip().startswith("Scenario:"))
+        items.append(path.name.split(".")[0])                                 # F-NET-24.zh-CN.feature
+        total += sum(1 for line in lines if line.strip().startswith(("Scenario:", "场景:")))
         rows, in_examples = 0, False
         for line in lines:
             stripped = line.strip()
-            if stripped.startswith("Examples:"):
+            if stripped.startswith(("Examples:", "例子:")):
                 in_examples, header = True, True
                 continue
             if in_examples and stripped.startswith("|"):
