@@ -306,3 +306,28 @@ def test_fast_check_agrees_with_the_decoder(wire):
     except FrameError:
         decodes = False
     assert check_ok(wire) == decodes
+
+
+# -- the compiled layouts the reference runs are the declared ones -------------------------------------
+byte = st.integers(0, 255)
+points = st.lists(st.fixed_dictionaries({"id": st.integers(0, 0xFFFF), "value": st.integers(-2**31, 2**31 - 1)}),
+                  max_size=19)
+PAYLOAD_VALUES = {
+    K_COMMAND: st.fixed_dictionaries({k: byte for k in ("seq", "cab", "system", "direction", "traction", "brake",
+                                                          "flags")} | {"clock_ms": st.integers(0, 2**32 - 1)}),
+    K_STATUS: st.fixed_dictionaries({k: byte for k in ("node", "car", "unit", "health", "ports", "block_request",
+                                                         "grant")} | {"seq": st.integers(0, 0xFFFF),
+                                                                      "points": points, "orders": points}),
+    K_TOKEN_INIT: st.fixed_dictionaries({"node": byte}),
+    K_BLOCK: st.fixed_dictionaries({"owner": byte, "record": st.integers(0, 0xFFFF), "index": st.integers(0, 0xFFFF),
+                                    "total": st.integers(0, 0xFFFF), "data": st.binary(min_size=236, max_size=236)}),
+}
+
+
+@relaxed
+@given(st.sampled_from(sorted(PAYLOAD_VALUES)).flatmap(lambda k: st.tuples(st.just(k), PAYLOAD_VALUES[k])))
+def test_compiled_layouts_build_as_declared(case):
+    kind, values = case
+    wire = frames.LAYOUTS[kind].build(dict(values, kind=kind))
+    assert frames._BUILDERS[kind].build(dict(values, kind=kind)) == wire
+    assert frames.build_payload(kind, values) == wire
