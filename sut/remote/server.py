@@ -109,6 +109,8 @@ def _error(exc: BaseException) -> dict[str, Any]:
 
 class _Handler(socketserver.StreamRequestHandler):
     server: "SutServer"
+    # A client silent this long between requests is gone (a killed pytest): free its train and process.
+    timeout = 600
 
     def handle(self) -> None:
         session = Session(self.server.backend, self.server.served)
