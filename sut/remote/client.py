@@ -140,7 +140,11 @@ class RemoteTrain(TrainDriver):
         self._now_us = 0
         self._total = 0
         self._stale = True          # a call may have moved time or added events since the last `state`
-        self._conn.request("open", "open", profile=profile)
+        try:
+            self._conn.request("open", "open", profile=profile)
+        except BaseException:
+            self._conn.close()      # nobody will shut down a driver that was never returned
+            raise
 
     def _state(self) -> None:
         if self._stale:
