@@ -6,7 +6,7 @@ One script run measures both, alternating (in-process first), each a fresh `pyth
 -p no:xdist -p no:cacheprovider` subprocess, the remote one with `--sut tcp://127.0.0.1:N` against a
 `python -m sut serve` started for it (one forked server process per connection, as in use). Printed: wall
 seconds, CPU seconds (user + sys from os.wait4, the server's including the trains it forked), the scenario
-count (must be equal), the ratios remote / in-process of wall and of total CPU, against the 2x target, and
+outcome counts (must be equal), the ratios remote / in-process of wall and of total CPU, against the 2x target, and
 the machine load before and after. Serial on purpose: with `-n 2` the two sides share the two cores.
 """
 from __future__ import annotations
@@ -16,7 +16,7 @@ import os
 import re
 import subprocess
 import sys
-import time
+import tempfile
 from pathlib import Path
 
 BENCH = Path(__file__).resolve().parent
@@ -24,22 +24,9 @@ ROOT = BENCH.parent
 sys.path.insert(0, str(BENCH))
 
 from _table import table, text  # noqa: E402
+from suite_bench import Run, run_pytest  # noqa: E402  the same runner: wall, CPU from os.wait4, outcomes
 
 TARGET = 2.0
-PASSED = re.compile(r"(\d+) passed")
-
-
-def _run(cmd: list[str]) -> tuple[float, float, int, str]:
-    started = time.perf_counter()
-    proc = subprocess.Popen(cmd, cwd=ROOT, stdout=subprocess.PIPE, stderr=subprocess.STDOUT, text=True)
-    output = proc.stdout.read()
-    _, status, usage = os.wait4(proc.pid, 0)
-    wall = time.perf_counter() - started
-    if status != 0:
-        raise SystemExit(f"{' '.join(cmd[3:])} failed (status {status}):\n{output[-2000:]}")
-    last = output.strip().splitlines()[-1] if output.strip() else ""
-    match = PASSED.search(last)
-    return wall, usage.ru_utime + usage.ru_stime, int(match.group(1)) if match else 0, last
 
 
 def main(argv: list[str] | None = None) -> int:
@@ -52,7 +39,8 @@ def main(argv: list[str] | None = None) -> int:
     args = ap.parse_args(argv)
     select = [f"--item={args.item}"] if args.item else []
     select += [f"--profile={args.profile}"] if args.profile else []
-    pytest = [sys.executable, "-m", "pytest", "features", "-q", "-p", "no:xdist", "-p", "no:cacheprovider", *select]
+    argv = ["features", "-q", "-p", "no:xdist", "-p", "no:cacheprovider", *select]
+    logdir = Path(tempfile.mkdtemp(prefix="crh2-remote-bench-"))
 
     server = subprocess.Popen([sys.executable, "-m", "sut", "serve", "--port", "0"], cwd=ROOT,
                               stdout=subprocess.PIPE, stderr=subprocess.PIPE, text=True)
@@ -61,24 +49,28 @@ def main(argv: list[str] | None = None) -> int:
     local, remote = [], []
     try:
         for _ in range(args.repeat):
-            local.append(_run(pytest))
-            remote.append(_run([*pytest, f"--sut={url}"]))
+            local.append(run_pytest(Run("in process", argv, ROOT), logdir))
+            remote.append(run_pytest(Run("remote", [*argv, f"--sut={url}"], ROOT), logdir))
     finally:
         server.terminate()
         _, _, server_usage = os.wait4(server.pid, 0)
     load_after = os.getloadavg()[0]
-    best_local, best_remote = min(local), min(remote)
-    if best_local[2] != best_remote[2] or best_local[2] == 0:
-        raise SystemExit(f"scenario counts differ: in process {best_local[3]!r}, remote {best_remote[3]!r}")
+    for run in local + remote:
+        if run.exit != 0:
+            raise SystemExit(f"{run.label}: pytest exit {run.exit}, see {run.log}")
+    best_local, best_remote = (min(runs, key=lambda r: r.wall) for runs in (local, remote))
+    if best_local.outcomes() != best_remote.outcomes() or not best_local.collected:
+        raise SystemExit(f"outcomes differ: in process {best_local.outcomes()}, remote {best_remote.outcomes()}")
     server_cpu = server_usage.ru_utime + server_usage.ru_stime       # all runs, the forked trains included
-    remote_cpu = best_remote[1] + server_cpu / args.repeat
-    rows = [("in process", f"{best_local[0]:.1f}", f"{best_local[1]:.1f}", "", str(best_local[2])),
-            ("remote", f"{best_remote[0]:.1f}", f"{best_remote[1]:.1f}", f"{server_cpu / args.repeat:.1f}",
-             str(best_remote[2]))]
+    remote_cpu = best_remote.cpu + server_cpu / args.repeat
+    passed = lambda run: str(run.outcomes().get("passed", 0))          # noqa: E731
+    rows = [("in process", f"{best_local.wall:.1f}", f"{best_local.cpu:.1f}", "", passed(best_local)),
+            ("remote", f"{best_remote.wall:.1f}", f"{best_remote.cpu:.1f}", f"{server_cpu / args.repeat:.1f}",
+             passed(best_remote))]
     table("in process vs remote (serial, best of %d)" % args.repeat,
           ["run", "wall s", "client CPU s", "server CPU s", "passed"], rows, plain=args.plain)
-    wall_ratio = best_remote[0] / best_local[0]
-    text(f"remote / in process: wall {wall_ratio:.2f}x, total CPU {remote_cpu / best_local[1]:.2f}x "
+    wall_ratio = best_remote.wall / best_local.wall
+    text(f"remote / in process: wall {wall_ratio:.2f}x, total CPU {remote_cpu / best_local.cpu:.2f}x "
          f"(target <= {TARGET:g}x: {'met' if wall_ratio <= TARGET else 'MISSED'}); "
          f"load {load_before:.2f} -> {load_after:.2f}", plain=args.plain)
     return 0

@@ -3,6 +3,7 @@
 from __future__ import annotations
 
 import os
+import re
 import subprocess
 import sys
 from pathlib import Path
@@ -31,3 +32,18 @@ def run_pytest(path: Path, *args: str) -> subprocess.CompletedProcess:
         text=True,
         timeout=300,
     )
+
+
+# What `pytest -rA` printed per test, and the traces `--trace-dir` wrote: how two runs are compared
+# (in process against remote, serial against xdist).
+OUTCOME = re.compile(r"^(PASSED|FAILED|SKIPPED|ERROR) (\S+)", re.M)
+
+
+def verdicts(stdout: str) -> list[tuple[str, str]]:
+    """(test id, outcome) of every test of a `-rA` run, sorted."""
+    return sorted((name, outcome) for outcome, name in OUTCOME.findall(stdout))
+
+
+def traces(folder: Path) -> dict[str, bytes]:
+    """Every trace file a `--trace-dir` run wrote, by name."""
+    return {p.name: p.read_bytes() for p in sorted(folder.glob("*.csv"))}

@@ -9,16 +9,15 @@ on two xdist workers; the verdicts and the traces (`--trace-dir`, CSV) must be b
 from __future__ import annotations
 
 import os
-import re
 import subprocess
 import sys
 from pathlib import Path
 
+from tests.helpers import traces, verdicts
 from tests.test_faulty_variants import ROOT
 
 # Every profile, the timing-heavy parts (takeover, token, power interruption, VDX self-test) and zh-CN.
 SAMPLE = "R-CTL-03,R-DIA-02,F-NET-13,F-NET-03,F-ILK-05,H-PWR-02,F-ATP-04,F-ATP-12,F-NET-21,F-CTL-15"
-OUTCOME = re.compile(r"^(PASSED|FAILED|SKIPPED|ERROR) (\S+)", re.M)
 
 
 def _run(trace_dir: Path, hash_seed: str, *args: str) -> list[tuple[str, str]]:
@@ -27,11 +26,7 @@ def _run(trace_dir: Path, hash_seed: str, *args: str) -> list[tuple[str, str]]:
     env = dict(os.environ, PYTHONHASHSEED=hash_seed, PYTHONDONTWRITEBYTECODE="1")
     result = subprocess.run(cmd, cwd=ROOT, capture_output=True, text=True, env=env, timeout=900)
     assert result.returncode == 0, result.stdout[-3000:] + result.stderr[-2000:]
-    return sorted((name, outcome) for outcome, name in OUTCOME.findall(result.stdout))
-
-
-def _traces(folder: Path) -> dict[str, bytes]:
-    return {p.name: p.read_bytes() for p in sorted(folder.glob("*.csv"))}
+    return verdicts(result.stdout)
 
 
 def test_two_runs_and_a_parallel_run_give_identical_verdicts_and_traces(tmp_path: Path) -> None:
@@ -41,8 +36,9 @@ def test_two_runs_and_a_parallel_run_give_identical_verdicts_and_traces(tmp_path
     assert len(first) >= 60
     assert first == second, "two serial runs disagree"
     assert first == parallel, "a run on two xdist workers disagrees with a serial run"
-    traces = _traces(tmp_path / "first")
-    assert len(traces) == len(first) and sum(map(len, traces.values())) > 1_000_000
+    expected = traces(tmp_path / "first")
+    assert len(expected) == len(first) and sum(map(len, expected.values())) > 1_000_000
     for other in ("second", "parallel"):
-        differ = [name for name, text in _traces(tmp_path / other).items() if traces.get(name) != text]
-        assert not differ and len(_traces(tmp_path / other)) == len(traces), f"{other}: traces differ: {differ[:5]}"
+        found = traces(tmp_path / other)
+        differ = [name for name, text in found.items() if expected.get(name) != text]
+        assert not differ and len(found) == len(expected), f"{other}: traces differ: {differ[:5]}"

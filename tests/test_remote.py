@@ -22,12 +22,12 @@ from sut.backends import open_backend, resolve
 from sut.driver import TrainDriver
 from sut.errors import NotPoweredUp, OutOfRange, SutUnreachable, UnknownName
 from sut.remote import client, server, wire
+from tests.helpers import traces, verdicts
 from tests.test_faulty_variants import ROOT, run_features
 
 # The routine class (English and zh-CN) and one item of each other profile: the ATP rig item caught a
 # client that sent arguments the step never gave.
 ITEMS = "R-CTL-01,R-CTL-02,R-CTL-03,R-DIA-01,R-DIA-02,R-DIA-03,R-DSP-01,F-ATP-04,F-NET-21"
-OUTCOME = re.compile(r"^(PASSED|FAILED|SKIPPED|ERROR) (\S+)", re.M)
 FUZZ = settings(max_examples=200, deadline=None, derandomize=True, database=None,
                 suppress_health_check=[HealthCheck.too_slow])
 
@@ -47,25 +47,17 @@ def served(*args: str) -> Iterator[str]:
         proc.wait(timeout=10)
 
 
-def _verdicts(stdout: str) -> list[tuple[str, str]]:
-    return sorted((name, outcome) for outcome, name in OUTCOME.findall(stdout))
-
-
-def _traces(folder: Path) -> dict[str, bytes]:
-    return {p.name: p.read_bytes() for p in sorted(folder.glob("*.csv"))}
-
-
 def test_same_verdicts_and_traces_in_process_and_remote(tmp_path: Path) -> None:
     local = run_features(None, f"--item={ITEMS}", "-rA", f"--trace-dir={tmp_path / 'local'}", sut="reference")
     with served() as url:
         remote = run_features(None, f"--item={ITEMS}", "-rA", f"--trace-dir={tmp_path / 'remote'}", sut=url)
     assert local.returncode == 0, local.stdout[-3000:]
     assert remote.returncode == 0, remote.stdout[-3000:] + remote.stderr[-2000:]
-    assert _verdicts(remote.stdout) == _verdicts(local.stdout)
-    assert len(_verdicts(local.stdout)) >= 50
-    traces = _traces(tmp_path / "local")
-    assert traces == _traces(tmp_path / "remote")
-    assert sum(len(t) for t in traces.values()) > 1_000_000, "the traces compared are not empty"
+    assert verdicts(remote.stdout) == verdicts(local.stdout)
+    assert len(verdicts(local.stdout)) >= 50
+    expected = traces(tmp_path / "local")
+    assert traces(tmp_path / "remote") == expected
+    assert sum(len(t) for t in expected.values()) > 1_000_000, "the traces compared are not empty"
 
 
 def test_a_faulty_implementation_served_remotely_is_rejected() -> None:
@@ -115,11 +107,13 @@ def test_the_client_carries_the_interface_errors_values_and_trace() -> None:
 
 def test_client_and_server_agree_on_the_interface() -> None:
     public = {name for name in dir(TrainDriver) if not name.startswith("_")}
-    assert server.METHODS == client.FORWARDED
-    assert server.METHODS <= public
+    assert wire.METHODS <= public
     computed = {"advance_ms", "cut_ring", "shutdown", "open", "powered", "now_us", "trace", "check_us",
                 "check_direction", "PROFILES", "backend_name"}
-    assert public - server.METHODS == computed, "a driver method the protocol does not carry"
+    assert public - wire.METHODS == computed, "a driver method the protocol does not carry"
+    # every protocol method reaches the server: none left to TrainDriver's NotSupported default
+    assert all(getattr(client.RemoteTrain, name) is not getattr(TrainDriver, name, None) for name in wire.METHODS
+               if name not in ("power_on", "advance", "soak"))
 
 
 # -- bad peers: the server side ----------------------------------------------------------------------------

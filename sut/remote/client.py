@@ -229,18 +229,9 @@ def _forward(name: str):
     return method
 
 
-# Everything else of the interface is forwarded as is.
-AS_IS = ("counters", "insert_key", "remove_key", "set_direction", "set_traction", "set_brake",
-         "cut_link", "restore_link", "corrupt_frames", "fail", "repair", "power_off", "restore_power",
-         "set_input", "ramp_input", "input", "output", "reading", "monitor_order", "vehicle_names",
-         "rated_limits", "set_supply_voltage", "interrupt_supply", "set_temperature", "interfere",
-         "vibrate", "withstand_test", "insulation_resistance", "cut_line", "restore_line", "disturb_line",
-         "tap_bus", "records", "pass_balise", "request_block_transfer", "tap_link", "ring_nodes", "boards",
-         "devices", "token_holder", "monitor", "status_table", "lamp", "block_store")
-for _name in AS_IS:
+# Every other method of the protocol is forwarded as is; these have bodies of their own above.
+for _name in wire.METHODS - {"configure", "power_on", "advance", "soak", "describe"}:
     setattr(RemoteTrain, _name, _forward(_name))
-# What the client sends as `call`s: the server's METHODS must be exactly this (a test checks).
-FORWARDED = frozenset(AS_IS) | {"configure", "power_on", "advance", "soak", "describe"}
 
 
 def remote_class(url: str) -> type[RemoteTrain]:

@@ -1,6 +1,6 @@
 """A backend served on TCP: one connection = one train, opened by the client's `open` (sut/PROTOCOL.md).
 
-Only the driver interface's methods (`METHODS`) can be called; a connection that sends garbage gets one
+Only the driver interface's methods (`wire.METHODS`) can be called; a connection that sends garbage gets one
 error message naming what was wrong and is closed. Each connection has its own train in its own process
 (forked; a thread where there is no fork, or for a server inside a test process), so a parallel pytest run
 uses every core, and a train that crashes takes no other connection with it.
@@ -18,22 +18,6 @@ from sut.backends import resolve
 from sut.driver import TrainDriver
 from sut.errors import SutError, UnknownName
 from sut.remote import wire
-
-# The methods a client may call: the driver interface, less the conveniences the client's own base class
-# computes from these (advance_ms, cut_ring) and the life cycle carried by ops of their own.
-METHODS = frozenset({
-    "configure", "power_on", "advance", "soak", "counters",
-    "insert_key", "remove_key", "set_direction", "set_traction", "set_brake",
-    "cut_link", "restore_link", "corrupt_frames", "fail", "repair", "power_off", "restore_power",
-    "set_input", "ramp_input", "input", "output", "reading", "monitor_order", "vehicle_names",
-    "rated_limits", "set_supply_voltage", "interrupt_supply", "set_temperature", "interfere", "vibrate",
-    "withstand_test", "insulation_resistance",
-    "cut_line", "restore_line", "disturb_line", "tap_bus", "records", "pass_balise",
-    "request_block_transfer", "tap_link",
-    "ring_nodes", "boards", "devices", "token_holder", "monitor", "status_table", "lamp", "block_store",
-    "describe",
-})
-
 
 class ProtocolViolation(Exception):
     """A request that is well-formed JSON but not a valid request; answered, then the connection closes."""
@@ -75,7 +59,7 @@ class Session:
 
     def _call(self, request: dict[str, Any]) -> dict[str, Any]:
         method, args, kwargs = request.get("method"), request.get("args", []), request.get("kwargs", {})
-        if method not in METHODS:
+        if method not in wire.METHODS:
             raise ProtocolViolation(f"method {method!r} is not part of the driver interface")
         if not isinstance(args, list) or not isinstance(kwargs, dict):
             raise ProtocolViolation("args must be an array and kwargs an object")

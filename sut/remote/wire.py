@@ -14,6 +14,21 @@ MAX_REQUEST = 1 << 20          # a request line (server side); trace chunks keep
 MAX_RESPONSE = 64 << 20
 TRACE_CHUNK = 20_000           # events per `trace` response
 
+# The `call` methods: the driver interface, less the conveniences a client computes from these (advance_ms,
+# cut_ring) and the life cycle and observations carried by ops of their own (open, state, trace, close).
+METHODS = frozenset({
+    "configure", "power_on", "advance", "soak", "counters",
+    "insert_key", "remove_key", "set_direction", "set_traction", "set_brake",
+    "cut_link", "restore_link", "corrupt_frames", "fail", "repair", "power_off", "restore_power",
+    "set_input", "ramp_input", "input", "output", "reading", "monitor_order", "vehicle_names",
+    "rated_limits", "set_supply_voltage", "interrupt_supply", "set_temperature", "interfere", "vibrate",
+    "withstand_test", "insulation_resistance",
+    "cut_line", "restore_line", "disturb_line", "tap_bus", "records", "pass_balise",
+    "request_block_transfer", "tap_link",
+    "ring_nodes", "boards", "devices", "token_holder", "monitor", "status_table", "lamp", "block_store",
+    "describe",
+})
+
 
 class WireError(ValueError):
     """A line that is not a message of the protocol (bad JSON, not an object, too long, truncated)."""
