@@ -10,13 +10,8 @@ from pytest_bdd import parsers, then
 from sut.driver import TrainDriver
 from steps import analysis, zh
 from steps.analysis import ms, us
-
-# The same value grammar as steps/vehicle.py: lower-case words and hyphens, so "open no later than" is never
-# read as one longer value.
-VALUE = r"[a-z][a-z -]*[a-z]"
-NUMBER = r"\d+(?:\.\d+)?"
-# In a Chinese sentence: a Chinese state word (zh.CORE_STATES, converted to the English value) or the English one.
-ZH_VALUE = rf"{zh.CORE_STATE_RE}|{VALUE}"
+# the output-value grammar of vehicle.py: "open no later than" is never read as one longer value
+from steps.vehicle import NUMBER, OUTPUT_VALUE, ZH_OUTPUT_VALUE
 
 
 @then(parsers.parse("{after:g} ms起每个CI和BCU经路径1只收到牵引级位{notch:d}和制动级位{step:d}"))
@@ -48,10 +43,10 @@ def _(sut: TrainDriver, t_action: int, after: float, direction: str) -> None:
         assert not odd, f"{device} received direction {direction}: {analysis.describe(odd)}"
 
 
-@then(parsers.re(rf'"(?P<a>[^"]+)"变为(?P<va>{ZH_VALUE})的时刻不晚于"(?P<b>[^"]+)"变为(?P<vb>{ZH_VALUE})后'
+@then(parsers.re(rf'"(?P<a>[^"]+)"变为(?P<va>{ZH_OUTPUT_VALUE})的时刻不晚于"(?P<b>[^"]+)"变为(?P<vb>{ZH_OUTPUT_VALUE})后'
                  rf'(?P<bound>{NUMBER}) ms'), converters={"bound": float, "va": zh.core_state, "vb": zh.core_state})
-@then(parsers.re(rf'the "(?P<a>[^"]+)" became (?P<va>{VALUE}) no later than (?P<bound>{NUMBER}) ms after the '
-                 rf'"(?P<b>[^"]+)" became (?P<vb>{VALUE})'), converters={"bound": float})
+@then(parsers.re(rf'the "(?P<a>[^"]+)" became (?P<va>{OUTPUT_VALUE}) no later than (?P<bound>{NUMBER}) ms after the '
+                 rf'"(?P<b>[^"]+)" became (?P<vb>{OUTPUT_VALUE})'), converters={"bound": float})
 def _(sut: TrainDriver, t_action: int, a: str, va: str, bound: float, b: str, vb: str) -> None:
     """Both changes after the last action; `a` may come first, but never more than `bound` after `b`."""
     first_b = next((ev for ev in sut.trace.select(kind="out.change", source=b, since=t_action)

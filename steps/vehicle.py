@@ -15,11 +15,13 @@ from steps.analysis import ms, us
 
 # An output value is words of lower-case letters and hyphens ("de-energised", "not commanded"), so a
 # sentence that goes on with "within 200 ms" can never be read as a longer value.
-VALUE = r"(?P<value>[a-z][a-z -]*[a-z])"
+OUTPUT_VALUE = r"[a-z][a-z -]*[a-z]"
 NUMBER = r"\d+(?:\.\d+)?"
 # The same in a Chinese sentence: a Chinese state word (zh.CORE_STATES, converted to the English value) or the
 # English value itself.
-ZH_VALUE = rf"(?P<value>{zh.CORE_STATE_RE}|[a-z][a-z -]*[a-z])"
+ZH_OUTPUT_VALUE = rf"{zh.CORE_STATE_RE}|{OUTPUT_VALUE}"
+VALUE = rf"(?P<value>{OUTPUT_VALUE})"
+ZH_VALUE = rf"(?P<value>{ZH_OUTPUT_VALUE})"
 
 
 # -- inputs -----------------------------------------------------------------------------------------
