@@ -12,6 +12,7 @@ import pytest
 
 from sut.backends import BACKENDS, ENV_VAR, resolve
 from sut.driver import TrainDriver
+from sut.snapshot import SnapshotCache, SnapshotDriver
 from steps import report
 from steps.diagram import Bound
 
@@ -28,6 +29,9 @@ def pytest_addoption(parser: pytest.Parser) -> None:
     group.addoption("--whole-trace", choices=("failed", "all"), default="failed",
                     help="attach the whole SUT trace (gzipped CSV) to the report for failed scenarios only "
                          "(default) or for all; the timing diagram and key events are always attached")
+    group.addoption("--no-snapshots", action="store_true", default=False,
+                    help="simulate every scenario from power-up, never from a copy of a state another "
+                         "scenario reached (sut/snapshot.py); verdicts and traces are the same either way")
     group.addoption("--trace-dir", default=None, metavar="DIR",
                     help="also write each scenario's whole trace to DIR/<test id>.csv (to compare runs: two "
                          "runs of one SUT, in-process against remote, serial against -n auto)")
@@ -42,6 +46,7 @@ def pytest_runtest_makereport(item: pytest.Item, call: pytest.CallInfo):
 
 
 _SUT_CLASS = pytest.StashKey[type]()
+_SNAPSHOTS = pytest.StashKey[SnapshotCache]()
 
 
 def pytest_configure(config: pytest.Config) -> None:
@@ -50,6 +55,31 @@ def pytest_configure(config: pytest.Config) -> None:
         config.stash[_SUT_CLASS] = resolve(config.getoption("--sut"))
     except Exception as exc:
         raise pytest.UsageError(f"--sut: {exc}") from None
+    config.stash[_SNAPSHOTS] = SnapshotCache()
+
+
+def pytest_sessionfinish(session: pytest.Session) -> None:
+    cache = session.config.stash.get(_SNAPSHOTS, None)
+    if cache is not None and hasattr(session.config, "workeroutput"):     # an xdist worker: tell the controller
+        session.config.workeroutput["crh2_snapshots"] = cache.figures()
+
+
+@pytest.hookimpl(optionalhook=True)          # an xdist hook: unknown when xdist is not loaded
+def pytest_testnodedown(node, error) -> None:
+    figures = getattr(node, "workeroutput", {}).get("crh2_snapshots")
+    cache = node.config.stash.get(_SNAPSHOTS, None)
+    if figures and cache is not None:
+        cache.add_figures(figures)
+
+
+def pytest_terminal_summary(terminalreporter, config: pytest.Config) -> None:
+    cache = config.stash.get(_SNAPSHOTS, None)
+    if cache is None or config.getoption("--no-snapshots") or hasattr(config, "workeroutput"):
+        return
+    for note in dict.fromkeys(cache.notes):
+        terminalreporter.write_line(note, yellow=True)
+    if cache.restored or cache.stored:
+        terminalreporter.write_line(cache.summary())
 
 
 def _profiles_of(item: pytest.Item) -> list[str]:
@@ -107,7 +137,11 @@ def pytest_bdd_after_step(request, feature, scenario, step, step_func, step_func
 @pytest.fixture
 def sut(sut_class: type[TrainDriver], request: pytest.FixtureRequest):
     declared = [p for p in _profiles_of(request.node) if p in sut_class.PROFILES]
-    driver = sut_class.open(declared[0] if declared else None)
+    profile = declared[0] if declared else None
+    if request.config.getoption("--no-snapshots"):
+        driver = sut_class.open(profile)
+    else:
+        driver = SnapshotDriver(sut_class, profile, request.config.stash[_SNAPSHOTS])
     yield driver
     outcome = [getattr(request.node, f"_crh2_{phase}", None) for phase in ("setup", "call")]
     failed = any(r is not None and r.failed for r in outcome)

@@ -88,6 +88,17 @@ class TrainDriver(abc.ABC):
         if not self._powered:
             raise NotPoweredUp("the train is not powered up yet (a Given step must power it up first)")
 
+    # -- snapshots (sut/snapshot.py) -----------------------------------------------------------
+    def snapshot(self) -> bytes:
+        """This train's whole state, from which `from_snapshot` makes an independent train in this
+        process: the same state, none of the same objects. A backend whose state is more than its own
+        objects (a rig, a remote train) raises NotSupported, and its scenarios simply simulate."""
+        raise NotSupported(f"{self.backend_name} cannot snapshot its state")
+
+    @classmethod
+    def from_snapshot(cls, data: bytes) -> "TrainDriver":
+        raise NotSupported(f"{cls.backend_name} cannot restore a snapshot")
+
     # -- virtual time --------------------------------------------------------------------------
     @property
     @abc.abstractmethod

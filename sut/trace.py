@@ -10,12 +10,12 @@ import csv
 import fnmatch
 import io
 import json
-from dataclasses import dataclass
-from typing import Any, Callable, Iterable, Iterator, Mapping
+from typing import Any, Callable, Iterable, Iterator, Mapping, NamedTuple
 
 
-@dataclass(frozen=True, slots=True)
-class TraceEvent:
+class TraceEvent(NamedTuple):
+    # A tuple, not a dataclass: thousands are made per simulated second, and a snapshot (sut/snapshot.py)
+    # pickles every one of them; a frozen slotted dataclass costs 40x a tuple to unpickle.
     t: int                       # microseconds since power-up
     source: str
     kind: str
@@ -25,8 +25,10 @@ class TraceEvent:
     def t_ms(self) -> float:
         return self.t / 1000
 
-    def __getitem__(self, key: str) -> Any:
-        return self.fields[key]
+    def __getitem__(self, key):          # ev["field"] reads a field; ev[0] is still the tuple's item
+        if type(key) is str:
+            return self.fields[key]
+        return tuple.__getitem__(self, key)
 
     def get(self, key: str, default: Any = None) -> Any:
         return self.fields.get(key, default)

@@ -13,6 +13,7 @@ from __future__ import annotations
 from typing import Any, ClassVar
 
 from sut.driver import TrainDriver
+from sut.snapshot import PickledState
 from sut.errors import OutOfRange, SutError, UnknownName
 from sut.reference import bulk
 from sut.reference.boards import Board, PowerSupply
@@ -27,7 +28,7 @@ from sut.trace import Trace
 FRAME_KINDS = {name: code for code, name in KIND_NAMES.items()}
 
 
-class ReferenceTrain(TrainDriver):
+class ReferenceTrain(PickledState, TrainDriver):
     backend_name = "reference"
     PROFILES = ("crh2",)
     TIMING: ClassVar[dict[str, Any]] = {}

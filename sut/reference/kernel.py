@@ -146,9 +146,10 @@ class Cyclic:
     train's steady period (bulk.py)."""
 
     period: int
-    tick: Callable[[], None]
+    tick: Callable[..., None]
     next_at: int = 0
     timer: Timer | None = None
+    args: tuple = ()                 # for tick: a bound method and its arguments pickle, a lambda does not
 
 
 class Kernel:
@@ -187,11 +188,11 @@ class Kernel:
     def signal(self) -> Signal:
         return Signal(self)
 
-    def every(self, period: int, tick: Callable[[], None], phase: int = 0) -> Cyclic:
-        """Run `tick` every `period` us starting at now + phase."""
+    def every(self, period: int, tick: Callable[..., None], phase: int = 0, args: tuple = ()) -> Cyclic:
+        """Run `tick(*args)` every `period` us starting at now + phase."""
         if period <= 0:
             raise SimulationError(f"period must be positive, got {period} us")
-        cyc = Cyclic(period, tick, self.now + phase)
+        cyc = Cyclic(period, tick, self.now + phase, args=args)
         self._cyclics.append(cyc)
         cyc.timer = self.call_at(cyc.next_at, self._cyclic_tick, cyc)
         return cyc
@@ -209,7 +210,7 @@ class Kernel:
     def _cyclic_tick(self, cyc: Cyclic) -> None:
         cyc.next_at += cyc.period
         cyc.timer = self.call_at(cyc.next_at, self._cyclic_tick, cyc)
-        cyc.tick()
+        cyc.tick(*cyc.args)
 
     # -- running --------------------------------------------------------------------------------
     def peek(self) -> int | None:

@@ -27,6 +27,7 @@ from __future__ import annotations
 from typing import Any, ClassVar
 
 from sut.driver import TrainDriver
+from sut.snapshot import PickledState
 from sut.errors import OutOfRange, SutError, UnknownName
 from sut.reference.atp.config import POSTPONE, AtpConfig
 from sut.reference.atp.onboard import CARRIER_SETS, OnboardAtp
@@ -43,7 +44,7 @@ BOARDS = ("CFSK", "MTORE")
 SUPPLIES = ("VDX", "train 110V")
 
 
-class ReferenceAtp(TrainDriver):
+class ReferenceAtp(PickledState, TrainDriver):
     backend_name = "reference"
     PROFILES = ("atp",)
     VDX: ClassVar[dict[str, Any]] = {}

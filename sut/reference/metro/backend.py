@@ -16,6 +16,7 @@ from __future__ import annotations
 from typing import Any, ClassVar
 
 from sut.driver import TrainDriver
+from sut.snapshot import PickledState
 from sut.errors import OutOfRange, UnknownName
 from sut.reference.metro.bus import LINES
 from sut.reference.metro.config import MetroConfig
@@ -27,7 +28,7 @@ BUSES = ("WTB", "unit1.MVB", "unit2.MVB")
 INPUT_NAMES = ("speed", "emergency operation")
 
 
-class ReferenceMetro(TrainDriver):
+class ReferenceMetro(PickledState, TrainDriver):
     backend_name = "reference"
     PROFILES = ("metro-tcn",)
     TIMING: ClassVar[dict[str, Any]] = {}

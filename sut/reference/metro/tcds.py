@@ -126,7 +126,7 @@ class MetroTrain:
         t = self.cfg.timing
         self.started = True
         for unit in self.segments:
-            self.kernel.every(t.mvb_basic_period_us, lambda u=unit: self._mvb_period(u))
+            self.kernel.every(t.mvb_basic_period_us, self._mvb_period, args=(unit,))
         self.kernel.every(t.wtb_cycle_us, self._wtb_cycle)
         self.kernel.every(t.mvb_basic_period_us, self._watch_masters, phase=t.mvb_basic_period_us // 2)
         self.kernel.every(t.speed_tick_us, self._speed_tick)

@@ -1,0 +1,166 @@
+"""Powered-up snapshots (sut/snapshot.py) are invisible: the same verdicts and byte-identical traces with
+snapshots on and off, for every profile; a scenario never sees another's state; the key holds everything
+that makes a state (backend class and its parameters, profile, every call); a backend that cannot
+snapshot simulates, saying why once."""
+from __future__ import annotations
+
+import re
+import subprocess
+import sys
+from pathlib import Path
+
+import pytest
+
+from sut.errors import NotSupported, OutOfRange
+from sut.reference.backend import ReferenceTrain
+from sut.reference.profiles import Reference
+from sut.snapshot import SnapshotCache, SnapshotDriver
+from tests.helpers import traces, verdicts
+from tests.test_faulty_variants import ROOT
+
+# Per profile, items whose scenarios share a Background (and features that share one with each other), so
+# that states are stored and restored many times over: crh2 (routine class, English and zh-CN, and a
+# coupled set), metro-tcn, atp (the rig and the ATP fitted to a CRH2 set).
+SAMPLES = {
+    "crh2": "R-CTL-01,R-CTL-02,R-CTL-03,R-DIA-01,R-DIA-02,F-NET-08,F-ILK-02",
+    "metro-tcn": "F-NET-22,F-CTL-16,F-NET-25,F-REC-04",
+    "atp": "F-ATP-04,F-ATP-07,F-ATP-11,F-ATP-13",
+}
+
+
+def _run(items: str, trace_dir: Path, *args: str) -> subprocess.CompletedProcess:
+    cmd = [sys.executable, "-m", "pytest", "features", "-q", "-rA", "-p", "no:cacheprovider", "-p", "no:xdist",
+           f"--item={items}", f"--trace-dir={trace_dir}", *args]
+    return subprocess.run(cmd, cwd=ROOT, capture_output=True, text=True, timeout=900)
+
+
+@pytest.mark.parametrize("profile", sorted(SAMPLES))
+def test_snapshots_on_and_off_give_identical_verdicts_and_traces(profile: str, tmp_path: Path) -> None:
+    on = _run(SAMPLES[profile], tmp_path / "on")
+    off = _run(SAMPLES[profile], tmp_path / "off", "--no-snapshots")
+    assert on.returncode == 0, on.stdout[-3000:] + on.stderr[-2000:]
+    assert off.returncode == 0, off.stdout[-3000:] + off.stderr[-2000:]
+    restored = re.search(r"^snapshots: (\d+) restored", on.stdout, re.M)
+    assert restored and int(restored.group(1)) >= 3, f"snapshots were not used: {on.stdout[-1500:]}"
+    assert "snapshots:" not in off.stdout
+    assert verdicts(on.stdout) == verdicts(off.stdout) and len(verdicts(on.stdout)) >= 8
+    expected = traces(tmp_path / "off")
+    found = traces(tmp_path / "on")
+    differ = [name for name in expected if found.get(name) != expected[name]]
+    assert not differ and found.keys() == expected.keys(), f"traces differ: {differ[:5]}"
+    assert sum(map(len, expected.values())) > 100_000, "the traces compared are not empty"
+
+
+# -- in process, on the real reference --------------------------------------------------------------------
+def _background(driver) -> int:
+    driver.configure(sets=1, cars_per_set=8)
+    driver.power_on()
+    driver.advance_ms(1000)
+    t = driver.now_us
+    driver.insert_key(1)
+    driver.set_direction(1, "forward")
+    return t
+
+
+def _scenario(cache: SnapshotCache, cls=Reference, notch: int = 5) -> SnapshotDriver:
+    driver = SnapshotDriver(cls, "crh2", cache)
+    _background(driver)
+    driver.set_traction(1, notch)
+    driver.advance_ms(100)
+    assert "desk.traction" in driver.trace.to_csv()       # the whole trace: needs the train itself
+    return driver
+
+
+# Scenarios branch after the Background (notch 1, 2, 3, ...): the first branch stores the Background's end,
+# every later scenario restores it.
+def test_a_restored_train_is_the_train_simulated_from_power_up() -> None:
+    cache = SnapshotCache()
+    runs = {notch: _scenario(cache, notch=notch) for notch in (1, 2, 3, 4, 5)}
+    assert cache.stored >= 1 and cache.restored >= 3 and cache.deferred >= 15
+    for notch, run in runs.items():
+        plain = Reference.open("crh2")
+        _background(plain)
+        plain.set_traction(1, notch)
+        plain.advance_ms(100)
+        assert run.trace.to_csv() == plain.trace.to_csv()
+        assert run.now_us == plain.now_us and run.output("car3.CI gates") == plain.output("car3.CI gates")
+
+
+def test_a_repeated_scenario_is_answered_without_the_train() -> None:
+    cache = SnapshotCache()
+    _scenario(cache)
+    again = SnapshotDriver(Reference, "crh2", cache)
+    assert _background(again) == 1_000_000
+    assert again._driver is None and cache.answered == 1 and cache.deferred == 5   # nothing simulated yet
+    assert again.trace.first(kind="power.on") is not None and again._driver is not None
+
+
+def test_a_scenario_never_sees_another_scenarios_state() -> None:
+    cache = SnapshotCache()
+    for notch in (1, 2):
+        _scenario(cache, notch=notch)
+    spoiled = _scenario(cache, notch=3)
+    spoiled.fail("car1.CCU.sys1.TXC")
+    spoiled.advance_ms(200)
+    clean = _scenario(cache, notch=4)
+    assert cache.restored >= 2
+    assert not clean.trace.select(kind="fault.board")
+    assert spoiled.trace.select(kind="fault.board")
+    assert clean.real_driver is not spoiled.real_driver
+
+
+def test_the_key_holds_the_backend_class_and_every_argument() -> None:
+    class SlowTakeover(ReferenceTrain):
+        TIMING = {"takeover_us": 100_000}
+
+    cache = SnapshotCache()
+    for notch in (1, 2, 3):
+        _scenario(cache, notch=notch)
+    restored = cache.restored
+    other_class = _scenario(cache, cls=SlowTakeover)
+    assert cache.restored == restored and cache.deferred     # the variant shares nothing
+    assert "takeover_us" in str(other_class.describe())
+    other_notch = _scenario(cache, notch=6)
+    assert [ev["notch"] for ev in other_notch.trace.select(kind="desk.traction")] == [6]
+
+
+def test_a_bad_call_fails_in_its_own_step_and_ends_the_journal() -> None:
+    cache = SnapshotCache()
+    for notch in (1, 2, 3):
+        _scenario(cache, notch=notch)
+    driver = SnapshotDriver(Reference, "crh2", cache)
+    _background(driver)
+    with pytest.raises(OutOfRange, match="traction notch 99"):
+        driver.set_traction(1, 99)
+    driver.advance_ms(10)                          # goes on, on its own driver
+    assert driver.now_us == 1_010_000
+
+
+class Unpicklable(ReferenceTrain):
+    """A custom backend with a part that cannot be copied."""
+
+    def __init__(self) -> None:
+        super().__init__()
+        self.probe = lambda: None
+
+
+def test_a_backend_that_cannot_snapshot_simulates_and_says_why_once() -> None:
+    cache = SnapshotCache()
+    runs = [_scenario(cache, cls=Unpicklable, notch=notch) for notch in (1, 2, 3)]
+    assert cache.stored == 0 and cache.restored == 0
+    assert len(cache.notes) == 1 and "Unpicklable" in cache.notes[0] and "simulate" in cache.notes[0]
+    assert all(run.now_us == 1_100_000 for run in runs)
+
+
+class Rig(ReferenceTrain):
+    """Stands for a rig: its state is not its own objects, so it declares no snapshots."""
+
+    def snapshot(self) -> bytes:
+        raise NotSupported("a rig cannot copy its hardware")
+
+
+def test_a_backend_without_snapshots_simply_simulates() -> None:
+    cache = SnapshotCache()
+    runs = [_scenario(cache, cls=Rig, notch=notch) for notch in (1, 2, 3)]
+    assert cache.stored == 0 and cache.restored == 0 and cache.notes == []
+    assert all(run.now_us == 1_100_000 for run in runs)
