@@ -15,10 +15,10 @@ from __future__ import annotations
 from pathlib import Path
 
 import pytest
-from pytest_bdd.scenario import find_fixturedefs_for_step, iterparentnodeids, scenario_wrapper_template_registry
-from pytest_bdd.utils import registry_get_safe
+from pytest_bdd.scenario import iterparentnodeids
 
 from . import tags as tagvocab
+from . import step_index
 from .registry import Registry, RegistryError, load_registry
 from .stepdefs import StepDef, context_of, step_problem
 
@@ -51,6 +51,7 @@ def pytest_configure(config: pytest.Config) -> None:
     # Registered here too, so fixture trees without our pyproject pass --strict-markers.
     for line in MARKERS:
         config.addinivalue_line("markers", line)
+    step_index.install()       # pytest-bdd's per-step scan of every fixture, done once per module instead
 
 
 def pytest_sessionstart(session: pytest.Session) -> None:
@@ -93,10 +94,6 @@ def registry(config: pytest.Config) -> Registry | None:
     return config.stash[_REGISTRY]
 
 
-def _template(item: pytest.Item):
-    return registry_get_safe(scenario_wrapper_template_registry, getattr(item, "obj", None))
-
-
 def _values(item: pytest.Item, mark: str) -> list[str]:
     return [str(m.args[0]) for m in item.iter_markers(mark) if m.args]
 
@@ -122,7 +119,7 @@ def _step_problems(collector: pytest.Module, items: list[pytest.Function]) -> li
     verdicts: dict[tuple[str, str], str | None] = {}  # every item of a module sees the same step definitions
     problems: dict[str, None] = {}
     for item in items:
-        template = _template(item)
+        template = step_index.template_of(item)
         if template is None:
             continue
         example = getattr(item, "callspec", None) and item.callspec.params.get("_pytest_bdd_example", {})
@@ -143,7 +140,7 @@ def _step_problems(collector: pytest.Module, items: list[pytest.Function]) -> li
 def _visible(step, fixturemanager, item) -> list[StepDef]:
     """Matching definitions at the closest scope: a closer one overriding a farther one is pytest-bdd's rule
     and fine; two at the same scope is the silent last-one-wins we refuse."""
-    fixturedefs = list(find_fixturedefs_for_step(step, fixturemanager, item))
+    fixturedefs = step_index.index_of(fixturemanager).find(step, item)
     if not fixturedefs:
         return []
     depth = max(len(list(iterparentnodeids(fd.baseid))) for fd in fixturedefs)
@@ -167,7 +164,7 @@ def pytest_runtest_setup(item: pytest.Item):
 
 
 def _open_allure_result(item: pytest.Item) -> None:
-    template = _template(item)
+    template = step_index.template_of(item)
     listener = next(
         (p for p in item.config.pluginmanager.get_plugins() if type(p).__name__ == "PytestBDDListener"), None
     )
@@ -254,7 +251,7 @@ def _wanted(config: pytest.Config, option: str) -> list[str]:
 def pytest_collection_modifyitems(session: pytest.Session, config: pytest.Config, items: list[pytest.Item]) -> None:
     reg = registry(config)
     for item in items:
-        if _template(item) is not None:
+        if step_index.template_of(item) is not None:
             _decorate(item, reg)
 
     want_items, want_reqs = _wanted(config, "item"), _wanted(config, "req")

@@ -1,0 +1,27 @@
+"""Loaded by tests/test_step_index.py into a collect-only run of the features: every step of every scenario
+looked up both ways, pytest-bdd's scan and the index (outline/step_index.py); prints what it found."""
+from __future__ import annotations
+
+import pytest
+
+from outline import step_index
+
+
+@pytest.hookimpl(trylast=True)
+def pytest_collection_finish(session: pytest.Session) -> None:
+    fixturemanager = session._fixturemanager
+    index = step_index.index_of(fixturemanager)
+    checked, differ = 0, []
+    for item in session.items:
+        template = step_index.template_of(item)
+        if template is None:
+            continue
+        example = getattr(item, "callspec", None) and item.callspec.params.get("_pytest_bdd_example", {})
+        for step in template.render(example or {}).steps:
+            scanned = list(step_index.SCAN(step, fixturemanager, item))
+            if scanned != index.find(step, item):
+                differ.append(f"{item.nodeid}: {step.type} {step.name}")
+            checked += 1
+    for line in differ:
+        print(f"STEP INDEX DIFFERS {line}")
+    print(f"STEP INDEX CHECKED {checked}")
