@@ -22,6 +22,8 @@ SUT ?=
 # Scenarios are independent simulations: spread them over every core (JOBS=1 for a single process).
 JOBS ?= auto
 XDIST := $(if $(filter 1,$(JOBS)),-p no:xdist,-n $(JOBS))
+# The project's own tests: tests sharing one expensive run (the faulty variants) stay on one worker.
+XDIST_TESTS := $(if $(filter 1,$(JOBS)),-p no:xdist,-n $(JOBS) --dist loadgroup)
 SUT_ARG := $(if $(SUT),--sut $(SUT))
 
 .PHONY: help report test check trace clean distclean
@@ -43,7 +45,7 @@ report: $(VENV_STAMP) $(NODE_STAMP) ## run every feature, build reports/html/ind
 	exit $$status
 
 test: $(VENV_STAMP) $(NODE_STAMP) $(CHROMIUM) ## the project's own tests, then the whole conformance run; fails if either fails
-	@$(PY) -m pytest tests $(XDIST); t=$$?; \
+	@$(PY) -m pytest tests $(XDIST_TESTS); t=$$?; \
 	$(PY) -m pytest features $(XDIST) $(SUT_ARG) $(PYTEST_ARGS); f=$$?; \
 	echo "make test: tests exit $$t, conformance run exit $$f"; \
 	[ $$t -eq 0 ] && [ $$f -eq 0 ]

@@ -67,6 +67,11 @@ def template_of(item: Any) -> Any:
     return registry_get_safe(_SCENARIO.scenario_wrapper_template_registry, getattr(item, "obj", None))
 
 
+def is_scenario(function: Any) -> bool:
+    """Whether a test function is a pytest-bdd scenario."""
+    return registry_get_safe(_SCENARIO.scenario_wrapper_template_registry, function) is not None
+
+
 def index_of(fixturemanager: Any) -> StepIndex:
     index = getattr(fixturemanager, "_crh2_step_index", None)
     if index is None:

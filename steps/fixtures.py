@@ -5,6 +5,7 @@ and the SUT is shut down; a backend that raised inside its simulation fails the 
 """
 from __future__ import annotations
 
+import gc
 import re
 from pathlib import Path
 
@@ -13,15 +14,17 @@ import pytest
 from sut.backends import BACKENDS, ENV_VAR, resolve
 from sut.driver import TrainDriver
 from sut.snapshot import SnapshotCache, SnapshotDriver
+from outline import step_index
 from steps import report
 from steps.diagram import Bound
 
 
 def pytest_addoption(parser: pytest.Parser) -> None:
     group = parser.getgroup("crh2", "CRH2 conformance suite")
-    group.addoption("--sut", default=None, metavar="NAME",
-                    help=f"SUT backend: one of {', '.join(BACKENDS)} or package.module:Class "
-                         f"(default: ${ENV_VAR} or 'reference')")
+    group.addoption("--sut", action="append", default=[], metavar="NAME",
+                    help=f"SUT backend: one of {', '.join(BACKENDS)}, package.module:Class or tcp://host:port "
+                         f"(default: ${ENV_VAR} or 'reference'); given several times, every scenario runs "
+                         f"against each, its test id ending in [<backend>]")
     group.addoption("--profile", action="append", default=[], metavar="NAME[,NAME]",
                     help="run only scenarios of these train profiles (@profile:<name>); default: every "
                          "profile the SUT declares. Scenarios of a profile the SUT does not declare are "
@@ -45,17 +48,30 @@ def pytest_runtest_makereport(item: pytest.Item, call: pytest.CallInfo):
     return report
 
 
-_SUT_CLASS = pytest.StashKey[type]()
+_SUTS = pytest.StashKey[dict]()           # test id suffix -> backend class, in --sut order
 _SNAPSHOTS = pytest.StashKey[SnapshotCache]()
 
 
 def pytest_configure(config: pytest.Config) -> None:
     # Resolve the backend before collection, so a wrong --sut is a usage error (exit 4), not N failures.
-    try:
-        config.stash[_SUT_CLASS] = resolve(config.getoption("--sut"))
-    except Exception as exc:
-        raise pytest.UsageError(f"--sut: {exc}") from None
+    suts: dict[str, type[TrainDriver]] = {}
+    for spec in config.getoption("--sut") or [None]:
+        try:
+            suts.setdefault(_sut_id(spec), resolve(spec))
+        except Exception as exc:
+            raise pytest.UsageError(f"--sut: {exc}") from None
+    config.stash[_SUTS] = suts
     config.stash[_SNAPSHOTS] = SnapshotCache()
+
+
+@pytest.hookimpl(trylast=True)
+def pytest_collection_finish(session: pytest.Session) -> None:
+    # What collection built (features, steps, items) lives to the end of the run: moved out of the cyclic
+    # collector's sight, and the youngest generation collected less often, the simulation's many short-lived
+    # objects cost the collector 5-8 % less (bench/suite_bench.py).
+    gc.collect()
+    gc.freeze()
+    gc.set_threshold(20_000, 20, 20)
 
 
 def pytest_sessionfinish(session: pytest.Session) -> None:
@@ -82,20 +98,45 @@ def pytest_terminal_summary(terminalreporter, config: pytest.Config) -> None:
         terminalreporter.write_line(cache.summary())
 
 
+def _sut_id(spec: str | None) -> str:
+    """How a backend shows in test ids: its class name, its registry name or its address."""
+    spec = spec or "reference"
+    return re.sub(r"[^\w.-]+", "-", spec.rsplit(":", 1)[-1] if ":" in spec and "://" not in spec else spec)
+
+
+def pytest_generate_tests(metafunc: pytest.Metafunc) -> None:
+    # Several --sut: each scenario once per backend (a rig beside the reference, or the suite's own variants).
+    suts = metafunc.config.stash[_SUTS]
+    if len(suts) > 1 and step_index.is_scenario(metafunc.function):
+        if "sut_class" not in metafunc.fixturenames:
+            metafunc.fixturenames.append("sut_class")     # steps ask for `sut` at run time, not in the signature
+        metafunc.parametrize("sut_class", list(suts.values()), ids=list(suts), scope="function")
+
+
 def _profiles_of(item: pytest.Item) -> list[str]:
     return [str(arg) for mark in item.iter_markers("profile") for arg in mark.args]
 
 
+def _sut_of(item: pytest.Item, config: pytest.Config) -> type[TrainDriver]:
+    callspec = getattr(item, "callspec", None)
+    if callspec is not None and "sut_class" in callspec.params:
+        return callspec.params["sut_class"]
+    return next(iter(config.stash[_SUTS].values()))
+
+
 def pytest_collection_modifyitems(config: pytest.Config, items: list[pytest.Item]) -> None:
-    sut_class = config.stash[_SUT_CLASS]
-    declared = tuple(sut_class.PROFILES)
+    suts = config.stash[_SUTS]
+    declared = tuple(dict.fromkeys(p for cls in suts.values() for p in cls.PROFILES))
     wanted = [p.strip() for value in config.getoption("--profile") for p in value.split(",") if p.strip()]
     unknown = [p for p in wanted if p not in declared]
     if unknown:
-        raise pytest.UsageError(f"--profile {', '.join(unknown)}: the SUT {sut_class.__qualname__} declares "
+        names = " and ".join(cls.__qualname__ for cls in suts.values())
+        raise pytest.UsageError(f"--profile {', '.join(unknown)}: the SUT {names} declares "
                                 f"{', '.join(declared) or 'no profile'}")
     keep, drop = [], []
     for item in items:
+        sut_class = _sut_of(item, config)
+        declared = tuple(sut_class.PROFILES)
         profiles = _profiles_of(item)
         if not profiles:
             keep.append(item)
@@ -113,9 +154,10 @@ def pytest_collection_modifyitems(config: pytest.Config, items: list[pytest.Item
         items[:] = keep
 
 
-@pytest.fixture(scope="session")
+@pytest.fixture
 def sut_class(request: pytest.FixtureRequest) -> type[TrainDriver]:
-    return request.config.stash[_SUT_CLASS]
+    """The backend of this scenario (one per scenario and --sut when several are given)."""
+    return getattr(request, "param", None) or next(iter(request.config.stash[_SUTS].values()))
 
 
 _BOUNDS = pytest.StashKey[list]()

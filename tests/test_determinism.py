@@ -23,7 +23,7 @@ SAMPLE = "R-CTL-03,R-DIA-02,F-NET-13,F-NET-03,F-ILK-05,H-PWR-02,F-ATP-04,F-ATP-1
 def _run(trace_dir: Path, hash_seed: str, *args: str) -> list[tuple[str, str]]:
     cmd = [sys.executable, "-m", "pytest", "features", "-q", "-rA", "-p", "no:cacheprovider",
            f"--item={SAMPLE}", f"--trace-dir={trace_dir}", *args]
-    env = dict(os.environ, PYTHONHASHSEED=hash_seed, PYTHONDONTWRITEBYTECODE="1")
+    env = dict(os.environ, PYTHONHASHSEED=hash_seed)
     result = subprocess.run(cmd, cwd=ROOT, capture_output=True, text=True, env=env, timeout=900)
     assert result.returncode == 0, result.stdout[-3000:] + result.stderr[-2000:]
     return verdicts(result.stdout)

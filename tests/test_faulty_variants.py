@@ -1,17 +1,22 @@
 """The features must reject a train that breaks one requirement, and accept one that differs only in band.
 
 Each variant runs the real feature files through pytest in a subprocess, exactly as a user would with
-`--sut tests.variants:<Variant>`; a run that fails proves the feature specifies that requirement.
+`--sut tests.variants:<Variant>`; a run that fails proves the feature specifies that requirement. The faulty
+variants share one run (`--sut` once per variant, tests/variant_plan.py keeps each on its own item): one
+collection instead of one per variant.
 """
 from __future__ import annotations
 
+import json
 import os
 import subprocess
 import sys
+from collections import defaultdict
 from pathlib import Path
 
 import pytest
 
+from tests.helpers import verdicts
 from tests.variants import FAULTY, IN_BAND
 
 ROOT = Path(__file__).resolve().parents[1]
@@ -19,23 +24,48 @@ ROOT = Path(__file__).resolve().parents[1]
 
 def run_features(variant: type, *args: str, sut: str | None = None) -> subprocess.CompletedProcess:
     cmd = [sys.executable, "-m", "pytest", "features", "-q", "-p", "no:cacheprovider", "-p", "no:xdist",
-           f"--sut={sut or f'tests.variants:{variant.__name__}'}", "-o", "addopts=--strict-markers", *args]
-    env = dict(os.environ, PYTHONDONTWRITEBYTECODE="1")
-    return subprocess.run(cmd, cwd=ROOT, capture_output=True, text=True, env=env, timeout=1500)
+           f"--sut={sut or f'tests.variants:{variant.__name__}'}", *args]
+    return subprocess.run(cmd, cwd=ROOT, capture_output=True, text=True, timeout=1500)
+
+
+@pytest.fixture(scope="session")
+def faulty_verdicts(tmp_path_factory: pytest.TempPathFactory) -> dict[str, list[tuple[str, str]]]:
+    """(test id, outcome) of every scenario run against each faulty variant, by variant class name."""
+    plan: dict[str, list[str]] = defaultdict(list)
+    for variant, _, item in FAULTY:
+        plan[variant.__name__].append(item)
+    plan_file = tmp_path_factory.mktemp("plan") / "plan.json"
+    plan_file.write_text(json.dumps(plan), encoding="utf-8")
+    suts = [f"--sut=tests.variants:{name}" for name in plan]
+    result = subprocess.run(
+        [sys.executable, "-m", "pytest", "features", "-q", "-rA", "-p", "no:cacheprovider", "-n", "2",
+         "-p", "tests.variant_plan", *suts],
+        cwd=ROOT, capture_output=True, text=True, timeout=1500, env=dict(os.environ, CRH2_VARIANT_PLAN=str(plan_file)))
+    assert result.returncode in (0, 1), result.stdout[-3000:] + result.stderr[-3000:]
+    by_variant: dict[str, list[tuple[str, str]]] = defaultdict(list)
+    for test_id, outcome in verdicts(result.stdout):
+        # [<variant>] or [<variant>-<example>] (verdicts() cuts an id at its first space: no "]" then)
+        params = test_id.rpartition("[")[2].rstrip("]") if "[" in test_id else ""
+        names = [name for name in params.split("-") if name in plan]
+        if names:
+            by_variant[names[0]].append((test_id, outcome))
+    return by_variant
 
 
 def test_at_least_twelve_requirements_have_a_faulty_variant() -> None:
     assert len({req for _, req, _ in FAULTY}) >= 12
 
 
+@pytest.mark.xdist_group("faulty-variants")         # one worker runs the shared run (make test: --dist loadgroup)
 @pytest.mark.parametrize(("variant", "requirement", "item"), FAULTY,
                          ids=[f"{v.__name__}-{r}" for v, r, _ in FAULTY])
-def test_features_reject_faulty_variant(variant: type, requirement: str, item: str) -> None:
-    result = run_features(variant, f"--item={item}")
-    summary = result.stdout.strip().splitlines()[-1] if result.stdout.strip() else result.stderr
-    assert result.returncode == 1, (f"{variant.__name__} ({requirement}) was not rejected by {item}: "
-                                    f"exit {result.returncode}, {summary}\n{result.stderr[-2000:]}")
-    assert " failed" in summary, summary
+def test_features_reject_faulty_variant(faulty_verdicts: dict, variant: type, requirement: str, item: str) -> None:
+    ran = faulty_verdicts.get(variant.__name__, [])
+    item_tag = item.lower().replace("-", "")
+    mine = [(test_id, outcome) for test_id, outcome in ran if f"::test_{item_tag}" in test_id]
+    assert mine, f"no scenario of {item} ran against {variant.__name__}: {ran[:5]}"
+    assert any(outcome == "FAILED" for _, outcome in mine), \
+        f"{variant.__name__} ({requirement}) was not rejected by {item}: {mine}"
 
 
 @pytest.mark.parametrize("variant", IN_BAND, ids=[v.__name__ for v in IN_BAND])

@@ -32,7 +32,7 @@ _COUNTED = ("passed", "failed", "skipped", "xfailed", "xpassed")
 
 
 def _run(cmd: list[str], what: str, timeout: float = 300) -> subprocess.CompletedProcess:
-    env = dict(os.environ, PYTHONDONTWRITEBYTECODE="1")
+    env = dict(os.environ)
     result = subprocess.run(cmd, cwd=ROOT, capture_output=True, text=True, env=env, timeout=timeout)
     assert result.returncode == 0, (f"{what} failed (exit {result.returncode}): {' '.join(cmd)}\n"
                                     f"{result.stdout[-2000:]}\n{result.stderr[-2000:]}")

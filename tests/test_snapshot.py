@@ -51,6 +51,17 @@ def test_snapshots_on_and_off_give_identical_verdicts_and_traces(profile: str, t
     assert sum(map(len, expected.values())) > 100_000, "the traces compared are not empty"
 
 
+def test_the_journal_knows_every_call_of_the_driver_interface() -> None:
+    from sut.driver import TrainDriver
+    from sut.snapshot import INPUTS, READS
+
+    public = {name for name in dir(TrainDriver) if not name.startswith("_")}
+    own = {"now_us", "powered", "trace", "shutdown"}                   # SnapshotDriver's own properties
+    local = {"open", "snapshot", "from_snapshot", "check_us", "check_direction", "PROFILES", "backend_name"}
+    assert public - INPUTS - READS - own - local == set(), "a driver call the journal would not know"
+    assert not INPUTS & READS
+
+
 # -- in process, on the real reference --------------------------------------------------------------------
 def _background(driver) -> int:
     driver.configure(sets=1, cars_per_set=8)
