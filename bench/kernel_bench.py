@@ -316,7 +316,7 @@ class RefResult:
 
 
 def _powered_train():
-    from sut.reference.backend import ReferenceTrain
+    from sut.reference.crh2.backend import ReferenceTrain
 
     driver = ReferenceTrain()
     driver.insert_key(1)

@@ -96,7 +96,7 @@ vdx_volts = listing
 
 
 # -- steps/vehicle.py, monitor.py, network.py, train.py (core library) ---------------------------------------
-# Vehicle outputs and inputs (sut/reference/vehicle.py catalogue): one Chinese word names one English value,
+# Vehicle outputs and inputs (sut/reference/crh2/vehicle.py catalogue): one Chinese word names one English value,
 # so "断开" is always open (VCB, contactor) and a light or an air conditioner is 开启/关断, never 打开/关闭.
 CORE_STATES = {
     "得电": "energised", "励磁": "energised", "失电": "de-energised", "失磁": "de-energised",

@@ -1,4 +1,4 @@
-"""Bulk advance (sut/reference/bulk.py) must give exactly what frame-by-frame simulation gives.
+"""Bulk advance (sut/reference/crh2/bulk.py) must give exactly what frame-by-frame simulation gives.
 
 The comparison is of every leaf of the train's state (bulk.snapshot: clocks, counters, queues, timers,
 frames in flight), plus what the driver shows: counters, records, the monitor.
@@ -7,9 +7,9 @@ from __future__ import annotations
 
 import pytest
 
-from sut.reference import bulk
+from sut.reference.crh2 import bulk
 from steps.longrun import skips
-from sut.reference.backend import ReferenceTrain
+from sut.reference.crh2.backend import ReferenceTrain
 
 S = 1_000_000
 MIN = 60 * S

@@ -1,4 +1,4 @@
-"""Wire formats of the reference model (sut/reference/frames.py): check sequences, ARCNET packets, payloads."""
+"""Wire formats of the reference model (sut/reference/crh2/frames.py): check sequences, ARCNET packets, payloads."""
 
 from __future__ import annotations
 
@@ -11,8 +11,8 @@ import pytest
 from hypothesis import HealthCheck, example, given, settings
 from hypothesis import strategies as st
 
-from sut.reference import frames
-from sut.reference.frames import (BROADCAST, COMMAND, EOT, K_BLOCK, K_COMMAND, K_STATUS, K_TOKEN_INIT,
+from sut.reference.crh2 import frames
+from sut.reference.crh2.frames import (BROADCAST, COMMAND, EOT, K_BLOCK, K_COMMAND, K_STATUS, K_TOKEN_INIT,
                                   K_TOKEN_SEND, MAX_DATA, P_COMMAND, P_STATUS, SOH, STATUS, FrameError,
                                   check_ok, crc16_arc, crc16_x25, data_frame, decode_pac, decode_payload,
                                   encode_pac, token_frame, tx_time_us)

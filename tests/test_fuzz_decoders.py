@@ -2,7 +2,7 @@
 and either returns a value or raises its documented error, never another exception.
 
 Decoders and their documented errors:
-- sut/codecs/arcnet.py `decode_pac`, `decode_itt` (re-exported by sut/reference/frames.py), and frames.py
+- sut/codecs/arcnet.py `decode_pac`, `decode_itt` (re-exported by sut/reference/crh2/frames.py), and frames.py
   `decode_payload`, `payload_unchecked`: arcnet.FrameError; frames.py `check_ok`: a bool;
 - sut/codecs/mvb.py `decode_master`, `decode_slave`: MvbFrameError (tests/test_mvb.py already fuzzes them with
   arbitrary and mutated bytes; here only what it does not reach: frames with a correct check sequence but a
@@ -28,8 +28,8 @@ from hypothesis import strategies as st
 from outline.stepdefs import context_of
 from sut.codecs import arcnet, mvb
 from sut.codecs.arcnet import EOT, MAX_DATA, SOH, FrameError, crc16_arc, crc16_x25, decode_itt, decode_pac, encode_pac
-from sut.reference import frames
-from sut.reference.frames import (K_BLOCK, K_COMMAND, K_STATUS, K_TOKEN_INIT, K_TOKEN_SEND, build_payload, check_ok,
+from sut.reference.crh2 import frames
+from sut.reference.crh2.frames import (K_BLOCK, K_COMMAND, K_STATUS, K_TOKEN_INIT, K_TOKEN_SEND, build_payload, check_ok,
                                   decode_payload, payload_unchecked)
 from sut.reference.metro import bus as metro_bus
 from sut.reference.metro.ports import DIRECTIONS, MODES, Command, IoPort, wtb_decode, wtb_encode

@@ -368,7 +368,7 @@ def test_every_rejects_non_positive_periods(k):
 
 # -- the whole model ------------------------------------------------------------------------------
 def _reference_trace_csv(us: int) -> tuple[str, int]:
-    from sut.reference.backend import ReferenceTrain
+    from sut.reference.crh2.backend import ReferenceTrain
 
     driver = ReferenceTrain()
     driver.insert_key(1)

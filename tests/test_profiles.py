@@ -6,7 +6,7 @@ import pytest
 
 from sut.backends import open_backend
 from sut.errors import UnknownName
-from sut.reference.backend import ReferenceTrain
+from sut.reference.crh2.backend import ReferenceTrain
 from sut.reference.metro.backend import ReferenceMetro
 from tests.test_faulty_variants import ROOT, run_features
 
@@ -48,7 +48,7 @@ def test_profile_metro_runs_only_the_metro_scenarios() -> None:
 
 
 def test_a_crh2_only_sut_skips_every_metro_scenario() -> None:
-    result = run_features(ReferenceTrain, "--item=F-NET-22", "-rs", sut="sut.reference.backend:ReferenceTrain")
+    result = run_features(ReferenceTrain, "--item=F-NET-22", "-rs", sut="sut.reference.crh2.backend:ReferenceTrain")
     summary = result.stdout.strip().splitlines()[-1]
     assert result.returncode == 0 and "skipped" in summary and "passed" not in summary, summary
     assert "profile metro-tcn: the SUT ReferenceTrain declares crh2" in result.stdout

@@ -12,7 +12,7 @@ from pathlib import Path
 import pytest
 
 from sut.errors import NotSupported, OutOfRange
-from sut.reference.backend import ReferenceTrain
+from sut.reference.crh2.backend import ReferenceTrain
 from sut.reference.profiles import Reference
 from sut.snapshot import SnapshotCache, SnapshotDriver
 from tests.helpers import traces, verdicts

@@ -7,7 +7,7 @@ subclass that changes parameters: the reference's code is never edited at run ti
 """
 from __future__ import annotations
 
-from sut.reference.backend import ReferenceTrain
+from sut.reference.crh2.backend import ReferenceTrain
 from sut.reference.atp.backend import ReferenceAtp
 from sut.reference.metro.backend import ReferenceMetro
 

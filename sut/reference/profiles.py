@@ -1,14 +1,14 @@
 """`reference`: the embedded reference trains, one backend name for every profile they implement.
 
 Like python-can's `Bus(interface=...)`, opening the backend gives the class of the train asked for:
-`crh2` (sut/reference/backend.py), `metro-tcn` (sut/reference/metro/backend.py) or `atp`
+`crh2` (sut/reference/crh2/backend.py), `metro-tcn` (sut/reference/metro/backend.py) or `atp`
 (sut/reference/atp/backend.py).
 """
 from __future__ import annotations
 
 from sut.driver import TrainDriver
 from sut.errors import UnknownName
-from sut.reference.backend import ReferenceTrain
+from sut.reference.crh2.backend import ReferenceTrain
 from sut.reference.atp.backend import ReferenceAtp
 from sut.reference.metro.backend import ReferenceMetro
 

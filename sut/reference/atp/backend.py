@@ -32,7 +32,7 @@ from sut.errors import OutOfRange, SutError, UnknownName
 from sut.reference.atp.config import POSTPONE, AtpConfig
 from sut.reference.atp.onboard import CARRIER_SETS, OnboardAtp
 from sut.reference.atp.vdx import VdxInterface
-from sut.reference.backend import ReferenceTrain
+from sut.reference.crh2.backend import ReferenceTrain
 from sut.reference.kernel import Kernel
 from sut.trace import Trace, TraceEvent
 

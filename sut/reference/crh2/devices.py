@@ -6,8 +6,8 @@ from typing import TYPE_CHECKING
 from sut.driver import DIRECTIONS
 
 if TYPE_CHECKING:
-    from sut.reference.boards import Board
-    from sut.reference.train import Train
+    from sut.reference.crh2.boards import Board
+    from sut.reference.crh2.context import TrainContext
 
 # DECISIONS.md, "A/B steps": the lower half of the range drives step A, the upper half step B.
 TRACTION_B_FROM = 6
@@ -24,7 +24,7 @@ def to_steps(value: int, what: str) -> str:
 class CommandDevice:
     """Main converter (CI) or brake control unit (BCU): records what it was commanded, and how."""
 
-    def __init__(self, train: "Train", name: str):
+    def __init__(self, train: "TrainContext", name: str):
         self.train = train
         self.name = name
 
@@ -41,7 +41,7 @@ class LoopDevice:
     `polled` devices answer each poll; one-way devices only receive (side destination display) or only
     send (distance detector)."""
 
-    def __init__(self, train: "Train", name: str, cpu3: "Board", loop: str, period_us: int, mode: str):
+    def __init__(self, train: "TrainContext", name: str, cpu3: "Board", loop: str, period_us: int, mode: str):
         assert mode in ("polled", "to-device", "from-device")
         self.train, self.name, self.cpu3 = train, name, cpu3
         self.loop, self.period_us, self.mode = loop, period_us, mode

@@ -8,18 +8,18 @@ from __future__ import annotations
 
 from typing import Any
 
-from sut.reference.boards import PowerSupply
-from sut.reference.ccu import Ccu, CcuSystem
-from sut.reference.config import TrainConfig
-from sut.reference.devices import LoopDevice
-from sut.reference.display import DisplayTable
-from sut.reference.environment import TrainEnvironment
+from sut.reference.crh2.boards import PowerSupply
+from sut.reference.crh2.ccu import Ccu, CcuSystem
+from sut.reference.crh2.config import TrainConfig
+from sut.reference.crh2.devices import LoopDevice
+from sut.reference.crh2.display import DisplayTable
+from sut.reference.crh2.environment import TrainEnvironment
 from sut.reference.kernel import Kernel
-from sut.reference.lcu import Lcu
-from sut.reference.node import RingNode
-from sut.reference.ring import Ring, Span
-from sut.reference.selfdiag import SelfDiagLine
-from sut.reference.vehicle import Vehicle
+from sut.reference.crh2.lcu import Lcu
+from sut.reference.crh2.node import RingNode
+from sut.reference.crh2.ring import Ring, Span
+from sut.reference.crh2.selfdiag import SelfDiagLine
+from sut.reference.crh2.vehicle import Vehicle
 from sut.trace import TraceEvent
 
 

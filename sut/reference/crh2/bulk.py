@@ -31,7 +31,7 @@ from typing import TYPE_CHECKING, Any
 from sut.reference.kernel import Timer
 
 if TYPE_CHECKING:
-    from sut.reference.train import Train
+    from sut.reference.crh2.train import Train
 
 
 class NotSteady(Exception):

@@ -10,12 +10,12 @@ from __future__ import annotations
 
 from typing import TYPE_CHECKING
 
-from sut.reference.boards import Board, PowerSupply
-from sut.reference.devices import CommandDevice, LoopDevice, to_steps
-from sut.reference.node import RingNode
+from sut.reference.crh2.boards import Board, PowerSupply
+from sut.reference.crh2.devices import CommandDevice, LoopDevice, to_steps
+from sut.reference.crh2.node import RingNode
 
 if TYPE_CHECKING:
-    from sut.reference.train import Train
+    from sut.reference.crh2.context import TrainContext
 
 
 class Rxc:
@@ -79,7 +79,7 @@ class Rxc:
 class Lcu(RingNode):
     unit = "LCU"
 
-    def __init__(self, train: "Train", car: int, supply: PowerSupply, rxc_supply: PowerSupply):
+    def __init__(self, train: "TrainContext", car: int, supply: PowerSupply, rxc_supply: PowerSupply):
         super().__init__(train, f"car{car}.LCU", car, supply)
         self.mdm9 = Board(f"{self.name}.MDM9", supply)
         self.rxc = Rxc(self, rxc_supply)

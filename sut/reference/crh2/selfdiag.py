@@ -8,17 +8,17 @@ from __future__ import annotations
 from collections import deque
 from typing import TYPE_CHECKING
 
-from sut.reference.boards import Board, PowerSupply
-from sut.reference.frames import K_COMMAND, STATUS_SIZE, build_payload, crc16_x25
+from sut.reference.crh2.boards import Board, PowerSupply
+from sut.reference.crh2.frames import K_COMMAND, STATUS_SIZE, build_payload, crc16_x25
 
 if TYPE_CHECKING:
-    from sut.reference.train import Train
+    from sut.reference.crh2.context import TrainContext
 
 HDLC_OVERHEAD = 6          # flag, address, control, FCS x2, closing flag
 
 
 class SelfDiagLine:
-    def __init__(self, train: "Train"):
+    def __init__(self, train: "TrainContext"):
         self.train = train
         self.board = Board("selfdiag", PowerSupply("selfdiag.supply"))
         self.busy_until = 0

@@ -9,14 +9,14 @@ from __future__ import annotations
 
 from typing import TYPE_CHECKING, Any
 
-from sut.reference import frames as fr
-from sut.reference.boards import Board, PowerSupply
-from sut.reference.desk import Desk, Sample
-from sut.reference.node import RingNode
+from sut.reference.crh2 import frames as fr
+from sut.reference.crh2.boards import Board, PowerSupply
+from sut.reference.crh2.desk import Desk, Sample
+from sut.reference.crh2.node import RingNode
 
 if TYPE_CHECKING:
     from sut.reference.kernel import Timer
-    from sut.reference.train import Train
+    from sut.reference.crh2.context import TrainContext
 
 LAMPS = ("MCR", "traction", "brake")
 
@@ -57,7 +57,7 @@ class Txc:
 class CcuSystem(RingNode):
     unit = "CCU"
 
-    def __init__(self, train: "Train", ccu: "Ccu", index: int, supply: PowerSupply, txc_supply: PowerSupply):
+    def __init__(self, train: "TrainContext", ccu: "Ccu", index: int, supply: PowerSupply, txc_supply: PowerSupply):
         super().__init__(train, f"car{ccu.car}.CCU.sys{index}", ccu.car, supply)
         self.ccu = ccu
         self.index = index
@@ -117,7 +117,7 @@ class CcuSystem(RingNode):
 
 
 class Ccu:
-    def __init__(self, train: "Train", car: int, supplies: dict[str, PowerSupply]):
+    def __init__(self, train: "TrainContext", car: int, supplies: dict[str, PowerSupply]):
         self.train = train
         self.car = car
         self.desk = Desk(train, car, supplies[f"car{car}.desk"])

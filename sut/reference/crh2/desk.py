@@ -5,11 +5,11 @@ from dataclasses import asdict, dataclass
 from typing import TYPE_CHECKING
 
 from sut.driver import DIRECTIONS
-from sut.reference.boards import PowerSupply
-from sut.reference.config import BRAKE_STEPS
+from sut.reference.crh2.boards import PowerSupply
+from sut.reference.crh2.config import BRAKE_STEPS
 
 if TYPE_CHECKING:
-    from sut.reference.train import Train
+    from sut.reference.crh2.context import TrainContext
 
 # the command frame codes a direction by its place in the driver interface's list
 DIRECTION_CODES = {name: code for code, name in enumerate(DIRECTIONS)}
@@ -31,7 +31,7 @@ class Sample:
 
 
 class Desk:
-    def __init__(self, train: "Train", car: int, supply: PowerSupply):
+    def __init__(self, train: "TrainContext", car: int, supply: PowerSupply):
         self.train = train
         self.car = car
         self.supply = supply          # the desk's digital-input supply as the TXC sees it

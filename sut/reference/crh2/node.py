@@ -14,14 +14,14 @@ from __future__ import annotations
 from collections import deque
 from typing import TYPE_CHECKING, Any
 
-from sut.reference import frames as fr
-from sut.reference.boards import Board, PowerSupply
-from sut.reference.ring import L, OPPOSITE, R
+from sut.reference.crh2 import frames as fr
+from sut.reference.crh2.boards import Board, PowerSupply
+from sut.reference.crh2.ring import L, OPPOSITE, R
 
 if TYPE_CHECKING:
     from sut.reference.kernel import Timer
-    from sut.reference.ring import Link, Span
-    from sut.reference.train import Train
+    from sut.reference.crh2.ring import Link, Span
+    from sut.reference.crh2.context import TrainContext
 
 SEEN_MEMORY = 512
 
@@ -29,7 +29,7 @@ SEEN_MEMORY = 512
 class RingNode:
     unit = "?"
 
-    def __init__(self, train: "Train", name: str, car: int, supply: PowerSupply):
+    def __init__(self, train: "TrainContext", name: str, car: int, supply: PowerSupply):
         self.train = train
         self.kernel = train.kernel
         self.name = name

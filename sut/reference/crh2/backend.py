@@ -15,14 +15,14 @@ from typing import Any, ClassVar
 from sut.driver import TrainDriver
 from sut.snapshot import PickledState
 from sut.errors import OutOfRange, SutError, UnknownName
-from sut.reference import bulk
-from sut.reference.boards import Board, PowerSupply
-from sut.reference.config import BRAKE_STEPS, EMERGENCY, TRACTION_NOTCHES, TrainConfig
-from sut.reference.environment import TRAIN_SUPPLY, WHOLE_TRAIN, TrainEnvironment
-from sut.reference.frames import KIND_NAMES
-from sut.reference.node import RingNode
-from sut.reference.ring import Span
-from sut.reference.train import Train
+from sut.reference.crh2 import bulk
+from sut.reference.crh2.boards import Board, PowerSupply
+from sut.reference.crh2.config import BRAKE_STEPS, EMERGENCY, TRACTION_NOTCHES, TrainConfig
+from sut.reference.crh2.environment import TRAIN_SUPPLY, WHOLE_TRAIN, TrainEnvironment
+from sut.reference.crh2.frames import KIND_NAMES
+from sut.reference.crh2.node import RingNode
+from sut.reference.crh2.ring import Span
+from sut.reference.crh2.train import Train
 from sut.trace import Trace
 
 FRAME_KINDS = {name: code for code, name in KIND_NAMES.items()}

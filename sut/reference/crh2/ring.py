@@ -13,16 +13,35 @@ receives a broadcast once, and with one span cut everyone still receives it (NET
 from __future__ import annotations
 
 import heapq
-from typing import TYPE_CHECKING
+from typing import TYPE_CHECKING, Any, Protocol
 
-from sut.reference.frames import BROADCAST, Frame, tx_time_us
+from sut.reference.crh2.frames import BROADCAST, Frame, tx_time_us
 
 if TYPE_CHECKING:
-    from sut.reference.node import RingNode
-    from sut.reference.train import Train
+    from sut.reference.crh2.context import TrainContext
 
 R, L = "R", "L"     # R: increasing node number, L: decreasing
 OPPOSITE = {R: L, L: R}
+
+
+class RingNode(Protocol):
+    """What the ring needs of a node on it (node.py's RingNode is one; the ring does not import it)."""
+
+    name: str
+    number: int
+    ports: dict[str, "Span"]
+    out: dict[str, "Link"]
+    seen: set[int]
+    frames_discarded: int
+    optics_alive: bool
+
+    def port_ok(self, direction: str) -> bool: ...
+
+    def seen_add(self, uid: int) -> None: ...
+
+    def receive(self, frame: Frame, direction: str, hops: int) -> None: ...
+
+    def emit(self, kind: str, /, at: str | None = None, **fields: Any) -> None: ...
 
 
 class Span:
@@ -54,7 +73,7 @@ class Link:
 
 
 class Ring:
-    def __init__(self, train: "Train", nodes: list["RingNode"], media: list[str]):
+    def __init__(self, train: "TrainContext", nodes: list["RingNode"], media: list[str]):
         self.train = train
         self.kernel = train.kernel
         self.nodes = nodes

@@ -15,9 +15,9 @@ from typing import TYPE_CHECKING, Any
 from sut.errors import OutOfRange, UnknownName
 
 if TYPE_CHECKING:
-    from sut.reference.config import Interlocks
+    from sut.reference.crh2.config import Interlocks
     from sut.reference.kernel import Timer
-    from sut.reference.train import Train
+    from sut.reference.crh2.context import TrainContext
 
 MS = 1000
 TRANSFORMER_STATES = ("normal", "primary overcurrent", "secondary overcurrent", "tertiary overcurrent",
@@ -103,7 +103,7 @@ ORDERS = {
 
 
 class Vehicle:
-    def __init__(self, train: "Train"):
+    def __init__(self, train: "TrainContext"):
         self.train = train
         self.kernel = train.kernel
         self.cfg: Interlocks = train.cfg.interlocks

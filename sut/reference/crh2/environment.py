@@ -11,14 +11,14 @@ from __future__ import annotations
 
 from typing import TYPE_CHECKING
 
-from sut.reference.frames import KIND_NAMES
+from sut.reference.crh2.frames import KIND_NAMES
 
 if TYPE_CHECKING:
-    from sut.reference.boards import PowerSupply
+    from sut.reference.crh2.boards import PowerSupply
     from sut.reference.kernel import Timer
-    from sut.reference.node import RingNode
-    from sut.reference.ring import Span
-    from sut.reference.train import Train
+    from sut.reference.crh2.node import RingNode
+    from sut.reference.crh2.ring import Span
+    from sut.reference.crh2.context import TrainContext
 
 TRAIN_SUPPLY = "train 110V"
 WHOLE_TRAIN = "train"
@@ -48,7 +48,7 @@ class SupplyInput:
 
 
 class TrainEnvironment:
-    def __init__(self, train: "Train"):
+    def __init__(self, train: "TrainContext"):
         self.train = train
         self.kernel = train.kernel
         self.rated = train.cfg.environment

@@ -14,8 +14,8 @@ from typing import TYPE_CHECKING, Any
 from sut.driver import DIRECTIONS
 
 if TYPE_CHECKING:
-    from sut.reference.node import RingNode
-    from sut.reference.train import Train
+    from sut.reference.crh2.node import RingNode
+    from sut.reference.crh2.context import TrainContext
 
 # numeric readings: name -> (unit shown, scale on the wire)
 NUMERIC = {"speed": ("km/h", 10), "main pipe pressure": ("kPa", 10), "mileage": ("km", 1000),
@@ -33,7 +33,7 @@ class Point:
 
 
 class DisplayTable:
-    def __init__(self, train: "Train"):
+    def __init__(self, train: "TrainContext"):
         self.train = train
         vehicle = train.vehicle
         per = train.cfg.cars_per_set

@@ -1,0 +1,80 @@
+"""One-way layers (issue 14): no module of the SUT package imports another that imports it back, type-only
+imports (under TYPE_CHECKING) included; a CRH2 part never imports the train that assembles it."""
+from __future__ import annotations
+
+import ast
+from pathlib import Path
+
+from tests.helpers import REPO
+
+SUT = REPO / "sut"
+
+
+def _module_name(path: Path) -> str:
+    rel = path.relative_to(REPO).with_suffix("")
+    parts = rel.parts[:-1] if rel.name == "__init__" else rel.parts
+    return ".".join(parts)
+
+
+def _imports() -> dict[str, set[str]]:
+    modules = {_module_name(p): p for p in SUT.rglob("*.py")}
+    graph: dict[str, set[str]] = {}
+    for name, path in modules.items():
+        deps: set[str] = set()
+        for node in ast.walk(ast.parse(path.read_text(encoding="utf-8"))):
+            if isinstance(node, ast.ImportFrom) and node.module and node.level == 0:
+                targets = [f"{node.module}.{alias.name}" for alias in node.names] + [node.module]
+                deps.update(t for t in targets if t in modules)
+            elif isinstance(node, ast.Import):
+                deps.update(alias.name for alias in node.names if alias.name in modules)
+        # a package's __init__ is imported on the way to any of its modules: not a dependency of interest
+        graph[name] = {d for d in deps if d != name and not name.startswith(d + ".")}
+    return graph
+
+
+def _cycles(graph: dict[str, set[str]]) -> list[list[str]]:
+    index: dict[str, int] = {}
+    low: dict[str, int] = {}
+    stack: list[str] = []
+    found: list[list[str]] = []
+
+    def visit(v: str) -> None:
+        index[v] = low[v] = len(index)
+        stack.append(v)
+        for w in graph.get(v, ()):
+            if w not in index:
+                visit(w)
+                low[v] = min(low[v], low[w])
+            elif w in stack:
+                low[v] = min(low[v], index[w])
+        if low[v] == index[v]:
+            component = []
+            while True:
+                w = stack.pop()
+                component.append(w)
+                if w == v:
+                    break
+            if len(component) > 1:
+                found.append(sorted(component))
+
+    for v in sorted(graph):
+        if v not in index:
+            visit(v)
+    return found
+
+
+def test_no_module_of_the_sut_imports_itself_through_others() -> None:
+    graph = _imports()
+    assert len(graph) > 30
+    assert _cycles(graph) == []
+
+
+def test_the_crh2_parts_know_the_train_only_as_its_context() -> None:
+    graph = _imports()
+    importers = sorted(name for name, deps in graph.items() if "sut.reference.crh2.train" in deps)
+    assert importers == ["sut.reference.crh2.backend", "sut.reference.crh2.bulk"]
+
+
+def test_three_trains_at_a_glance() -> None:
+    packages = sorted(p.name for p in (SUT / "reference").iterdir() if (p / "__init__.py").exists())
+    assert packages == ["atp", "crh2", "metro"]
