@@ -227,9 +227,8 @@ def passes(args: argparse.Namespace, floor_dir: Path) -> list[Run]:
     floor = [str(floor_dir), *common, *select]
     runs = [Run("conformance", conformance, ROOT), Run("floor", floor, floor_dir)]
     if args.what_if:
-        patches = sorted(set(args.what_if) - {"nohypothesis"})
-        extra = (["-p", "_whatif_plugin"] if patches else []) + \
-            (["-p", "no:hypothesispytest"] if "nohypothesis" in args.what_if else [])
+        patches = sorted(set(args.what_if))
+        extra = ["-p", "_whatif_plugin"]
         runs.append(Run("what-if: " + "+".join(sorted(set(args.what_if))), [*conformance, *extra], ROOT,
                         env={"BENCH_WHATIF": ",".join(patches)}))
     return runs
@@ -519,7 +518,7 @@ def main(argv: list[str] | None = None) -> int:
     ap.add_argument("--what-if", type=lambda v: [w.strip() for w in v.split(",") if w.strip()], default=[],
                     metavar="LIST",
                     help="experimental: one more conformance pass with stand-ins for proposed fixes "
-                         "(comma-separated: steplookup, nohypothesis; see bench/_whatif_plugin.py)")
+                         "(comma-separated: bddscan; see bench/_whatif_plugin.py)")
     ap.add_argument("--profile-run", action="store_true",
                     help="also run the conformance pass under cProfile and summarise it by package")
     ap.add_argument("--profile-out", type=Path, default=None, metavar="FILE",
@@ -535,7 +534,7 @@ def main(argv: list[str] | None = None) -> int:
     args.pytest_args = rest
     if args.repeat < 1:
         ap.error("--repeat must be >= 1")
-    bad = set(args.what_if) - {"steplookup", "nohypothesis"}
+    bad = set(args.what_if) - {"bddscan"}
     if bad:
         ap.error(f"--what-if: unknown {', '.join(sorted(bad))}")
 

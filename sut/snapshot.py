@@ -178,7 +178,9 @@ class SnapshotCache:
             self._refused.add(type(driver))
             return
         except Exception as exc:                          # noqa: BLE001 - any failure means: simulate
-            self.refuse(type(driver), f"cannot snapshot: {exc!r:.160}")
+            # Maybe only this state (a part that pickles only now and then): decline it, not the backend.
+            self._declined.add(node)
+            self.note(type(driver), f"a state could not be snapshotted: {exc!r:.160}", "it is simulated instead")
             return
         if reach < 2 * self._seconds_per_byte * len(data):
             self._declined.add(node)
@@ -188,8 +190,13 @@ class SnapshotCache:
     def refuse(self, cls: type, why: str) -> None:
         if cls not in self._refused:
             self._refused.add(cls)
-            self.notes.append(f"snapshots off for {cls.__module__}.{cls.__qualname__} ({why}): its "
-                              f"scenarios simulate from power-up")
+            self.note(cls, why, "snapshots off for it: its scenarios simulate from power-up")
+
+    def note(self, cls: type, why: str, consequence: str) -> None:
+        """One line for the end of the run, once per backend class and reason."""
+        line = f"{cls.__module__}.{cls.__qualname__}: {why}; {consequence}"
+        if not any(n.startswith(f"{cls.__module__}.{cls.__qualname__}:") for n in self.notes):
+            self.notes.append(line)
 
     def _put(self, node: int, cls: type[TrainDriver], data: bytes) -> None:
         self._states[node] = (cls, data)

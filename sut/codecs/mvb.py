@@ -28,6 +28,7 @@ public sources above states them.
 """
 from __future__ import annotations
 
+import functools
 from dataclasses import dataclass
 from enum import Enum
 from typing import NamedTuple
@@ -93,6 +94,13 @@ _CRC_TABLE = _crc_table()
 
 def check_sequence(group: bytes) -> int:
     """The check byte sent after `group` (2, 4 or 8 data bytes): CRC-7, even parity, inverted."""
+    return _check_sequence(group if type(group) is bytes else bytes(group))
+
+
+# Remembered per group: a bus carries the same few hundred groups every basic period, and computing it was
+# the metro reference's hottest function (bench/suite_bench.py --profile-run).
+@functools.lru_cache(maxsize=1 << 16)
+def _check_sequence(group: bytes) -> int:
     reg = 0
     for byte in group:
         reg = _CRC_TABLE[reg ^ byte]

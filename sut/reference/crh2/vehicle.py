@@ -132,6 +132,16 @@ class Vehicle:
         self.ns_phase = "idle"
         self._ns_timer: "Timer | None" = None
         self.ns_vcb_open = False
+        # The names _evaluate reads and writes on every call (every millisecond of a ramp): built once.
+        self._couplers = [k for k in self.inputs if k.startswith("coupler ")]
+        self._forces = [k for k in self.inputs if k.endswith(".brake force")]
+        self._car_names = [(f"car{car}.air conditioning", f"car{car}.lighting")
+                           for car in range(1, train.cfg.cars + 1)]
+        self._unit_names = {u: (f"unit{u}.VCB", f"unit{u}.pantograph", f"unit{u}.auxiliary supply")
+                            for u in self.units}
+        self._ci_names = {u: [(f"car{car}.CI contactor", f"car{car}.CI cut-out", f"car{car}.CI gates")
+                              for car in cars if f"car{car}.CI contactor" in self.outputs_spec]
+                          for u, cars in self.units.items()}
         self._evaluate(initial=True)
 
     # -- the interface the driver uses ----------------------------------------------------------
@@ -152,20 +162,20 @@ class Vehicle:
         self._cancel_ramp(name)
         self.train.emit("vehicle", "in.ramp", name=name, frm=self.inputs[name], to=to, per_s=per_s)
         step = per_s / 1000.0                     # per millisecond
+        self._ramps[name] = self.kernel.call_later(MS, self._ramp_tick, name, to, step)
 
-        def tick() -> None:
-            now = self.inputs[name]
-            nxt = min(to, now + step) if to > now else max(to, now - step)
-            if name == "speed":
-                self._odometer(nxt, linear=True)
-            self.inputs[name] = round(nxt, 6)
-            self._evaluate()
-            if nxt != to:
-                self._ramps[name] = self.kernel.call_later(MS, tick)
-            else:
-                self._ramps.pop(name, None)
-
-        self._ramps[name] = self.kernel.call_later(MS, tick)
+    def _ramp_tick(self, name: str, to: float, step: float) -> None:
+        # A method with arguments, not a closure: a pending timer must pickle (sut/snapshot.py).
+        now = self.inputs[name]
+        nxt = min(to, now + step) if to > now else max(to, now - step)
+        if name == "speed":
+            self._odometer(nxt, linear=True)
+        self.inputs[name] = round(nxt, 6)
+        self._evaluate()
+        if nxt != to:
+            self._ramps[name] = self.kernel.call_later(MS, self._ramp_tick, name, to, step)
+        else:
+            self._ramps.pop(name, None)
 
     def output(self, name: str) -> str:
         if name not in self.outputs:
@@ -246,7 +256,7 @@ class Vehicle:
             self.pipe_tripped = True
         elif self.pipe_tripped and pressure >= cfg.pipe_reset_kpa:
             self.pipe_tripped = False
-        separated = any(v == "separated" for k, v in inp.items() if k.startswith("coupler "))
+        separated = any(inp[k] == "separated" for k in self._couplers)
         self._supervise_brake_force()
         b = self.train.cfg.behaviour
         safety_trip = separated or self.pipe_tripped or self.brake_force_low          # ILK-01..03
@@ -266,8 +276,9 @@ class Vehicle:
         for u in self.units:
             self._unit_protection(u)
         order = self.ordered.get
-        vcb_open = {u: bool(self.unit_faults[u] & {"vcb"}) or self.ns_vcb_open
-                    or order(f"unit{u}.VCB") == "open" or order(f"unit{u}.pantograph") == "down"
+        unit_names = self._unit_names
+        vcb_open = {u: "vcb" in self.unit_faults[u] or self.ns_vcb_open
+                    or order(unit_names[u][0]) == "open" or order(unit_names[u][1]) == "down"
                     for u in self.units}
         # compressor governor (DECISIONS.md): start below 780 kPa, stop at 880 kPa
         if not self.compressor and pressure < cfg.compressor_start_kpa:
@@ -286,24 +297,24 @@ class Vehicle:
             "compressor": "running" if self.compressor else "stopped",
             "passenger information": order("passenger information", "none"),
         }
-        for car in range(1, self.train.cfg.cars + 1):
-            out[f"car{car}.air conditioning"] = order(f"car{car}.air conditioning", "on")
-            out[f"car{car}.lighting"] = order(f"car{car}.lighting", "on")
+        for air, light in self._car_names:
+            out[air] = order(air, "on")
+            out[light] = order(light, "on")
         for u in self.units:
-            out[f"unit{u}.VCB"] = "open" if vcb_open[u] else "closed"
-            out[f"unit{u}.pantograph"] = order(f"unit{u}.pantograph", "up")
+            vcb, pantograph, auxiliary = unit_names[u]
+            out[vcb] = "open" if vcb_open[u] else "closed"
+            out[pantograph] = order(pantograph, "up")
             # tertiary supply switching: a unit whose VCB is open takes its auxiliary supply from a unit
             # whose VCB is closed (the extension supply), if there is one
             others = [o for o in self.units if o != u and not vcb_open[o]]
-            out[f"unit{u}.auxiliary supply"] = "own" if not vcb_open[u] else ("extended" if others else "none")
-        for u, cars in self.units.items():
-            for car in cars:
-                if f"car{car}.CI contactor" in self.outputs_spec:
-                    cut_out = order(f"car{car}.CI cut-out", "in") == "cut out"
-                    out[f"car{car}.CI cut-out"] = "cut out" if cut_out else "in"
-                    cut = bool(self.unit_faults[u] & {"converter"}) or vcb_open[u] or cut_out
-                    out[f"car{car}.CI contactor"] = "open" if cut else "closed"
-                    out[f"car{car}.CI gates"] = "blocked" if cut else "enabled"
+            out[auxiliary] = "own" if not vcb_open[u] else ("extended" if others else "none")
+        for u in self.units:
+            for contactor, cut_out_name, gates in self._ci_names[u]:
+                cut_out = order(cut_out_name, "in") == "cut out"
+                out[cut_out_name] = "cut out" if cut_out else "in"
+                cut = "converter" in self.unit_faults[u] or vcb_open[u] or cut_out
+                out[contactor] = "open" if cut else "closed"
+                out[gates] = "blocked" if cut else "enabled"
         out["traction"] = "permitted" if self._permitted(eb_loop_open, rapid, doors) else "blocked"
         for name, value in out.items():
             if self.outputs.get(name) != value:
@@ -318,8 +329,8 @@ class Vehicle:
     # ILK-03: brake force supervision
     def _supervise_brake_force(self) -> None:
         demand = self._handle_brake() > 0 or self.inputs["ATP brake"] != "none"
-        weak = demand and any(v < self.cfg.brake_force_min_pct for k, v in self.inputs.items()
-                              if k.endswith(".brake force"))
+        inputs, least = self.inputs, self.cfg.brake_force_min_pct
+        weak = demand and any(inputs[k] < least for k in self._forces)
         if weak and self._force_timer is None and not self.brake_force_low:
             self._force_timer = self.kernel.call_later(self.cfg.brake_force_detect_us, self._brake_force_low)
         elif not weak and self._force_timer is not None:
@@ -402,12 +413,12 @@ class Vehicle:
     def _ns_arm(self, delay: int, phase: str) -> None:
         self._ns_cancel()
 
-        def expire() -> None:
-            self._ns_timer = None
-            self.ns_phase = phase
-            self._evaluate()
+        self._ns_timer = self.kernel.call_later(delay, self._ns_expire, phase)
 
-        self._ns_timer = self.kernel.call_later(delay, expire)
+    def _ns_expire(self, phase: str) -> None:
+        self._ns_timer = None
+        self.ns_phase = phase
+        self._evaluate()
 
     def _ns_cancel(self) -> None:
         if self._ns_timer is not None:
