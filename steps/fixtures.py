@@ -180,7 +180,7 @@ def pytest_bdd_after_step(request, feature, scenario, step, step_func, step_func
 def sut(sut_class: type[TrainDriver], request: pytest.FixtureRequest):
     declared = [p for p in _profiles_of(request.node) if p in sut_class.PROFILES]
     profile = declared[0] if declared else None
-    if request.config.getoption("--no-snapshots"):
+    if request.config.getoption("--no-snapshots") or not sut_class.DETERMINISTIC:
         driver = sut_class.open(profile)
     else:
         driver = SnapshotDriver(sut_class, profile, request.config.stash[_SNAPSHOTS])

@@ -34,6 +34,10 @@ class TrainDriver(abc.ABC):
     # The train profiles this backend implements (features carry @profile:<name>); a scenario of a profile
     # its SUT does not declare is skipped with that reason, never run and never passed.
     PROFILES: tuple[str, ...] = ()
+    # Whether the same calls from open() always give the same states, traces and answers (a simulation, not
+    # a rig or a train behind a socket). Only then may a run reuse what one scenario computed for another
+    # (sut/snapshot.py); a backend that is not, or does not say so, is simply driven call by call.
+    DETERMINISTIC: bool = False
 
     def __init__(self) -> None:
         self._powered = False

@@ -57,9 +57,20 @@ def test_the_journal_knows_every_call_of_the_driver_interface() -> None:
 
     public = {name for name in dir(TrainDriver) if not name.startswith("_")}
     own = {"now_us", "powered", "trace", "shutdown"}                   # SnapshotDriver's own properties
-    local = {"open", "snapshot", "from_snapshot", "check_us", "check_direction", "PROFILES", "backend_name"}
+    local = {"open", "snapshot", "from_snapshot", "check_us", "check_direction", "PROFILES", "backend_name",
+             "DETERMINISTIC"}
     assert public - INPUTS - READS - own - local == set(), "a driver call the journal would not know"
     assert not INPUTS & READS
+
+
+def test_only_a_deterministic_backend_is_journaled() -> None:
+    from sut.remote.client import RemoteTrain
+    from sut.reference.atp.backend import ReferenceAtp
+    from sut.reference.metro.backend import ReferenceMetro
+
+    assert Reference.DETERMINISTIC and ReferenceTrain.DETERMINISTIC and ReferenceMetro.DETERMINISTIC
+    assert ReferenceAtp.DETERMINISTIC
+    assert not RemoteTrain.DETERMINISTIC          # a rig or a remote train: every call goes to it
 
 
 # -- in process, on the real reference --------------------------------------------------------------------

@@ -20,6 +20,7 @@ class Reference(TrainDriver):
 
     backend_name = "reference"
     PROFILES = tuple(TRAINS)
+    DETERMINISTIC = True           # virtual time, no randomness, nothing outside the model
 
     @classmethod
     def open(cls, profile: str | None = None) -> TrainDriver:

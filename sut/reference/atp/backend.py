@@ -47,6 +47,7 @@ SUPPLIES = ("VDX", "train 110V")
 class ReferenceAtp(PickledState, TrainDriver):
     backend_name = "reference"
     PROFILES = ("atp",)
+    DETERMINISTIC = True           # virtual time, no randomness, nothing outside the model
     VDX: ClassVar[dict[str, Any]] = {}
     ATP: ClassVar[dict[str, Any]] = {}
 

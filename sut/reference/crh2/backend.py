@@ -31,6 +31,7 @@ FRAME_KINDS = {name: code for code, name in KIND_NAMES.items()}
 class ReferenceTrain(PickledState, TrainDriver):
     backend_name = "reference"
     PROFILES = ("crh2",)
+    DETERMINISTIC = True           # virtual time, no randomness, nothing outside the model
     TIMING: ClassVar[dict[str, Any]] = {}
     BEHAVIOUR: ClassVar[dict[str, Any]] = {}
 

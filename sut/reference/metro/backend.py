@@ -31,6 +31,7 @@ INPUT_NAMES = ("speed", "emergency operation")
 class ReferenceMetro(PickledState, TrainDriver):
     backend_name = "reference"
     PROFILES = ("metro-tcn",)
+    DETERMINISTIC = True           # virtual time, no randomness, nothing outside the model
     TIMING: ClassVar[dict[str, Any]] = {}
     BEHAVIOUR: ClassVar[dict[str, Any]] = {}
 
