@@ -101,6 +101,7 @@ class SnapshotCache:
         self.size = 0
         self.notes: list[str] = []                       # one line per backend whose snapshots failed
         self.stored = self.restored = self.deferred = self.answered = self.evicted = 0
+        self.restored_by: dict[str, int] = {}          # backend class name -> states restored
 
     # -- keys ------------------------------------------------------------------------------------
     def child(self, node: int, entry: Any) -> int:
@@ -160,6 +161,7 @@ class SnapshotCache:
         rate = (time.perf_counter() - started) / max(len(data), 1)
         self._seconds_per_byte = 0.8 * self._seconds_per_byte + 0.2 * rate
         self.restored += 1
+        self.restored_by[cls.__qualname__] = self.restored_by.get(cls.__qualname__, 0) + 1
         return driver
 
     def checkpoint(self, node: int, driver: TrainDriver) -> None:
@@ -233,17 +235,21 @@ class SnapshotCache:
 
     def figures(self) -> dict[str, Any]:
         """What an xdist worker reports to the controller (`add_figures`)."""
-        return {"notes": self.notes, **{name: getattr(self, name) for name in self.FIGURES}}
+        return {"notes": self.notes, "restored_by": self.restored_by,
+                **{name: getattr(self, name) for name in self.FIGURES}}
 
     def add_figures(self, figures: dict[str, Any]) -> None:
         self.notes.extend(figures["notes"])
         for name in self.FIGURES:
             setattr(self, name, getattr(self, name) + figures[name])
+        for name, count in figures["restored_by"].items():
+            self.restored_by[name] = self.restored_by.get(name, 0) + count
 
     def summary(self) -> str:
-        return (f"snapshots: {self.restored} restored, {self.deferred} calls and {self.answered} reads not "
-                f"simulated again, {self.stored} stored ({self.size / 2**20:.1f} MB held, {self.evicted} "
-                f"dropped)")
+        by = ", ".join(f"{name} {count}" for name, count in sorted(self.restored_by.items()))
+        return (f"snapshots: {self.restored} restored{f' ({by})' if by else ''}, {self.deferred} calls and "
+                f"{self.answered} reads not simulated again, {self.stored} stored ({self.size / 2**20:.1f} MB "
+                f"held, {self.evicted} dropped)")
 
 
 MAX_ANSWERS = 1_000_000
