@@ -67,11 +67,11 @@ def pytest_configure(config: pytest.Config) -> None:
 @pytest.hookimpl(trylast=True)
 def pytest_collection_finish(session: pytest.Session) -> None:
     # What collection built (features, steps, items) lives to the end of the run: moved out of the cyclic
-    # collector's sight, and the youngest generation collected less often, the simulation's many short-lived
-    # objects cost the collector 5-8 % less (bench/suite_bench.py).
+    # collector's sight, and the youngest generation collected less often (not the older ones: a finished
+    # scenario's train is a cycle of objects that only they free), the collector costs a few % less.
     gc.collect()
     gc.freeze()
-    gc.set_threshold(20_000, 20, 20)
+    gc.set_threshold(10_000, 10, 10)
 
 
 def pytest_sessionfinish(session: pytest.Session) -> None:

@@ -228,7 +228,9 @@ class SnapshotCache:
         if type(value) in _IMMUTABLE:
             self._answers[key] = value
         elif _small(value):
-            self._answers[key] = _Pickled(pickle.dumps(value, protocol=pickle.HIGHEST_PROTOCOL))
+            data = pickle.dumps(value, protocol=pickle.HIGHEST_PROTOCOL)
+            if len(data) <= MAX_ANSWER_BYTES:
+                self._answers[key] = _Pickled(data)
 
     # -- figures ---------------------------------------------------------------------------------------
     FIGURES = ("restored", "deferred", "answered", "stored", "size", "evicted")
@@ -252,7 +254,11 @@ class SnapshotCache:
                 f"held, {self.evicted} dropped)")
 
 
-MAX_ANSWERS = 1_000_000
+# Answers are kept at every key a scenario reads at, most of them never asked again (a scenario's own
+# steps): bounded so that they cost tens of MB, not hundreds (a cab monitor watched for seconds is read every
+# millisecond, each view a few hundred bytes).
+MAX_ANSWERS = 100_000
+MAX_ANSWER_BYTES = 256
 _NONE = object()
 _IMMUTABLE = frozenset({int, float, str, bool, bytes, type(None)})
 
@@ -264,7 +270,7 @@ class _Pickled:
         self.data = data
 
 
-def _small(value: Any, budget: int = 256) -> bool:
+def _small(value: Any, budget: int = 16) -> bool:
     """Whether a read's value is small enough to keep as an answer (a trace selection can be thousands)."""
     if isinstance(value, (list, tuple, dict, set, frozenset)) and not isinstance(value, TraceEvent):
         return len(value) <= budget
