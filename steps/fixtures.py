@@ -156,8 +156,9 @@ def pytest_collection_modifyitems(config: pytest.Config, items: list[pytest.Item
 
 @pytest.fixture
 def sut_class(request: pytest.FixtureRequest) -> type[TrainDriver]:
-    """The backend of this scenario (one per scenario and --sut when several are given)."""
-    return getattr(request, "param", None) or next(iter(request.config.stash[_SUTS].values()))
+    """The backend of this scenario: the one --sut (with several, pytest_generate_tests parametrizes this name
+    directly, and each value stands in for this fixture)."""
+    return next(iter(request.config.stash[_SUTS].values()))
 
 
 _BOUNDS = pytest.StashKey[list]()
