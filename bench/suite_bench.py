@@ -27,23 +27,18 @@ With --profile-run, a third pass of the conformance run under cProfile, summaris
 charged to their callers), the hottest modules of the project, and the top functions by self and by
 cumulative time.
 
-Measured on this machine (2-core VM, Python 3.11.7, pytest 9.2.0, pytest-bdd 9.0.1, 2026-11-23 21:23, full
-suite: 528 scenarios, 5 035 steps, all passed; load average 2.3 -> 3.0, i.e. other jobs on both cores):
-  conformance 150.4 s wall (148.4 s CPU; collection 3.8 s), floor 2.9 s (2.8 s CPU; collection 0.9 s)
-    -> 51.3x wall, 53.2x CPU: target 1.5x MISSED. An earlier full run at load 2.1 -> 1.1: 149.7 s vs
-    2.84 s, 52.7x.
-  105.3 s (70%) of the conformance run is inside Kernel.run (the simulation proper); the rest, 45.1 s, is
-    15.4x the floor. Stand-ins for two fixes (--what-if steplookup,noattach) bring the run to 126.6 s and
-    the rest to 22.2 s, 7.6x the floor (each alone, same day: steplookup 146.2 s, noattach 126.2 s).
-    noattach is now what steps/report.py does (no attachments without --alluredir); these figures are from
-    before it.
-  peak RSS 222 MB vs 69 MB (3.2x); the 72 h soak scenarios raise it most (H-CPO-01 +53 MB, H-CPO-03 +38 MB).
-  10 slowest scenarios: 43 s of the 145 s test phase (the 72 h soaks H-CPO-01..03 alone 27 s); the other
-    518 average 196 ms.
-  --profile-run (381 s under cProfile, 2.5x): sut/ 74% of the self time (libraries it calls included),
-    steps/ 10% (almost all of it the timing-diagram SVG), pytest 10% and pytest-bdd 3% (mostly the per-step
-    definition lookup). cProfile inflates pytest's deep chains of small calls: the lookup's 12% under the
-    profiler is ~3% in a plain run (what-if steplookup).
+Measured on this machine (2-core VM, Python 3.11.7, pytest 9.2.0, pytest-bdd 9.0.1, full suite: 528
+scenarios, 5 035 steps, all passed):
+  2026-11-24 23:23, load 0.2 -> 0.7 (issue 14: snapshots, step index, hot paths): conformance 65.1 s wall
+    (65.1 s CPU; collection 1.1 s), floor 1.22 s -> 53x (the floor fell too: it shares the step index and
+    no longer loads hypothesis's pytest plugin; against the old floor, 36x). 52.8 s (81 %) inside Kernel.run;
+    the rest, 12.3 s, is 10x the floor. Peak RSS 303 MB (the snapshot cache) vs 58 MB.
+  2026-11-24 21:43, load 0.2 -> 0.8 (before issue 14): conformance 88.2 s, floor 1.80 s -> 49x; 71.8 s inside
+    Kernel.run; peak RSS 210 MB.
+  2026-11-23 (issue 9): 150.4 s vs 2.9 s, 51x; what-if stand-ins for the step index and for no attachments
+    without --alluredir were measured then (both done since).
+  --profile-run: the simulation dominates (sut/ ~75 % of the self time); the 10 slowest scenarios (the 72 h
+    soaks, the rated withstand tests, mileage ramps) are a third of the test phase.
 
 In-process vs remote: bench/remote_bench.py (or --sut tcp://HOST:PORT here, against a running server).
 Options --item, -k, --profile and anything after `--` go to both runs; --sut and --conf-arg to the
