@@ -8,7 +8,6 @@ ramp both fit one picture; the header says the slot length.
 from __future__ import annotations
 
 import json
-import re
 from dataclasses import dataclass
 
 from sut.trace import Trace, TraceEvent
@@ -169,20 +168,26 @@ def _duration(ms: int) -> str:
     return f"{ms} ms"
 
 
-_DEF = re.compile(r'<g id="([^"]+)">.*?</g>', re.S)
-
-
 def render_svg(diagram: dict) -> str:
     """WaveDrom's SVG carries its whole skin (~800 shapes) in <defs>; keep only the shapes the diagram
-    uses, which makes each picture a few kilobytes instead of ~50 in a single-file report."""
+    uses, which makes each picture a few kilobytes instead of ~50 in a single-file report. Pruned before
+    the SVG is written out: writing the whole skin was most of the time a report run spent on diagrams."""
     import wavedrom
 
-    svg = wavedrom.render(json.dumps(diagram)).tostring()
-    head, sep, rest = svg.partition("<defs>")
-    defs, sep2, tail = rest.partition("</defs>")
-    if not sep or not sep2:
-        return svg
-    used = set(re.findall(r'href="#([^"]+)"', tail))
-    kept = "".join(m.group(0) for m in _DEF.finditer(defs) if m.group(1) in used)
-    others = _DEF.sub("", defs)                # markers and styles that are not skin shapes
-    return f"{head}<defs>{kept}{others}</defs>{tail}"
+    drawing = wavedrom.render(json.dumps(diagram))
+    used: set[str] = set()
+    for element in drawing.elements:
+        if element is not drawing.defs:
+            _hrefs(element, used)
+    drawing.defs.elements[:] = [e for e in drawing.defs.elements
+                                if not (type(e).__name__ == "Group" and e.attribs.get("id") not in used)]
+    return drawing.tostring()
+
+
+def _hrefs(element, found: set[str]) -> None:
+    for name in ("xlink:href", "href"):
+        ref = element.attribs.get(name)
+        if isinstance(ref, str) and ref.startswith("#"):
+            found.add(ref[1:])
+    for child in getattr(element, "elements", ()):
+        _hrefs(child, found)
