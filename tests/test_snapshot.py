@@ -176,6 +176,17 @@ def test_a_backend_that_cannot_snapshot_simulates_and_says_why_once() -> None:
     assert all(run.now_us == 1_100_000 for run in runs)
 
 
+def test_a_run_whose_backend_cannot_snapshot_passes_and_says_why_in_one_line() -> None:
+    result = subprocess.run([sys.executable, "-m", "pytest", "features", "-q", "-rA", "-p", "no:cacheprovider",
+                             "-p", "no:xdist", "--item=R-CTL-01,R-CTL-02,R-CTL-03",
+                             "--sut=tests.test_snapshot:Unpicklable"],
+                            cwd=ROOT, capture_output=True, text=True, timeout=600)
+    assert result.returncode == 0, result.stdout[-3000:] + result.stderr[-2000:]
+    lines = [line for line in result.stdout.splitlines() if "could not be snapshotted" in line]
+    assert len(lines) == 1 and "Unpicklable" in lines[0] and "simulated instead" in lines[0], result.stdout[-2000:]
+    assert len(verdicts(result.stdout)) >= 10
+
+
 class Rig(ReferenceTrain):
     """Stands for a rig: its state is not its own objects, so it declares no snapshots."""
 
