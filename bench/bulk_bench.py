@@ -5,7 +5,7 @@
 Prints, from one run on this machine:
   - frame by frame: wall seconds per simulated hour (measured over --fbf-minutes, then scaled), kernel
     events and trace events per simulated hour;
-  - bulk (sut/reference/crh2/bulk.py) for --hours with one steady sample every 1 h and every 3 h: wall time,
+  - bulk (sut/reference/bulk.py) for --hours with one steady sample every 1 h and every 3 h: wall time,
     how much was simulated and how much skipped, jumps, the trace it left, peak traced memory;
   - with --agree-minutes N: the same N minutes both ways, and whether every leaf of the state agrees
     (tests/test_bulk.py does this for 10 min with faults on the way).
@@ -21,7 +21,7 @@ from pathlib import Path
 
 sys.path.insert(0, str(Path(__file__).resolve().parents[1]))      # the project root: `tests` below
 
-from sut.reference.crh2 import bulk                                      # noqa: E402
+from sut.reference import bulk                                      # noqa: E402
 from tests.test_bulk import S, powered   # noqa: E402  the same powered train the agreement test uses
 
 HOUR = 3600 * S

@@ -128,7 +128,7 @@ class TrainDriver(abc.ABC):
         """Let `us` of train time pass in one long run (72 h of continuous power-on).
 
         The result must be what `advance(us)` gives. A backend may skip steady traffic in closed form
-        (the reference does: sut/reference/crh2/bulk.py), but then the trace must still hold the traffic of one
+        (the reference does: sut/reference/bulk.py), but then the trace must still hold the traffic of one
         steady sample after every `sample_every_us` and of the end of the run, and the `counters` must
         count everything, skipped or not. A rig simply waits."""
         self.check_us("time step", us, 0)

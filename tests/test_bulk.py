@@ -1,4 +1,4 @@
-"""Bulk advance (sut/reference/crh2/bulk.py) must give exactly what frame-by-frame simulation gives.
+"""Bulk advance (sut/reference/bulk.py) must give exactly what frame-by-frame simulation gives.
 
 The comparison is of every leaf of the train's state (bulk.snapshot: clocks, counters, queues, timers,
 frames in flight), plus what the driver shows: counters, records, the monitor.
@@ -7,7 +7,7 @@ from __future__ import annotations
 
 import pytest
 
-from sut.reference.crh2 import bulk
+from sut.reference import bulk
 from steps.longrun import skips
 from sut.reference.crh2.backend import ReferenceTrain
 

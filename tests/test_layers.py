@@ -72,7 +72,7 @@ def test_no_module_of_the_sut_imports_itself_through_others() -> None:
 def test_the_crh2_parts_know_the_train_only_as_its_context() -> None:
     graph = _imports()
     importers = sorted(name for name, deps in graph.items() if "sut.reference.crh2.train" in deps)
-    assert importers == ["sut.reference.crh2.backend", "sut.reference.crh2.bulk"]
+    assert importers == ["sut.reference.crh2.backend"]
 
 
 def test_three_trains_at_a_glance() -> None:

@@ -15,7 +15,7 @@ from typing import Any, ClassVar
 from sut.driver import TrainDriver
 from sut.snapshot import PickledState
 from sut.errors import OutOfRange, SutError, UnknownName
-from sut.reference.crh2 import bulk
+from sut.reference import bulk
 from sut.reference.crh2.boards import Board, PowerSupply
 from sut.reference.crh2.config import BRAKE_STEPS, EMERGENCY, TRACTION_NOTCHES, TrainConfig
 from sut.reference.crh2.environment import TRAIN_SUPPLY, WHOLE_TRAIN, TrainEnvironment
@@ -71,9 +71,7 @@ class ReferenceTrain(PickledState, TrainDriver):
 
     # -- long runs -----------------------------------------------------------------------------
     def _soak(self, us: int, sample_every_us: int | None) -> None:
-        report = bulk.run(self.train, self.now_us + us, sample_every_us)
-        self._mark("train", "bulk.report", simulated_us=report.simulated_us, skipped_us=report.skipped_us,
-                   jumps=report.jumps, period_us=report.period_us)
+        bulk.soak(self.train, us, sample_every_us)
 
     def counters(self, node: str) -> dict[str, int]:
         counts = self._node(node).counters()

@@ -14,6 +14,7 @@ from sut.reference.crh2.config import TrainConfig
 from sut.reference.crh2.devices import LoopDevice
 from sut.reference.crh2.display import DisplayTable
 from sut.reference.crh2.environment import TrainEnvironment
+from sut.reference.bulk import cyclic_period_us
 from sut.reference.kernel import Kernel
 from sut.reference.crh2.lcu import Lcu
 from sut.reference.crh2.node import RingNode
@@ -94,6 +95,10 @@ class Train:
             node.start()
         for ccu in self.ccus.values():
             ccu.start()
+
+    def bulk_period_us(self) -> int:
+        """The steady period (sut/reference/bulk.py): one token rotation and every cyclic activity."""
+        return cyclic_period_us(self.kernel, self.ring.size * self.cfg.timing.token_hold_us)
 
     def node_by_number(self, number: int) -> RingNode:
         return self.ring.nodes[number - 1]

@@ -26,12 +26,23 @@ import math
 import types
 from collections import deque
 from dataclasses import dataclass
-from typing import TYPE_CHECKING, Any
+from typing import Any, Protocol
 
-from sut.reference.kernel import Timer
+from sut.reference.kernel import Kernel, Timer
 
-if TYPE_CHECKING:
-    from sut.reference.crh2.train import Train
+
+class Train(Protocol):
+    """What bulk advance needs of a model: its kernel, its trace, how it emits, and its steady period (the
+    least common multiple of everything that repeats in it; a model that repeats more slowly than its
+    kernel's cyclic activities, such as a token going round a ring, says so). Every reference train is one:
+    the CRH2 train, the metro TCDS and the ATP rig."""
+
+    kernel: Kernel
+    events: list
+
+    def emit(self, source: str, kind: str, /, **fields: Any) -> None: ...
+
+    def bulk_period_us(self) -> int: ...
 
 
 class NotSteady(Exception):
@@ -151,11 +162,12 @@ def snapshot(train: "Train") -> Snapshot:
 
 
 def steady_period_us(train: "Train") -> int:
-    t = train.cfg.timing
-    period = train.ring.size * t.token_hold_us
-    for p in train.kernel.periods():
-        period = math.lcm(period, p)
-    return period
+    return train.bulk_period_us()
+
+
+def cyclic_period_us(kernel: Kernel, *others: int) -> int:
+    """The least common multiple of the kernel's cyclic periods and `others`."""
+    return math.lcm(*kernel.periods(), *others)
 
 
 def slope(s0: Snapshot, s1: Snapshot, s2: Snapshot) -> list[int]:
@@ -314,6 +326,14 @@ def run(train: "Train", until: int, sample_every_us: int | None = None) -> BulkR
 
 
 SAMPLE_US = 3_000_000
+
+
+def soak(train: "Train", us: int, sample_every_us: int | None) -> BulkReport:
+    """TrainDriver.soak for a reference train: `run`, then what it did as one `bulk.report` in the trace."""
+    report = run(train, train.kernel.now + us, sample_every_us)
+    train.emit("train", "bulk.report", simulated_us=report.simulated_us, skipped_us=report.skipped_us,
+               jumps=report.jumps, period_us=report.period_us)
+    return report
 
 
 def _probe(train: "Train", span: int, report: BulkReport) -> int:
