@@ -2,7 +2,7 @@
 starts from a copy of that state instead of simulating it again.
 
 Most features open with the same Background (an 8-car set, powered up for 1000 ms, key in cab 1, forward):
-simulated once per scenario, that is a fifth of the conformance run. A `SnapshotDriver` stands in for the
+simulated once per scenario, that was a fifth of the simulation in a conformance run. A `SnapshotDriver` stands in for the
 scenario's driver and keeps a journal of every call made to it since `open()`. The key of a state is exact
 because it is everything that made it: the backend class (a faulty variant is its own class, so its
 parameters are in the key), the profile, and every call with its arguments, in order (composition, power-up,
@@ -20,10 +20,11 @@ snapshots on and off for every profile.
 - A state is copied into the cache where journals branch (a key with two different next calls: the end
   of a shared Background, or of shared When steps), when a scenario passes it with the train up to date, if
   simulating to it costs more than restoring it; within a byte budget, least recently used dropped first.
-- A backend offers snapshots by implementing `TrainDriver.snapshot`/`from_snapshot` (the references pickle
-  themselves: `PickledState`). One that raises `NotSupported` (a rig, a remote train) simply simulates;
-  one whose snapshot fails otherwise (an unpicklable part in a custom backend) simulates too, and the run
-  says why in one line (`SnapshotCache.notes`).
+- Only a backend that declares itself `DETERMINISTIC` is journaled (the `sut` fixture drives any other,
+  a rig or a remote train, call by call). It offers snapshots by implementing `TrainDriver.snapshot` /
+  `from_snapshot` (the references pickle themselves: `PickledState`); one that raises `NotSupported`
+  simply simulates; a state whose snapshot fails otherwise (an unpicklable part in a custom backend) is
+  simulated instead, and the run says why in one line (`SnapshotCache.notes`).
 - A call with arguments that cannot be a key (a list of balise packets) or a method the driver interface
   does not know ends the journal for the scenario: it goes on with its own driver, as without snapshots.
 """
@@ -41,8 +42,8 @@ from sut.trace import Trace, TraceEvent
 
 # Driver calls that only observe (besides the properties now_us, powered and trace): they never change it.
 READS = frozenset({
-    "counters", "input", "output", "reading", "vehicle_names", "rated_limits", "records", "ring_nodes", "boards", "devices", "token_holder", "monitor",
-    "status_table", "lamp", "block_store", "describe",
+    "counters", "input", "output", "reading", "vehicle_names", "rated_limits", "records", "ring_nodes",
+    "boards", "devices", "token_holder", "monitor", "status_table", "lamp", "block_store", "describe",
 })
 # Driver calls that act on the train: journaled, deferred where the cache knows them.
 INPUTS = frozenset({
