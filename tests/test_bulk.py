@@ -1,4 +1,5 @@
-"""Bulk advance (sut/reference/bulk.py) must give exactly what frame-by-frame simulation gives.
+"""Bulk advance (sut/reference/bulk.py) must give exactly what frame-by-frame simulation gives, on the CRH2
+train and on the ATP rig (alone and fitted to a CRH2 set).
 
 The comparison is of every leaf of the train's state (bulk.snapshot: clocks, counters, queues, timers,
 frames in flight), plus what the driver shows: counters, records, the monitor.
@@ -9,6 +10,7 @@ import pytest
 
 from sut.reference import bulk
 from steps.longrun import skips
+from sut.reference.atp.backend import OUTPUTS as ATP_OUTPUTS, ReferenceAtp
 from sut.reference.crh2.backend import ReferenceTrain
 
 S = 1_000_000
@@ -145,3 +147,50 @@ def test_a_token_hold_of_10_25_ms_makes_the_steady_period_123_s() -> None:
     train = TenQuarterHold()
     train.power_on()
     assert bulk.steady_period_us(train.train) == 123 * S > bulk.SAMPLE_US
+
+
+# -- the ATP rig (profile atp), alone and fitted to a CRH2 set: the same rule -------------------------
+def atp_rig(fitted: bool = False) -> ReferenceAtp:
+    rig = ReferenceAtp()
+    rig.configure(sets=1, **({"cars_per_set": 8} if fitted else {}))
+    rig.power_on()
+    rig.advance(30 * S)                      # past the start-up self-test
+    if fitted:
+        rig.insert_key(1)
+        rig.set_direction(1, "forward")
+    return rig
+
+
+def assert_same_rig(exact: ReferenceAtp, fast: ReferenceAtp) -> None:
+    assert exact.now_us == fast.now_us
+    a, b = bulk.snapshot(exact), bulk.snapshot(fast)
+    assert a.shape == b.shape, "the state has a different shape after the bulk run"
+    assert a.ints == b.ints, "values differ after the bulk run"
+    assert [exact.output(name) for name in ATP_OUTPUTS] == [fast.output(name) for name in ATP_OUTPUTS]
+    assert exact.records("ATP") == fast.records("ATP")
+    assert sum(ev["jumps"] for ev in fast.trace.select(kind="bulk.report")) >= 1, "nothing was jumped"
+
+
+def test_the_atp_rig_agrees_both_ways_through_brake_demands_and_a_low_supply() -> None:
+    def script(rig: ReferenceAtp, run) -> None:
+        run(2 * MIN)
+        rig.set_input("ATP emergency brake", True)       # contact timings: one-shot timers pending
+        run(1 * MIN)
+        rig.set_input("ATP emergency brake", False)
+        rig.set_supply_voltage("VDX", 90.0)
+        run(2 * MIN)
+        rig.set_input("speed", 120.0)
+        run(1 * MIN + 123_456)
+
+    exact, fast = atp_rig(), atp_rig()
+    script(exact, exact.advance)
+    script(fast, lambda us: fast.soak(us))
+    assert_same_rig(exact, fast)
+
+
+def test_the_atp_fitted_to_a_crh2_set_agrees_both_ways() -> None:
+    exact, fast = atp_rig(fitted=True), atp_rig(fitted=True)
+    exact.advance(75 * S)
+    fast.soak(75 * S)
+    assert_same_rig(exact, fast)
+    assert exact.output("traction") == fast.output("traction")

@@ -33,6 +33,8 @@ from sut.reference.atp.config import POSTPONE, AtpConfig
 from sut.reference.atp.onboard import CARRIER_SETS, OnboardAtp
 from sut.reference.atp.vdx import VdxInterface
 from sut.reference.crh2.backend import ReferenceTrain
+from sut.reference import bulk
+from sut.reference.bulk import cyclic_period_us
 from sut.reference.kernel import Kernel
 from sut.trace import Trace, TraceEvent
 
@@ -78,6 +80,24 @@ class ReferenceAtp(PickledState, TrainDriver):
 
     def _emit(self, source: str, kind: str, **fields: Any) -> None:
         self._events.append(TraceEvent(self.kernel.now, source, kind, fields))
+
+    # -- long runs: bulk advance (sut/reference/bulk.py) reads the rig itself as its model --------------
+    BULK_SKIP = ("_events",)          # the trace is history, not state
+
+    @property
+    def events(self) -> list[TraceEvent]:
+        return self._events
+
+    def emit(self, source: str, kind: str, /, **fields: Any) -> None:
+        self._emit(source, kind, **fields)
+
+    def bulk_period_us(self) -> int:
+        """The steady period: every cyclic activity (CFSK comparisons, the VDX self-test every 5 s) and, when
+        fitted to a CRH2 set, the train's own (its token rotation)."""
+        return cyclic_period_us(self.kernel, *([self._crh2.train.bulk_period_us()] if self._crh2 else []))
+
+    def _soak(self, us: int, sample_every_us: int | None) -> None:
+        bulk.soak(self, us, sample_every_us)
 
     # -- life cycle and time -------------------------------------------------------------------
     def configure(self, *, sets: int = 1, cars_per_set: int | None = None) -> None:
