@@ -11,10 +11,9 @@ every step of every feature against it); pytest-bdd then does the rest (scope or
 """
 from __future__ import annotations
 
+import importlib
 from collections.abc import Iterator
 from typing import Any
-
-import importlib
 
 from pytest_bdd.compat import get_fixture_names, getfixturedefs
 from pytest_bdd.steps import step_function_context_registry
@@ -33,8 +32,7 @@ class StepIndex:
         self._matches: dict[tuple[str, str | None, str], list[Any]] = {}
 
     def _scope(self, node: Any) -> str | None:
-        module = node.parent if node.parent is not None else None
-        return getattr(module, "nodeid", None)
+        return getattr(node.parent, "nodeid", None)
 
     def _candidates_for(self, scope: str, node: Any) -> list[tuple[Any, Any]]:
         found = self._candidates.get(scope)
@@ -62,14 +60,18 @@ class StepIndex:
         return matched
 
 
+def _template(function: Any) -> Any:
+    return registry_get_safe(_SCENARIO.scenario_wrapper_template_registry, function)
+
+
 def template_of(item: Any) -> Any:
     """The pytest-bdd scenario template behind a test item (None for an item that is not a scenario)."""
-    return registry_get_safe(_SCENARIO.scenario_wrapper_template_registry, getattr(item, "obj", None))
+    return _template(getattr(item, "obj", None))
 
 
 def is_scenario(function: Any) -> bool:
     """Whether a test function is a pytest-bdd scenario."""
-    return registry_get_safe(_SCENARIO.scenario_wrapper_template_registry, function) is not None
+    return _template(function) is not None
 
 
 def index_of(fixturemanager: Any) -> StepIndex:

@@ -117,11 +117,15 @@ def _profiles_of(item: pytest.Item) -> list[str]:
     return [str(arg) for mark in item.iter_markers("profile") for arg in mark.args]
 
 
+def _first_sut(config: pytest.Config) -> type[TrainDriver]:
+    return next(iter(config.stash[_SUTS].values()))
+
+
 def _sut_of(item: pytest.Item, config: pytest.Config) -> type[TrainDriver]:
     callspec = getattr(item, "callspec", None)
     if callspec is not None and "sut_class" in callspec.params:
         return callspec.params["sut_class"]
-    return next(iter(config.stash[_SUTS].values()))
+    return _first_sut(config)
 
 
 def pytest_collection_modifyitems(config: pytest.Config, items: list[pytest.Item]) -> None:
@@ -158,7 +162,7 @@ def pytest_collection_modifyitems(config: pytest.Config, items: list[pytest.Item
 def sut_class(request: pytest.FixtureRequest) -> type[TrainDriver]:
     """The backend of this scenario: the one --sut (with several, pytest_generate_tests parametrizes this name
     directly, and each value stands in for this fixture)."""
-    return next(iter(request.config.stash[_SUTS].values()))
+    return _first_sut(request.config)
 
 
 _BOUNDS = pytest.StashKey[list]()

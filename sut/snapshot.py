@@ -332,13 +332,11 @@ class SnapshotDriver:
                     self._cache.deferred += 1
                     return None
                 driver = self._needed()
-                started = time.perf_counter()
                 try:
-                    result = getattr(driver, name)(*args, **kwargs)
+                    result = self._run(driver, node, name, args, kwargs)
                 except BaseException:
                     self._live = False                    # whatever it left half done is not a key
                     raise
-                self._cache.ran(node, time.perf_counter() - started)
                 self._node = node
                 return result
         return getattr(self._up_to_date(), name)(*args, **kwargs)
@@ -357,11 +355,16 @@ class SnapshotDriver:
         if self._driver is None:
             self._driver = self._cls.open(self._profile)
         for node, name, args, kwargs in replay:
-            started = time.perf_counter()
-            getattr(self._driver, name)(*args, **kwargs)
-            self._cache.ran(node, time.perf_counter() - started)
+            self._run(self._driver, node, name, args, kwargs)
             self._cache.checkpoint(node, self._driver)   # a branch passed on the way is worth keeping
         return self._driver
+
+    def _run(self, driver: TrainDriver, node: int, name: str, args: tuple, kwargs: dict) -> Any:
+        """One journaled call on the real driver, its cost noted for the key it leads to."""
+        started = time.perf_counter()
+        result = getattr(driver, name)(*args, **kwargs)
+        self._cache.ran(node, time.perf_counter() - started)
+        return result
 
     def _needed(self) -> TrainDriver:
         """The driver up to date, because the scenario needs the train itself at this key."""

@@ -34,8 +34,8 @@ from sut.reference.kernel import Kernel, Timer
 class Train(Protocol):
     """What bulk advance needs of a model: its kernel, its trace, how it emits, and its steady period (the
     least common multiple of everything that repeats in it; a model that repeats more slowly than its
-    kernel's cyclic activities, such as a token going round a ring, says so). Every reference train is one:
-    the CRH2 train, the metro TCDS and the ATP rig."""
+    kernel's cyclic activities, such as a token going round a ring, says so). The CRH2 train and the ATP rig
+    are such models; the metro TCDS is not yet (its I/O life signal wraps inside the model)."""
 
     kernel: Kernel
     events: list
