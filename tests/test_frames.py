@@ -12,10 +12,10 @@ from hypothesis import HealthCheck, example, given, settings
 from hypothesis import strategies as st
 
 from sut.reference.crh2 import frames
-from sut.reference.crh2.frames import (BROADCAST, COMMAND, EOT, K_BLOCK, K_COMMAND, K_STATUS, K_TOKEN_INIT,
-                                  K_TOKEN_SEND, MAX_DATA, P_COMMAND, P_STATUS, SOH, STATUS, FrameError,
-                                  check_ok, crc16_arc, crc16_x25, data_frame, decode_pac, decode_payload,
-                                  encode_pac, token_frame, tx_time_us)
+from sut.reference.crh2.frames import (BROADCAST, COMMAND, EOT, ITT, K_BLOCK, K_COMMAND, K_STATUS, K_TOKEN_INIT,
+                                  K_TOKEN_SEND, MAX_DATA, P_BLOCK, P_COMMAND, P_STATUS, P_TOKEN, PAC_LONG, PAC_SHORT,
+                                  SOH, STATUS, FrameError, check_ok, crc16_arc, crc16_x25, data_frame, decode_pac,
+                                  decode_payload, encode_itt, encode_pac, token_frame, tx_time_us)
 
 # Loaded machines (2 cores, benches beside us) make per-example deadlines flaky; the tests are not timing tests.
 relaxed = settings(deadline=None, suppress_health_check=[HealthCheck.too_slow])
@@ -89,6 +89,45 @@ def test_round_trip_property(sid, did, data):
     assert wire[0] == SOH
     assert decode_pac(wire) == (sid, did, data)
     assert check_ok(wire)
+
+
+@relaxed
+@given(sid=node_ids, did=node_ids, data=valid_data)
+@example(sid=0, did=0, data=b"\x00" * 253)
+@example(sid=255, did=255, data=b"\xff" * 257)
+def test_encode_pac_is_the_declared_layout(sid, did, data):
+    """encode_pac puts the packet together by hand (speed): byte for byte what PAC_SHORT/PAC_LONG build."""
+    n = len(data)
+    layout, il = (PAC_SHORT, 256 - n) if n <= 253 else (PAC_LONG, 512 - n)
+    declared = layout.build(dict(sid=sid, did=did, did2=did, il=il, data=data, crc=0))
+    assert encode_pac(sid, did, data) == declared[:-2] + crc16_arc(declared[1:-2]).to_bytes(2, "little")
+
+
+@pytest.mark.parametrize("did", [0, 1, 0x7F, 0xFF])
+def test_encode_itt_is_the_declared_layout(did):
+    assert encode_itt(did) == ITT.build(dict(did=did, did2=did))
+
+
+@pytest.mark.parametrize("bad", [-1, 256])
+def test_node_ids_outside_a_byte_are_refused(bad):
+    with pytest.raises(FrameError, match="one byte"):
+        encode_pac(bad, 1, b"x")
+    with pytest.raises(FrameError, match="one byte"):
+        encode_pac(1, bad, b"x")
+    with pytest.raises(FrameError, match="one byte"):
+        encode_itt(bad)
+
+
+def test_a_sent_frame_passes_the_frame_check_by_construction():
+    """Frames built by the sender skip the receivers' CRC recomputation (Frame._ok): valid for every kind
+    the reference sends, damaged copies excepted."""
+    sent = [command_frame(), status_frame(), token_frame(2, 3),
+            data_frame(K_TOKEN_INIT, 4, BROADCAST, P_TOKEN, node=4),
+            data_frame(K_TOKEN_SEND, 4, BROADCAST, P_TOKEN, node=4),
+            data_frame(K_BLOCK, 5, 1, P_BLOCK, owner=5, record=70_000, index=0, total=1, data=bytes(236))]
+    for frame in sent:
+        assert frame.ok and check_ok(frame.wire), frame.name
+        assert not frame.corrupted().ok, frame.name
 
 
 @pytest.mark.parametrize("n", INVALID_LENGTHS)

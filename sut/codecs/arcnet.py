@@ -80,14 +80,23 @@ class FrameError(ValueError):
 
 
 def encode_pac(sid: int, did: int, data: bytes) -> bytes:
+    """The packet PAC_SHORT or PAC_LONG declare, put together directly: every frame on the ring is encoded
+    here, and building through the declared layout costs ~14 us a frame (tests/test_frames.py holds the
+    two equal). Node IDs outside 0..255 are refused as the layout would refuse them."""
     n = len(data)
     if not 1 <= n <= MAX_DATA or 254 <= n <= 256:
         raise FrameError(f"ARCNET packet data length {n} not allowed (1..253 or 257..508 bytes)")
-    if n <= 253:
-        body = PAC_SHORT.build(dict(sid=sid, did=did, did2=did, il=256 - n, data=data, crc=0))
-    else:
-        body = PAC_LONG.build(dict(sid=sid, did=did, did2=did, il=512 - n, data=data, crc=0))
-    return body[:-2] + crc16_arc(body[1:-2]).to_bytes(2, "little")
+    if not (0 <= sid <= 0xFF and 0 <= did <= 0xFF):
+        raise FrameError(f"ARCNET node IDs are one byte: source {sid}, destination {did}")
+    packet = bytes((SOH, sid, did, did, 256 - n) if n <= 253 else (SOH, sid, did, did, 0, 512 - n)) + data
+    return packet + crc16_arc(packet[1:]).to_bytes(2, "little")
+
+
+def encode_itt(did: int) -> bytes:
+    """A token (ITT): EOT and the destination twice."""
+    if not 0 <= did <= 0xFF:
+        raise FrameError(f"ARCNET node IDs are one byte: destination {did}")
+    return bytes((EOT, did, did))
 
 
 def declared_length(wire: bytes) -> tuple[int, int]:

@@ -9,7 +9,7 @@ from construct import (Byte, Bytes, Const, Construct, ConstructError, Int16ub, I
 
 from sut.codecs.arcnet import (ALERT_BITS, BITS_PER_BYTE, BROADCAST, EOT, ITT, MAX_DATA, PAC_LONG,  # noqa: F401
                                PAC_SHORT, SOH, FrameError, crc16_arc, crc16_x25, declared_length, decode_pac,
-                               encode_pac)
+                               encode_itt, encode_pac)
 
 
 def check_ok(wire: bytes) -> bool:
@@ -119,6 +119,9 @@ class Frame:
     wire: bytes
     fields: dict[str, Any]
     uid: int = 0                      # one transmission; the ring numbers it when it is first sent
+    # The frame check's verdict, once known. A frame the sender encoded passes by construction (encode_pac
+    # writes a valid layout and its CRC: tests/test_frames.py), so the receivers do not recompute the CRC
+    # of every good frame; a damaged copy (corrupted) starts unknown and is checked.
     _ok: bool | None = None
 
     # For a bulk advance (bulk.py): the wire image follows from the fields, so only they are extrapolated.
@@ -164,11 +167,11 @@ def build_payload(kind: int, fields: dict[str, Any]) -> bytes:
 
 
 def data_frame(kind: int, src: int, dst: int, prio: int, **fields: Any) -> Frame:
-    return Frame(kind, src, dst, prio, encode_pac(src, dst, build_payload(kind, fields)), fields)
+    return Frame(kind, src, dst, prio, encode_pac(src, dst, build_payload(kind, fields)), fields, 0, True)
 
 
 def token_frame(src: int, dst: int) -> Frame:
-    return Frame(EOT, src, dst, P_TOKEN, ITT.build(dict(did=dst, did2=dst)), {})
+    return Frame(EOT, src, dst, P_TOKEN, encode_itt(dst), {}, 0, True)
 
 
 def decode_payload(data: bytes) -> dict[str, Any]:
