@@ -22,7 +22,7 @@ from pathlib import Path
 sys.path.insert(0, str(Path(__file__).resolve().parents[1]))      # the project root: `tests` below
 
 from sut.reference import bulk                                      # noqa: E402
-from tests.test_bulk import S, powered   # noqa: E402  the same powered train the agreement test uses
+from tests.test_bulk import S, frame_by_frame as exactly, powered   # noqa: E402  as the agreement tests do
 
 HOUR = 3600 * S
 
@@ -32,7 +32,8 @@ def frame_by_frame(minutes: float) -> tuple[float, int, int]:
     k0, t0 = train.train.kernel.events, len(train.train.events)
     span = round(minutes * 60 * S)
     wall = time.perf_counter()
-    train.advance(span)
+    with exactly():                     # a plain advance would skip steady periods too (bulk.advance)
+        train.advance(span)
     wall = time.perf_counter() - wall
     per_hour = HOUR / span
     return wall * per_hour, round((train.train.kernel.events - k0) * per_hour), round((len(train.train.events) - t0) * per_hour)
@@ -57,7 +58,8 @@ def peak_memory(hours: float, every_h: float) -> int:
 
 def agree(minutes: float) -> bool:
     exact, fast = powered(), powered()
-    exact.advance(round(minutes * 60 * S))
+    with exactly():
+        exact.advance(round(minutes * 60 * S))
     fast.soak(round(minutes * 60 * S), sample_every_us=10 * 60 * S)
     a, b = bulk.snapshot(exact.train), bulk.snapshot(fast.train)
     return a.shape == b.shape and a.ints == b.ints

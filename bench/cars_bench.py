@@ -138,6 +138,9 @@ def mem_run(res: Result, sut: str, cars_per_set: int, sim_us: int) -> None:
 
 
 def main(argv: list[str] | None = None) -> int:
+    # Simulation speed is measured frame by frame: a plain advance of the reference would skip steady
+    # periods (sut/reference/bulk.py); the variable reaches a remote server started from here too.
+    os.environ["CRH2_FRAME_BY_FRAME"] = "1"
     ap = argparse.ArgumentParser(description=__doc__.split("\n\n")[0])
     ap.add_argument("--sim-seconds", type=float, default=10.0,
                     help="simulated seconds of the measured advance (default 10)")

@@ -47,6 +47,7 @@ from __future__ import annotations
 
 import argparse
 import gc
+import os
 import sys
 import time
 import tracemalloc
@@ -442,6 +443,9 @@ def report(results: list[Result], ref: RefResult | None, sim_us: int, repeat: in
 
 
 def main(argv: list[str] | None = None) -> int:
+    # Simulation speed is measured frame by frame: a plain advance of the reference would skip steady
+    # periods (sut/reference/bulk.py); the variable reaches a remote server started from here too.
+    os.environ["CRH2_FRAME_BY_FRAME"] = "1"
     ap = argparse.ArgumentParser(
         description="Compare SimPy 4 with sut.reference.kernel.Kernel on a CRH2 ring workload, then time "
                     "the full reference model.")

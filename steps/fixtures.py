@@ -5,6 +5,8 @@ and the SUT is shut down; a backend that raised inside its simulation fails the 
 """
 from __future__ import annotations
 
+import os
+
 import gc
 import re
 from pathlib import Path
@@ -35,6 +37,9 @@ def pytest_addoption(parser: pytest.Parser) -> None:
     group.addoption("--no-snapshots", action="store_true", default=False,
                     help="simulate every scenario from power-up, never from a copy of a state another "
                          "scenario reached (sut/snapshot.py); verdicts and traces are the same either way")
+    group.addoption("--frame-by-frame", action="store_true", default=False,
+                    help="the reference simulates every advance frame by frame instead of skipping steady "
+                         "periods (sut/reference/bulk.py); verdicts and traces are the same either way")
     group.addoption("--trace-dir", default=None, metavar="DIR",
                     help="also write each scenario's whole trace to DIR/<test id>.csv (to compare runs: two "
                          "runs of one SUT, in-process against remote, serial against -n auto)")
@@ -62,6 +67,10 @@ def pytest_configure(config: pytest.Config) -> None:
             raise pytest.UsageError(f"--sut: {exc}") from None
     config.stash[_SUTS] = suts
     config.stash[_SNAPSHOTS] = SnapshotCache()
+    if config.getoption("--frame-by-frame"):
+        # An environment variable, not an import of the reference: the steps know only the driver, and a
+        # remote server started from this run (or an xdist worker) inherits it.
+        os.environ["CRH2_FRAME_BY_FRAME"] = "1"
 
 
 @pytest.hookimpl(trylast=True)

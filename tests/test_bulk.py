@@ -1,10 +1,18 @@
 """Bulk advance (sut/reference/bulk.py) must give exactly what frame-by-frame simulation gives, on the CRH2
-train and on the ATP rig (alone and fitted to a CRH2 set).
+train and on the ATP rig (alone and fitted to a CRH2 set), in long soaks and in plain advances.
 
 The comparison is of every leaf of the train's state (bulk.snapshot: clocks, counters, queues, timers,
-frames in flight), plus what the driver shows: counters, records, the monitor.
+frames in flight), plus what the driver shows: counters, records, the monitor; for advances, which owe the
+whole trace, of the trace too, byte for byte.
 """
 from __future__ import annotations
+
+import re
+import subprocess
+import sys
+from contextlib import contextmanager
+from pathlib import Path
+from typing import Iterator
 
 import pytest
 
@@ -12,6 +20,8 @@ from sut.reference import bulk
 from steps.longrun import skips
 from sut.reference.atp.backend import OUTPUTS as ATP_OUTPUTS, ReferenceAtp
 from sut.reference.crh2.backend import ReferenceTrain
+from tests.helpers import traces, verdicts
+from tests.test_faulty_variants import ROOT
 
 S = 1_000_000
 MIN = 60 * S
@@ -26,11 +36,38 @@ def powered() -> ReferenceTrain:
     return train
 
 
-def both_ways(script, sample_every_us: int | None = None) -> tuple[ReferenceTrain, ReferenceTrain]:
-    """Run `script(train, run)` twice: `run(us)` advances frame by frame in one, in bulk in the other."""
+@contextmanager
+def frame_by_frame() -> Iterator[None]:
+    """Every advance frame by frame, as pytest --frame-by-frame runs them."""
+    saved, bulk.FRAME_BY_FRAME = bulk.FRAME_BY_FRAME, True
+    try:
+        yield
+    finally:
+        bulk.FRAME_BY_FRAME = saved
+
+
+@pytest.fixture
+def jumps(monkeypatch: pytest.MonkeyPatch) -> list[int]:
+    """The periods each skip of a bulk advance jumped over (advances leave no mark in the trace)."""
+    seen: list[int] = []
+    skip = bulk._skip
+
+    def counted(*args):
+        periods = skip(*args)
+        seen.extend([periods] if periods else [])
+        return periods
+
+    monkeypatch.setattr(bulk, "_skip", counted)
+    return seen
+
+
+def both_ways(script, sample_every_us: int | None = None, *, soak: bool = True) -> tuple[ReferenceTrain, ReferenceTrain]:
+    """Run `script(train, run)` twice: `run(us)` advances frame by frame in one, in bulk in the other (a
+    soak, or with soak=False a plain advance)."""
     exact, fast = powered(), powered()
-    script(exact, lambda us: exact.advance(us))
-    script(fast, lambda us: fast.soak(us, sample_every_us=sample_every_us))
+    with frame_by_frame():
+        script(exact, lambda us: exact.advance(us))
+    script(fast, (lambda us: fast.soak(us, sample_every_us=sample_every_us)) if soak else fast.advance)
     return exact, fast
 
 
@@ -183,14 +220,114 @@ def test_the_atp_rig_agrees_both_ways_through_brake_demands_and_a_low_supply() -
         run(1 * MIN + 123_456)
 
     exact, fast = atp_rig(), atp_rig()
-    script(exact, exact.advance)
+    with frame_by_frame():
+        script(exact, exact.advance)
     script(fast, lambda us: fast.soak(us))
     assert_same_rig(exact, fast)
 
 
 def test_the_atp_fitted_to_a_crh2_set_agrees_both_ways() -> None:
     exact, fast = atp_rig(fitted=True), atp_rig(fitted=True)
-    exact.advance(75 * S)
+    with frame_by_frame():
+        exact.advance(75 * S)
     fast.soak(75 * S)
     assert_same_rig(exact, fast)
     assert exact.output("traction") == fast.output("traction")
+
+
+# -- plain advances skip steady periods too, and owe the whole trace ---------------------------------
+def test_advances_with_faults_repairs_and_a_cut_give_the_same_state_and_trace(jumps: list[int]) -> None:
+    def script(train: ReferenceTrain, run) -> None:
+        run(40 * S)
+        train.fail("car4.LCU.MDM9")
+        run(30 * S)
+        train.repair("car4.LCU.MDM9")
+        train.set_traction(1, 5)
+        run(25 * S)
+        train.cut_link("car3.LCU", "car4.LCU")
+        run(20 * S + 1234)                                  # not a whole number of periods
+        train.restore_link("car3.LCU", "car4.LCU")
+        train.request_block_transfer("car7.LCU", b"x" * 600)
+        run(33 * S)
+
+    exact, fast = both_ways(script, soak=False)
+    assert_same(exact, fast)
+    assert fast.trace.to_csv() == exact.trace.to_csv()
+    assert len(jumps) >= 4 and sum(jumps) >= 25, jumps      # the cut link re-forms the token: maybe not steady
+
+
+def test_an_advance_stops_short_of_a_pending_one_shot_timer(jumps: list[int]) -> None:
+    def script(train: ReferenceTrain, run) -> None:
+        train.set_input("neutral section signal", "warning")    # a 15 s entry timeout (DECISIONS.md)
+        run(40 * S)
+
+    exact, fast = both_ways(script, soak=False)
+    assert_same(exact, fast)
+    assert fast.trace.to_csv() == exact.trace.to_csv()
+    assert jumps, "nothing was skipped after the timeout"
+
+
+def test_an_advance_through_a_ramp_gives_the_same_state_and_trace(jumps: list[int]) -> None:
+    def script(train: ReferenceTrain, run) -> None:
+        train.ramp_input("main pipe pressure", 680, 5)          # 20 s from 780 kPa
+        run(45 * S)
+
+    exact, fast = both_ways(script, soak=False)
+    assert_same(exact, fast)
+    assert fast.trace.to_csv() == exact.trace.to_csv()
+    assert jumps, "nothing was skipped after the ramp"
+
+
+def test_short_advances_are_frame_by_frame(jumps: list[int]) -> None:
+    train = powered()
+    train.advance(3 * bulk.steady_period_us(train.train) - 1)
+    assert not jumps
+
+
+@pytest.mark.parametrize("fitted", [False, True], ids=["rig", "fitted to a CRH2 set"])
+def test_the_atp_rig_advances_in_bulk_with_the_same_state_and_trace(fitted: bool, jumps: list[int]) -> None:
+    def script(rig: ReferenceAtp, run) -> None:
+        period = bulk.steady_period_us(rig)           # 5 s alone (the VDX self-test), 15 s fitted to 8 cars
+        rig.set_input("ATP emergency brake", True)
+        run(4 * period + 777)                         # one period to settle, two to find the line, one to skip
+        if fitted:                         # a moving CRH2 set is not steady (its mileage); 15 s periods cost
+            return
+        rig.set_input("ATP emergency brake", False)
+        rig.set_input("speed", 120.0)
+        run(4 * period)
+
+    exact, fast = atp_rig(fitted), atp_rig(fitted)
+    with frame_by_frame():
+        script(exact, exact.advance)
+    script(fast, fast.advance)
+    assert exact.now_us == fast.now_us
+    a, b = bulk.snapshot(exact), bulk.snapshot(fast)
+    assert a.shape == b.shape and a.ints == b.ints
+    assert [exact.output(name) for name in ATP_OUTPUTS] == [fast.output(name) for name in ATP_OUTPUTS]
+    assert fast.trace.to_csv() == exact.trace.to_csv()
+    assert jumps
+
+
+# -- the feature suite both ways: items whose scenarios advance long enough to skip, crh2 and atp ---------
+LONG_ADVANCES = "H-WSV-01,H-WSV-02,F-ILK-04,F-ATP-05,F-ATP-12"
+
+
+def _features(trace_dir: Path, *args: str) -> subprocess.CompletedProcess:
+    cmd = [sys.executable, "-m", "pytest", "features", "-q", "-rA", "-p", "no:cacheprovider", "-p", "no:xdist",
+           "-p", "tests.bulk_count_plugin", f"--item={LONG_ADVANCES}", f"--trace-dir={trace_dir}", *args]
+    return subprocess.run(cmd, cwd=ROOT, capture_output=True, text=True, timeout=900)
+
+
+def test_the_features_give_the_same_verdicts_and_traces_in_bulk_and_frame_by_frame(tmp_path: Path) -> None:
+    fast = _features(tmp_path / "bulk")
+    exact = _features(tmp_path / "exact", "--frame-by-frame")
+    for run in (fast, exact):
+        assert run.returncode == 0, run.stdout[-3000:] + run.stderr[-2000:]
+    skips = {name: re.search(r"^BULK SKIPPED (\d+) (\d+)$", run.stdout, re.M) for name, run in
+             (("bulk", fast), ("exact", exact))}
+    assert skips["exact"] and skips["exact"].group(1) == "0", "--frame-by-frame still skipped"
+    assert skips["bulk"] and int(skips["bulk"].group(2)) >= 120 * S, f"too little skipped: {skips['bulk']}"
+    assert verdicts(fast.stdout) == verdicts(exact.stdout) and len(verdicts(fast.stdout)) >= 15
+    expected, found = traces(tmp_path / "exact"), traces(tmp_path / "bulk")
+    differ = [name for name in expected if found.get(name) != expected[name]]
+    assert not differ and found.keys() == expected.keys(), f"traces differ: {differ[:5]}"

@@ -66,8 +66,7 @@ class ReferenceTrain(PickledState, TrainDriver):
         return self.train.kernel.now
 
     def _advance(self, us: int) -> None:
-        kernel = self.train.kernel
-        kernel.run(kernel.now + us)
+        bulk.advance(self.train, self.train.kernel.now + us)        # steady periods skipped, trace and all
 
     # -- long runs -----------------------------------------------------------------------------
     def _soak(self, us: int, sample_every_us: int | None) -> None:
