@@ -67,8 +67,8 @@ class RingNode:
         self.train.emit(at or f"{self.name}.MDM8", kind, **fields)
 
     @property
-    def optics_alive(self) -> bool:
-        return self.mdm8.alive
+    def optics(self) -> Board:
+        return self.mdm8
 
     def port_ok(self, direction: str) -> bool:
         return self.mdm8.alive and self.ports[direction].usable

@@ -24,6 +24,10 @@ R, L = "R", "L"     # R: increasing node number, L: decreasing
 OPPOSITE = {R: L, L: R}
 
 
+class Optics(Protocol):
+    alive: bool
+
+
 class RingNode(Protocol):
     """What the ring needs of a node on it (node.py's RingNode is one; the ring does not import it)."""
 
@@ -33,7 +37,7 @@ class RingNode(Protocol):
     out: dict[str, "Link"]
     seen: set[int]
     frames_discarded: int
-    optics_alive: bool
+    optics: Optics                  # its MDM8: light on both ports while it is alive
 
     def port_ok(self, direction: str) -> bool: ...
 
@@ -47,6 +51,7 @@ class RingNode(Protocol):
 class Span:
     def __init__(self, a: "RingNode", b: "RingNode", medium: str):
         self.a, self.b = a, b
+        self._optics = (a.optics, b.optics)     # read on every frame: the boards, not the nodes' properties
         self.medium = medium
         self.cut = False
         self.corrupt: dict[tuple[str, int], int] = {}   # (sending node, frame kind) -> frames to corrupt
@@ -59,7 +64,8 @@ class Span:
 
     @property
     def usable(self) -> bool:
-        return not self.cut and self.a.optics_alive and self.b.optics_alive
+        optics_a, optics_b = self._optics
+        return not self.cut and optics_a.alive and optics_b.alive
 
 
 class Link:
