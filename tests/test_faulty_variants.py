@@ -7,6 +7,7 @@ collection instead of one per variant.
 """
 from __future__ import annotations
 
+import fcntl
 import json
 import os
 import subprocess
@@ -29,12 +30,30 @@ def run_features(variant: type, *args: str, sut: str | None = None) -> subproces
 
 
 @pytest.fixture(scope="session")
-def faulty_verdicts(tmp_path_factory: pytest.TempPathFactory) -> dict[str, list[tuple[str, str]]]:
-    """(test id, outcome) of every scenario run against each faulty variant, by variant class name."""
+def faulty_verdicts(request: pytest.FixtureRequest,
+                    tmp_path_factory: pytest.TempPathFactory) -> dict[str, list[tuple[str, str]]]:
+    """(test id, outcome) of every scenario run against each faulty variant, by variant class name.
+
+    One run per pytest run, however many xdist workers ask: the first takes a lock in the run's shared
+    temporary folder, runs it and leaves the verdicts there; the others wait and read them (pytest-xdist's
+    pattern for session fixtures). `--dist loadgroup` with the xdist_group mark used to keep these tests on
+    one worker, but silently stopped grouping under pytest 9.2 (pytest-dev/pytest-xdist#1386): each worker
+    ran the whole faulty run again."""
+    base = tmp_path_factory.getbasetemp()
+    shared = base.parent if hasattr(request.config, "workerinput") else base
+    done = shared / "faulty-verdicts.json"
+    with open(shared / "faulty-verdicts.lock", "w") as lock:
+        fcntl.flock(lock, fcntl.LOCK_EX)                  # released when the file is closed
+        if not done.exists():
+            done.write_text(json.dumps(_run_faulty_variants(shared)), encoding="utf-8")
+        return json.loads(done.read_text(encoding="utf-8"))
+
+
+def _run_faulty_variants(folder: Path) -> dict[str, list[tuple[str, str]]]:
     plan: dict[str, list[str]] = defaultdict(list)
     for variant, _, item in FAULTY:
         plan[variant.__name__].append(item)
-    plan_file = tmp_path_factory.mktemp("plan") / "plan.json"
+    plan_file = folder / "faulty-plan.json"
     plan_file.write_text(json.dumps(plan), encoding="utf-8")
     suts = [f"--sut=tests.variants:{name}" for name in plan]
     result = subprocess.run(
@@ -56,7 +75,7 @@ def test_at_least_twelve_requirements_have_a_faulty_variant() -> None:
     assert len({req for _, req, _ in FAULTY}) >= 12
 
 
-@pytest.mark.xdist_group("faulty-variants")         # one worker runs the shared run (make test: --dist loadgroup)
+@pytest.mark.xdist_group("faulty-variants")         # one worker, where --dist loadgroup still groups (see above)
 @pytest.mark.parametrize(("variant", "requirement", "item"), FAULTY,
                          ids=[f"{v.__name__}-{r}" for v, r, _ in FAULTY])
 def test_features_reject_faulty_variant(faulty_verdicts: dict, variant: type, requirement: str, item: str) -> None:
