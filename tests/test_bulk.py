@@ -1,5 +1,5 @@
 """Bulk advance (sut/reference/bulk.py) must give exactly what frame-by-frame simulation gives, on the CRH2
-train and on the ATP rig (alone and fitted to a CRH2 set), in long soaks and in plain advances.
+train, the metro TCDS and the ATP rig (alone and fitted to a CRH2 set), in long soaks and in plain advances.
 
 The comparison is of every leaf of the train's state (bulk.snapshot: clocks, counters, queues, timers,
 frames in flight), plus what the driver shows: counters, records, the monitor; for advances, which owe the
@@ -20,6 +20,7 @@ from sut.reference import bulk
 from steps.longrun import skips
 from sut.reference.atp.backend import OUTPUTS as ATP_OUTPUTS, ReferenceAtp
 from sut.reference.crh2.backend import ReferenceTrain
+from sut.reference.metro.backend import ReferenceMetro
 from tests.helpers import traces, verdicts
 from tests.test_faulty_variants import ROOT
 
@@ -302,8 +303,47 @@ def test_the_atp_rig_advances_in_bulk_with_the_same_state_and_trace(fitted: bool
     assert jumps
 
 
-# -- the feature suite both ways: items whose scenarios advance long enough to skip, crh2 and atp ---------
-LONG_ADVANCES = "H-WSV-01,H-WSV-02,F-ILK-04,F-ATP-05,F-ATP-12"
+# -- the metro TCDS (profile metro-tcn): the same rule --------------------------------------------------
+def test_the_metro_advances_in_bulk_with_the_same_state_and_trace(jumps: list[int]) -> None:
+    def script(metro: ReferenceMetro, run) -> None:
+        metro.insert_key(1)
+        metro.set_direction(1, "forward")
+        metro.set_traction(1, 40)
+        run(4 * S)
+        metro.fail("car3.VVVF")                       # reported after three unanswered status polls
+        run(5 * S)
+        metro.repair("car3.VVVF")
+        metro.cut_line("unit1.MVB", "A")              # line switch, fault record over the WTB to both CCUs
+        run(4 * S + 333)
+        metro.fail("car1.CCU")                        # MVB and WTB masters taken over by rank
+        run(5 * S)
+
+    def powered_metro() -> ReferenceMetro:
+        metro = ReferenceMetro()
+        metro.power_on()
+        return metro
+
+    exact, fast = powered_metro(), powered_metro()
+    with frame_by_frame():
+        script(exact, exact.advance)
+    script(fast, fast.advance)
+    a, b = bulk.snapshot(exact._train), bulk.snapshot(fast._train)
+    assert a.shape == b.shape and a.ints == b.ints
+    assert fast.trace.to_csv() == exact.trace.to_csv()
+    assert fast.records("car6.CCU") == exact.records("car6.CCU") and len(exact.records("car6.CCU")) >= 4
+    assert len(jumps) >= 3, jumps
+
+
+def test_the_metro_steady_period_is_its_round_of_status_polls() -> None:
+    # 8 devices per unit polled one per 1 ms basic period, 25 ms WTB cycle: 200 ms; twice that outlasts every
+    # time the model compares with but the 1 s message give-up, which a timer marks instead.
+    metro = ReferenceMetro()
+    metro.power_on()
+    assert bulk.steady_period_us(metro._train) == 200_000
+
+
+# -- the feature suite both ways: items whose scenarios advance long enough to skip, all three profiles -
+LONG_ADVANCES = "H-WSV-01,H-WSV-02,F-ILK-04,F-ATP-05,F-ATP-12,F-NET-25,F-DIA-04"
 
 
 def _features(trace_dir: Path, *args: str) -> subprocess.CompletedProcess:

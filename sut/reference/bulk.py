@@ -40,8 +40,8 @@ from sut.reference.kernel import Kernel, Timer
 class Train(Protocol):
     """What bulk advance needs of a model: its kernel, its trace, how it emits, and its steady period (the
     least common multiple of everything that repeats in it; a model that repeats more slowly than its
-    kernel's cyclic activities, such as a token going round a ring, says so). The CRH2 train and the ATP rig
-    are such models; the metro TCDS is not yet (its I/O life signal wraps inside the model)."""
+    kernel's cyclic activities, such as a token going round a ring, says so). The CRH2 train, the metro TCDS
+    and the ATP rig are such models."""
 
     kernel: Kernel
     events: list
@@ -217,7 +217,7 @@ def jump(train: "Train", snap: Snapshot, deltas: list[int], periods: int) -> Non
 def _write(writer: tuple, value: Any, dirty: set[int]) -> None:
     kind = writer[0]
     if kind == "attr":
-        setattr(writer[1], writer[2], value)
+        object.__setattr__(writer[1], writer[2], value)      # frozen dataclasses too (the metro's ports)
     elif kind == "item":
         writer[1][writer[2]] = value
     elif kind in ("tuple", "set"):

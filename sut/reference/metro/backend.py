@@ -18,6 +18,7 @@ from typing import Any, ClassVar
 from sut.driver import TrainDriver
 from sut.snapshot import PickledState
 from sut.errors import OutOfRange, UnknownName
+from sut.reference import bulk
 from sut.reference.metro.bus import LINES
 from sut.reference.metro.config import MetroConfig
 from sut.reference.metro.tcds import MetroTrain
@@ -52,8 +53,10 @@ class ReferenceMetro(PickledState, TrainDriver):
         return self._train.kernel.now
 
     def _advance(self, us: int) -> None:
-        kernel = self._train.kernel
-        kernel.run(kernel.now + us)
+        bulk.advance(self._train, self._train.kernel.now + us)      # steady periods skipped, trace and all
+
+    def _soak(self, us: int, sample_every_us: int | None) -> None:
+        bulk.soak(self._train, us, sample_every_us)
 
     @property
     def trace(self) -> Trace:

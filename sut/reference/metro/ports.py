@@ -84,7 +84,7 @@ class Command:
         return cls(MODES[mode], DIRECTIONS[direction], traction, brake, seq)
 
     def as_json(self) -> list:
-        return [self.mode, self.direction, self.traction, self.brake, self.seq]
+        return [self.mode, self.direction, self.traction, self.brake, self.seq & 0xFFFF]   # as on the MVB port
 
     @classmethod
     def from_json(cls, value: list) -> "Command":

@@ -13,10 +13,12 @@ Read with requirements.md TCN-01..10, RED-04..07 and DECISIONS.md "Metro TCDS". 
 """
 from __future__ import annotations
 
+from dataclasses import replace
 from typing import Any, Callable
 
 from sut.codecs.mvb import MasterFrame, SlaveFrame, check_sequence, decode_master, decode_slave, slave_size_bits
-from sut.reference.kernel import Kernel
+from sut.reference.bulk import cyclic_period_us
+from sut.reference.kernel import Kernel, Timer
 from sut.reference.metro import ports
 from sut.reference.metro.bus import LINES, Carried, DualLineBus, FrameError
 from sut.reference.metro.config import MetroConfig
@@ -30,6 +32,10 @@ MASTER_BITS = 33       # start delimiter 9 + F_code/address 16 + check 8
 SLAVE_OVERHEAD_BITS = 11
 REPLY_GAP_US = 4
 WTB_OVERHEAD_BITS = 64   # HDLC flags, address, control, preamble
+
+
+def _nothing() -> None:
+    pass
 
 
 def _one_check_encode(data: bytes) -> bytes:
@@ -64,6 +70,7 @@ class MvbSegment:
         self.stale = True
         self.sink_timer = None
         self.cmd_seq = 0
+        self.cmd_sent: Command | None = None     # the last train command the master put on the port
 
     @property
     def sinks(self) -> list[Device]:
@@ -110,6 +117,7 @@ class MetroTrain:
         self.wtb_missing = {n: 0 for n in self.nodes}
         self.wtb_reported: set[str] = set()
         self.wtb_answered_at = {n: 0 for n in self.nodes}
+        self._give_up_marks: dict[str, Timer] = {}
         self.desk = {cab: {"key": False, "direction": "neutral", "traction": 0, "brake": 0} for cab in CAB_CARS}
         self.emergency_switch = False
         self.emergency_mode = False
@@ -121,6 +129,21 @@ class MetroTrain:
     def emit(self, source: str, kind: str, **fields: Any) -> None:
         self.events.append(TraceEvent(self.kernel.now, source, kind, fields))
 
+    # -- bulk advance (sut/reference/bulk.py) -------------------------------------------------------
+    BULK_SKIP = ("events",)           # the trace is history, not state
+
+    def bulk_period_us(self) -> int:
+        """The steady period: every cyclic activity and each unit's round of device status polls (one device
+        per basic period), stretched if need be so that the two periods bulk.py checks outlast the longest
+        time the model compares with: a state that only waits for such a time to run out would look steady."""
+        t = self.cfg.timing
+        rounds = [len(seg.devices) * t.mvb_basic_period_us for seg in self.segments.values() if seg.devices]
+        period = cyclic_period_us(self.kernel, *rounds, t.io_period_us, t.command_period_us)
+        # (message_give_up_us is longer, but marked by a timer: _mark_give_up)
+        longest = max(t.gateway_timeout_us, t.sink_timeout_us, t.mvb_master_timeout_us * 2,
+                      t.wtb_backup_step_us * len(self.cfg.behaviour.wtb_backup_ranks))
+        return period * (longest // (2 * period) + 1)
+
     # -- life cycle -------------------------------------------------------------------------------
     def start(self) -> None:
         t = self.cfg.timing
@@ -130,6 +153,8 @@ class MetroTrain:
         self.kernel.every(t.wtb_cycle_us, self._wtb_cycle)
         self.kernel.every(t.mvb_basic_period_us, self._watch_masters, phase=t.mvb_basic_period_us // 2)
         self.kernel.every(t.speed_tick_us, self._speed_tick)
+        for name in self.nodes:
+            self._mark_give_up(name)
         for unit in self.segments:
             self._apply(unit)
 
@@ -201,7 +226,7 @@ class MetroTrain:
         if what == "io":
             return target.name, self._io_port(target).encode()
         if what == "cmd":
-            cmd = self._command(seg, master)
+            cmd = seg.cmd_sent = self._command(seg, master)
             return master.name, cmd.encode() if cmd is not None else None
         if target.failed:
             return target.name, None
@@ -221,15 +246,23 @@ class MetroTrain:
                 di = (di & ~(1 << (n - 1))) | (bool(value) << (n - 1))
             else:
                 ai[n - 1] = int(value)
-        module.life = module.life % 0xFFFF + 1          # 1..65535: 0 means "not alive"
-        return IoPort(di, (ai[0], ai[1], ai[2]), module.life)
+        # The module counts its refreshes without bound (a bulk advance carries a count over a jump, not a
+        # wrap); the wire carries 1..65535, and 0 means "not alive".
+        module.life += 1
+        return IoPort(di, (ai[0], ai[1], ai[2]), (module.life - 1) % 0xFFFF + 1)
 
     def _deliver(self, seg: MvbSegment, master: ControlUnit, what: str, target: Any, data: bytes) -> None:
         now = self.kernel.now
         if what == "io":
-            seg.io_data[target.name] = (IoPort.decode(data), now)
+            # Of the life signal the master keeps whether it is set (RED-07), not the count: the count wraps
+            # with the wire's 16 bits, and a kept value that wraps cannot be carried over a bulk jump.
+            port = IoPort.decode(data)
+            seg.io_data[target.name] = (IoPort(port.di, port.ai, 1 if port.life else 0), now)
         elif what == "cmd":
             cmd = Command.decode(data)
+            sent = seg.cmd_sent
+            if sent is not None and cmd == replace(sent, seq=sent.seq & 0xFFFF):
+                cmd = sent           # the sender's own count, unbounded: the wire's 16 bits are what it carried
             seg.cmd, seg.cmd_t = cmd, now
             if seg.sink_timer is not None:
                 seg.sink_timer.cancel()
@@ -468,7 +501,9 @@ class MetroTrain:
         if telegram["cmd"] is not None and self.nodes[origin].unit != receiver.unit:
             # Every gateway keeps the other unit's train command, so a standby that takes its unit's MVB has
             # it at once. Its own unit's command comes from its own cab's I/O modules, never over the WTB.
-            receiver.wtb_cmd, receiver.wtb_cmd_t = Command.from_json(telegram["cmd"]), now
+            # It numbers what it relays itself, so it keeps no number (one that wraps could not be carried
+            # over a bulk jump).
+            receiver.wtb_cmd, receiver.wtb_cmd_t = replace(Command.from_json(telegram["cmd"]), seq=0), now
         takes_records = receiver.has_memory or (self.cfg.behaviour.backup_master_stores
                                                 and self.wtb_master == receiver.name)
         if self.cfg.behaviour.records_via_wtb:
@@ -524,9 +559,20 @@ class MetroTrain:
             seg.status_reported.add(device.name)
             self._raise(master, f"{device.name}: no status data")
 
+    def _mark_give_up(self, name: str) -> None:
+        """A timer at the moment messages to `name` stop being resent if it stays silent (the give-up itself
+        is decided when the next telegram is built): it does nothing, but it tells a bulk jump that something
+        will change then (bulk.fixed_timer_limit), as the comparison alone cannot."""
+        mark = self._give_up_marks.get(name)
+        if mark is not None:
+            mark.cancel()
+        at = self.wtb_answered_at[name] + self.cfg.timing.message_give_up_us + 1
+        self._give_up_marks[name] = self.kernel.call_at(at, _nothing)
+
     def _diagnose_wtb_node(self, master: ControlUnit, polled: str, answered: bool) -> None:
         if answered:
             self.wtb_answered_at[polled] = self.kernel.now
+            self._mark_give_up(polled)
             self.wtb_missing[polled] = 0
             if polled in self.wtb_reported:
                 self.wtb_reported.discard(polled)
