@@ -67,10 +67,20 @@ def _attach_diagram(trace: Trace, key: Trace, now_us: int, bounds: tuple[Bound, 
         allure.attach(render_svg(diagram), name="timing diagram", attachment_type=allure.attachment_type.SVG)
 
 
+_WRITTEN = pytest.StashKey[set]()
+
+
 def _write_environment(driver: TrainDriver, config: pytest.Config) -> None:
     # Every scenario adds its SUT's parameters: values that differ (one set, two sets) are merged, not lost.
+    # A mapping this process already merged is not merged again (reading, merging and rewriting the file under
+    # its lock for each of 528 scenarios was a tenth of what the report costs).
     results_dir = getattr(config.option, "allure_report_dir", None)
     if results_dir:
         from outline.allure_env import write_environment
 
-        write_environment(results_dir, driver.describe())
+        described = driver.describe()
+        seen = config.stash.setdefault(_WRITTEN, set())
+        key = tuple(sorted((str(k), str(v)) for k, v in described.items()))
+        if key not in seen:
+            seen.add(key)
+            write_environment(results_dir, described)
