@@ -396,8 +396,9 @@ def advance(train: "Train", until: int) -> BulkReport:
     So, at every period boundary from now on, the state is read and the trace's length noted; once three
     boundaries in a row show a steady line (slope()) and the two periods' events are one pattern (same
     events in the same order, each exactly one period later, every field equal or an integer that moved
-    by a fixed amount), the periods up to `until` are skipped: the state by jump(), the trace by repeating
-    the second period's events with their times and moving fields carried on. The rest is frame by frame.
+    by a fixed amount), the periods up to `until` (or up to a pending one-shot timer, after which the line
+    is looked for again) are skipped: the state by jump(), the trace by repeating the second period's
+    events with their times and moving fields carried on. The rest is frame by frame.
     Advances shorter than three periods are simulated as they are (nothing to gain). What makes the copied
     trace exact is what makes the jump exact (the module docstring), and one thing more: event fields carry
     the model's unbounded values (a wire image that wraps is a string or bytes, and then the pattern check
@@ -419,10 +420,11 @@ def advance(train: "Train", until: int) -> BulkReport:
             window.clear()
         if len(window) == 3:
             periods = _skip(train, window, until, period)
-            if periods:
+            if periods:                          # to `until`, or to just before a one-shot timer: then on
                 report.jumps += 1
                 report.skipped_us += periods * period
-                break
+                window.clear()
+                continue
             del window[0]
         report.simulated_us += period
         kernel.run(kernel.now + period)
