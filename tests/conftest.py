@@ -13,6 +13,18 @@ from tests.helpers import DATA, PYTEST_INI, REPO
 collect_ignore = ["data"]
 
 
+def pytest_collection_modifyitems(items: list[pytest.Item]) -> None:
+    """The costliest tests first (their `cost` mark), the others in their order, those marked with a
+    negative cost last. A dozen tests run whole feature suites in a subprocess (30-130 s each against ~1 s
+    for most): met at the end of the collection, as they were, they left one worker running alone for
+    minutes. With `--dist loadgroup` (the Makefile) pytest-xdist hands the items out one by one as workers
+    free up, so started first they share the two workers and the short tests fill the gaps."""
+    def cost(item: pytest.Item) -> float:
+        mark = item.get_closest_marker("cost")
+        return mark.args[0] if mark else 0
+    items.sort(key=cost, reverse=True)                # stable: equal costs keep the collection order
+
+
 @pytest.fixture
 def data_on_path(monkeypatch):
     """Make the fixture trees' step modules (good_steps, bad_steps) importable."""

@@ -89,6 +89,7 @@ def skipped(train: ReferenceTrain) -> list[tuple[int, int]]:
     return skips(train.trace)
 
 
+@pytest.mark.cost(23)
 def test_ten_minutes_with_faults_and_commands_agree_both_ways() -> None:
     def script(train: ReferenceTrain, run) -> None:
         run(2 * MIN)
@@ -112,6 +113,7 @@ def test_ten_minutes_with_faults_and_commands_agree_both_ways() -> None:
     assert len(records["car4.LCU"]) == 2 and len(records["car7.LCU"]) == 1
 
 
+@pytest.mark.cost(10)
 def test_a_pending_one_shot_timer_is_not_jumped_over() -> None:
     # The neutral-section entry supervision runs a one-shot timeout (DECISIONS.md): it must fire on time.
     def script(train: ReferenceTrain, run) -> None:
@@ -237,6 +239,7 @@ def test_the_atp_fitted_to_a_crh2_set_agrees_both_ways() -> None:
 
 
 # -- plain advances skip steady periods too, and owe the whole trace ---------------------------------
+@pytest.mark.cost(18)
 def test_advances_with_faults_repairs_and_a_cut_give_the_same_state_and_trace(jumps: list[int]) -> None:
     def script(train: ReferenceTrain, run) -> None:
         run(40 * S)
@@ -353,6 +356,7 @@ def _features(trace_dir: Path, *args: str) -> subprocess.CompletedProcess:
     return subprocess.run(cmd, cwd=ROOT, capture_output=True, text=True, timeout=900)
 
 
+@pytest.mark.cost(20)
 def test_the_features_give_the_same_verdicts_and_traces_in_bulk_and_frame_by_frame(tmp_path: Path) -> None:
     fast = _features(tmp_path / "bulk")
     exact = _features(tmp_path / "exact", "--frame-by-frame")

@@ -16,6 +16,8 @@ import subprocess
 import sys
 from pathlib import Path
 
+import pytest
+
 from tests.helpers import traces, verdicts
 from tests.test_faulty_variants import ROOT
 
@@ -32,6 +34,7 @@ def _run(trace_dir: Path, hash_seed: str, *args: str) -> tuple[list[tuple[str, s
     return verdicts(result.stdout), result.stdout
 
 
+@pytest.mark.cost(35)
 def test_two_runs_and_a_parallel_run_give_identical_verdicts_and_traces(tmp_path: Path) -> None:
     first, out = _run(tmp_path / "first", "1", "-p", "no:xdist")
     second, _ = _run(tmp_path / "second", "2", "-p", "no:xdist", "--no-snapshots")

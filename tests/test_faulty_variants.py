@@ -19,7 +19,8 @@ from typing import Callable
 import pytest
 
 from tests.helpers import verdicts
-from tests.variants import FAULTY, IN_BAND
+from sut.reference.crh2.backend import ReferenceTrain
+from tests.variants import FAULTY, IN_BAND, HoldCountedToSend
 
 ROOT = Path(__file__).resolve().parents[1]
 
@@ -84,7 +85,14 @@ def test_at_least_twelve_requirements_have_a_faulty_variant() -> None:
     assert len({req for _, req, _ in FAULTY}) >= 12
 
 
-@pytest.mark.xdist_group("faulty-variants")         # one worker, where --dist loadgroup still groups (see above)
+@pytest.mark.cost(60)
+def test_every_faulty_variant_ran_on_its_own_items(faulty_verdicts: dict) -> None:
+    # Starts the shared run early on one worker; the tests below read it and run last (tests/conftest.py).
+    missing = {variant.__name__ for variant, _, _ in FAULTY} - set(faulty_verdicts)
+    assert not missing, f"no scenario ran against {sorted(missing)}"
+
+
+@pytest.mark.cost(-1)
 @pytest.mark.parametrize(("variant", "requirement", "item"), FAULTY,
                          ids=[f"{v.__name__}-{r}" for v, r, _ in FAULTY])
 def test_features_reject_faulty_variant(faulty_verdicts: dict, variant: type, requirement: str, item: str) -> None:
@@ -96,7 +104,16 @@ def test_features_reject_faulty_variant(faulty_verdicts: dict, variant: type, re
         f"{variant.__name__} ({requirement}) was not rejected by {item}: {mine}"
 
 
-@pytest.mark.parametrize("variant", IN_BAND, ids=[v.__name__ for v in IN_BAND])
+def _in_band_cost(variant: type) -> float:
+    """About the seconds of one core a run of the whole profile takes (tests/conftest.py starts the longest
+    first): a token hold of 10.25 ms makes the CRH2 steady period 123 s, which the 72 h soaks feel."""
+    if variant is HoldCountedToSend:
+        return 130
+    return 45 if issubclass(variant, ReferenceTrain) else 7
+
+
+@pytest.mark.parametrize("variant", [pytest.param(v, id=v.__name__, marks=pytest.mark.cost(_in_band_cost(v)))
+                                     for v in IN_BAND])
 def test_features_accept_in_band_variant(variant: type) -> None:
     # One single-process run each, not one shared run on two workers as for the faulty variants: each runs
     # every scenario of its profile, and a process of its own keeps all its powered-up snapshots (tried on

@@ -47,6 +47,7 @@ def served(*args: str) -> Iterator[str]:
         proc.wait(timeout=10)
 
 
+@pytest.mark.cost(10)
 def test_same_verdicts_and_traces_in_process_and_remote(tmp_path: Path) -> None:
     local = run_features(None, f"--item={ITEMS}", "-rA", f"--trace-dir={tmp_path / 'local'}", sut="reference")
     with served() as url:

@@ -35,6 +35,7 @@ def _run(trace_dir: Path, *args: str) -> subprocess.CompletedProcess:
     return subprocess.run(cmd, cwd=ROOT, capture_output=True, text=True, timeout=900)
 
 
+@pytest.mark.cost(25)
 def test_snapshots_on_and_off_give_identical_verdicts_and_traces_in_every_profile(tmp_path: Path) -> None:
     on = _run(tmp_path / "on")
     off = _run(tmp_path / "off", "--no-snapshots")

@@ -6,9 +6,12 @@ import re
 import subprocess
 import sys
 
+import pytest
+
 from tests.test_faulty_variants import ROOT
 
 
+@pytest.mark.cost(9)
 def test_the_index_finds_what_pytest_bdd_finds_for_every_step() -> None:
     result = subprocess.run([sys.executable, "-m", "pytest", "features", "--collect-only", "-q", "-p", "no:xdist",
                              "-p", "no:cacheprovider", "-p", "tests.step_index_plugin"],
