@@ -29,6 +29,10 @@ cumulative time.
 
 Measured on this machine (2-core VM, Python 3.11.7, pytest 9.2.0, pytest-bdd 9.0.1, full suite: 528
 scenarios, 5 035 steps, all passed):
+  2026-11-25 04:40, load 1.0, side by side with 760111a (issue 14, second session: bulk advance in plain
+    advances of every profile, replayed soak samples, cheaper frames): conformance 58.9 s wall (58.9 s CPU;
+    collection 1.4 s), floor 1.50 s -> 39x; 42.1 s (72 %) inside Kernel.run; the rest 16.8 s. 760111a in the
+    same sitting: 80.4 s, 54x, 65.2 s inside Kernel.run (the machine was slower than the day before).
   2026-11-24 23:23, load 0.2 -> 0.7 (issue 14: snapshots, step index, hot paths): conformance 65.1 s wall
     (65.1 s CPU; collection 1.1 s), floor 1.22 s -> 53x (the floor fell too: it shares the step index and
     no longer loads hypothesis's pytest plugin; against the old floor, 36x). 52.8 s (81 %) inside Kernel.run;
