@@ -68,15 +68,24 @@ def _run_variants(names: list[str], *args: str, env: dict[str, str] | None = Non
 
 @pytest.fixture(scope="session")
 def faulty_verdicts(request: pytest.FixtureRequest,
-                    tmp_path_factory: pytest.TempPathFactory) -> dict[str, list[tuple[str, str]]]:
-    """(test id, outcome) of every scenario run against each faulty variant (on its own items only)."""
-    def compute(folder: Path) -> dict[str, list[tuple[str, str]]]:
-        plan: dict[str, list[str]] = defaultdict(list)
-        for variant, _, item in FAULTY:
-            plan[variant.__name__].append(item)
+                    tmp_path_factory: pytest.TempPathFactory) -> dict[str, list[tuple[str, str, list[str]]]]:
+    """(test id, outcome, requirement tags) of every scenario run against each faulty variant: those of its
+    own test item and those tagged with the requirement it breaks (tests/variant_plan.py)."""
+    def compute(folder: Path) -> dict[str, list[tuple[str, str, list[str]]]]:
+        plan: dict[str, dict[str, list[str]]] = defaultdict(lambda: {"items": [], "reqs": []})
+        for variant, requirement, item in FAULTY:
+            plan[variant.__name__]["items"].append(item)
+            plan[variant.__name__]["reqs"].append(requirement)
         plan_file = folder / "faulty-plan.json"
         plan_file.write_text(json.dumps(plan), encoding="utf-8")
-        return _run_variants(list(plan), "-p", "tests.variant_plan", env={"CRH2_VARIANT_PLAN": str(plan_file)})
+        ran = _run_variants(list(plan), "-p", "tests.variant_plan", env={"CRH2_VARIANT_PLAN": str(plan_file)})
+        tags: dict[str, list[str]] = {}
+        for written in folder.glob(f"{plan_file.name}.*.reqs.json"):
+            tags.update(json.loads(written.read_text(encoding="utf-8")))
+        # verdicts() cuts a test id at its first space, as pytest's summary lines show it
+        tags = {node_id.split(" ")[0]: reqs for node_id, reqs in tags.items()}
+        return {name: [(test_id, outcome, tags[test_id]) for test_id, outcome in results]
+                for name, results in ran.items()}
 
     return _once(request, tmp_path_factory, "faulty-verdicts", compute)
 
@@ -98,10 +107,26 @@ def test_every_faulty_variant_ran_on_its_own_items(faulty_verdicts: dict) -> Non
 def test_features_reject_faulty_variant(faulty_verdicts: dict, variant: type, requirement: str, item: str) -> None:
     ran = faulty_verdicts.get(variant.__name__, [])
     item_tag = item.lower().replace("-", "")
-    mine = [(test_id, outcome) for test_id, outcome in ran if f"::test_{item_tag}" in test_id]
+    mine = [(test_id, outcome) for test_id, outcome, _ in ran if f"::test_{item_tag}" in test_id]
     assert mine, f"no scenario of {item} ran against {variant.__name__}: {ran[:5]}"
     assert any(outcome == "FAILED" for _, outcome in mine), \
         f"{variant.__name__} ({requirement}) was not rejected by {item}: {mine}"
+
+
+@pytest.mark.cost(-1)
+@pytest.mark.parametrize(("variant", "requirement", "item"), FAULTY,
+                         ids=[f"{v.__name__}-{r}" for v, r, _ in FAULTY])
+def test_the_requirement_a_faulty_variant_breaks_selects_a_scenario_that_rejects_it(
+        faulty_verdicts: dict, variant: type, requirement: str, item: str) -> None:
+    """Tag accuracy: `--req <requirement>` alone rejects the variant, so the traceability matrix is true
+    where it says a requirement is verified."""
+    ran = faulty_verdicts.get(variant.__name__, [])
+    selected = [(test_id, outcome) for test_id, outcome, reqs in ran if requirement in reqs]
+    assert selected, f"no scenario tagged @req:{requirement} ran against {variant.__name__}"
+    rejecting = [(test_id, reqs) for test_id, outcome, reqs in ran if outcome == "FAILED"]
+    assert any(outcome == "FAILED" for _, outcome in selected), (
+        f"--req {requirement} alone does not reject {variant.__name__}; the scenarios that do carry "
+        f"{[f'{test_id} {reqs}' for test_id, reqs in rejecting][:5]}")
 
 
 def _in_band_cost(variant: type) -> float:

@@ -1,8 +1,15 @@
 """pytest plugin for tests/test_faulty_variants.py: the features against every faulty variant in one run.
 
 One pytest process with `--sut` given once per variant collects the features once (instead of once per
-variant: ~70 start-ups of 2-3 s) and runs each variant on the test items the plan names for it, nothing
-else. The plan is a JSON file named by $CRH2_VARIANT_PLAN: {variant class name: [item ID, ...]}.
+variant: ~70 start-ups of 2-3 s) and runs each variant on what the plan names for it, nothing else: the
+scenarios of its test item, and those tagged with the requirement it breaks (what `--req` would select).
+The plan is a JSON file named by $CRH2_VARIANT_PLAN: {variant class name: {"items": [...], "reqs": [...]}}.
+
+Each process writes, beside the plan, the requirement tags of every scenario it kept
+(`<plan>.<worker>.reqs.json`: {test id: [requirement, ...]}), so that the test can tell which selection a
+rejecting scenario belongs to. A variant's own item runs first; once a scenario of its item and one tagged
+with its requirement have both failed, its remaining scenarios are skipped: the variant is rejected both
+ways, and the rest would only cost time.
 """
 from __future__ import annotations
 
@@ -11,18 +18,59 @@ import os
 
 import pytest
 
+_PLAN = pytest.StashKey[dict[str, dict[str, set[str]]]]()
+_REJECTED = pytest.StashKey[dict[str, set[str]]]()      # variant name -> {"item", "req"} already failed
+
+
+def _variant(item: pytest.Item) -> str | None:
+    callspec = getattr(item, "callspec", None)
+    variant = callspec.params.get("sut_class") if callspec is not None else None
+    return variant.__name__ if variant is not None else None
+
+
+def _tags(item: pytest.Item, mark: str) -> set[str]:
+    return {str(m.args[0]) for m in item.iter_markers(mark) if m.args}
+
+
+def _plan(config: pytest.Config) -> dict[str, dict[str, set[str]]]:
+    with open(os.environ["CRH2_VARIANT_PLAN"], encoding="utf-8") as fh:
+        return {name: {kind: set(ids) for kind, ids in wanted.items()} for name, wanted in json.load(fh).items()}
+
+
+def _why(item: pytest.Item, wanted: dict[str, set[str]]) -> set[str]:
+    """Which selections of the plan keep this scenario: "item", "req", both or none."""
+    return ({"item"} if _tags(item, "item") & wanted.get("items", set()) else set()) | \
+           ({"req"} if _tags(item, "req") & wanted.get("reqs", set()) else set())
+
 
 @pytest.hookimpl(trylast=True)
 def pytest_collection_modifyitems(config: pytest.Config, items: list[pytest.Item]) -> None:
-    with open(os.environ["CRH2_VARIANT_PLAN"], encoding="utf-8") as fh:
-        plan = {name: set(item_ids) for name, item_ids in json.load(fh).items()}
+    plan = config.stash[_PLAN] = _plan(config)
+    config.stash[_REJECTED] = {}
     keep, drop = [], []
     for item in items:
-        callspec = getattr(item, "callspec", None)
-        variant = callspec.params.get("sut_class") if callspec is not None else None
-        item_ids = {str(m.args[0]) for m in item.iter_markers("item") if m.args}
-        wanted = variant is not None and item_ids & plan.get(variant.__name__, set())
-        (keep if wanted else drop).append(item)
+        name = _variant(item)
+        (keep if name is not None and _why(item, plan.get(name, {})) else drop).append(item)
+    keep.sort(key=lambda item: "item" not in _why(item, plan[_variant(item)]))    # stable: own items first
     if drop:
         config.hook.pytest_deselected(items=drop)
         items[:] = keep
+    worker = getattr(config, "workerinput", {}).get("workerid", "main")
+    tags = {item.nodeid: sorted(_tags(item, "req")) for item in keep}
+    with open(f"{os.environ['CRH2_VARIANT_PLAN']}.{worker}.reqs.json", "w", encoding="utf-8") as fh:
+        json.dump(tags, fh)
+
+
+@pytest.hookimpl(tryfirst=True)                       # before the fixtures build a train
+def pytest_runtest_setup(item: pytest.Item) -> None:
+    if item.config.stash[_REJECTED].get(_variant(item)) == {"item", "req"}:
+        pytest.skip("this variant already failed a scenario of its item and one tagged with its requirement")
+
+
+@pytest.hookimpl(wrapper=True)
+def pytest_runtest_makereport(item: pytest.Item, call: pytest.CallInfo):
+    report = yield
+    if report.failed and report.when == "call":
+        name = _variant(item)
+        item.config.stash[_REJECTED].setdefault(name, set()).update(_why(item, item.config.stash[_PLAN][name]))
+    return report
