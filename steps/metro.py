@@ -338,6 +338,8 @@ def _frames(sut: TrainDriver, bus: str, since: int) -> list[tuple[mvb.MasterFram
                 raise AssertionError(f"{ms(ev.t)}: a master frame on {bus} is not IEC 61375-3-1: {exc}") from None
         else:
             assert out and out[-1][1] is None, f"{ms(ev.t)}: a slave frame on {bus} without a master frame"
+            assert not out[-1][0].reserved, (f"{ms(ev.t)}: a device on {bus} answered the reserved F_code "
+                                             f"{out[-1][0].f_code} (a device ignores it)")
             size = mvb.slave_size_bits(out[-1][0].f_code)
             try:
                 out[-1][1] = mvb.decode_slave(raw, size)
@@ -351,6 +353,8 @@ def _frames(sut: TrainDriver, bus: str, since: int) -> list[tuple[mvb.MasterFram
 @then(parsers.parse('every frame on "{bus}" decodes as an IEC 61375-3-1 MVB frame of the size its F_code asks'))
 def _(sut: TrainDriver, t_action: int, bus: str) -> None:
     pairs = _frames(sut, bus, t_action)
+    reserved = [m for m, _ in pairs if m.reserved]
+    assert not reserved, f"the master on {bus} sent {len(reserved)} frames with a reserved F_code, first {reserved[0]}"
     answered = [(m, s) for m, s in pairs if s is not None]
     assert len(answered) >= 20, f"only {len(answered)} answered master frames on {bus}"
     sizes = {s.size_bits for _, s in answered}

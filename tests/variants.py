@@ -459,6 +459,11 @@ class EmergencyOperationAtSpeed(ReferenceMetro):
     BEHAVIOUR = {"emergency_operation_at_speed": True}
 
 
+class StatusPolledWithReservedCode(ReferenceMetro):
+    """TCN-05: device status is requested with F_code 10, which IEC 61375-3-1 reserves (devices ignore it)."""
+    BEHAVIOUR = {"status_poll_f_code": 10}
+
+
 class BriskMetro(ReferenceMetro):
     """In band: a 20 ms WTB cycle, quicker takeovers, I/O and command ports every 4 ms, longer sink and
     gateway supervision."""
@@ -485,6 +490,7 @@ FAULTY += [
     (EventsSentOnce, "TCN-06", "F-REC-04"),
     (NoBrakeOnNetworkFailure, "TCN-09", "F-NET-25"),
     (EmergencyOperationAtSpeed, "TCN-09", "F-NET-25"),
+    (StatusPolledWithReservedCode, "TCN-05", "F-NET-24"),
 ]
 IN_BAND += [BriskMetro]
 

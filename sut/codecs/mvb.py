@@ -42,6 +42,7 @@ class DataClass(Enum):
     PROCESS = "process data"            # cyclic, sent on the master's poll of a logical address
     MESSAGE = "message data"            # numbered packets the destination acknowledges
     SUPERVISORY = "supervisory data"    # device status, master transfer, event arbitration
+    RESERVED = "reserved"               # F_code 5-7 and 10-11: no slave answers (sut/reference/DECISIONS.md)
 
 
 class FCode(NamedTuple):
@@ -110,22 +111,29 @@ def _check_sequence(group: bytes) -> int:
 
 
 # -- F_code ---------------------------------------------------------------------------------------
-def _f_code(f_code: int) -> FCode:
+def _in_range(f_code: int) -> int:
     if not isinstance(f_code, int) or not 0 <= f_code <= 15:
         raise MvbFrameError(f"F_code {f_code!r} out of range 0..15 (4 bits)")
-    if f_code not in F_CODES:
-        raise MvbFrameError(f"F_code {f_code} is reserved (IEC 61375-3-1 defines {sorted(F_CODES)})")
-    return F_CODES[f_code]
+    return f_code
+
+
+def is_reserved(f_code: int) -> bool:
+    """F_code 5-7 and 10-11: a master frame an analyser reads and names, and no device answers."""
+    return _in_range(f_code) not in F_CODES
 
 
 def data_class(f_code: int) -> DataClass:
-    """The data class a master frame with this F_code asks for."""
-    return _f_code(f_code).data_class
+    """The data class a master frame with this F_code asks for (RESERVED for a reserved F_code)."""
+    return DataClass.RESERVED if is_reserved(f_code) else F_CODES[f_code].data_class
 
 
 def slave_size_bits(f_code: int) -> int:
-    """Data bits of the slave frame that answers a master frame with this F_code."""
-    return _f_code(f_code).slave_size_bits
+    """Data bits of the slave frame that answers a master frame with this F_code; MvbFrameError for a
+    reserved F_code, which no slave frame answers."""
+    if is_reserved(f_code):
+        raise MvbFrameError(f"F_code {f_code} is reserved: no slave frame answers it "
+                            f"(IEC 61375-3-1 assigns {sorted(F_CODES)})")
+    return F_CODES[f_code].slave_size_bits
 
 
 # -- frames ---------------------------------------------------------------------------------------
@@ -135,10 +143,14 @@ class MasterFrame:
     address: int
 
     def __post_init__(self) -> None:
-        _f_code(self.f_code)
+        _in_range(self.f_code)             # a reserved F_code is a frame too: analysers name it, devices ignore it
         if not isinstance(self.address, int) or not 0 <= self.address <= MAX_ADDRESS:
             raise MvbFrameError(f"master frame address {self.address!r} out of range 0..{MAX_ADDRESS:#x} "
                                 "(12 bits)")
+
+    @property
+    def reserved(self) -> bool:
+        return is_reserved(self.f_code)
 
     @property
     def data_class(self) -> DataClass:
@@ -207,6 +219,7 @@ def decode_master(raw: bytes) -> MasterFrame:
         raise MvbFrameError(f"master frame check sequence failed at raw[2]: received {raw[2]:#04x}, "
                             f"computed {want:#04x}")
     # The check comes first: a bit error in the F_code must read as a corrupt frame, not a reserved code.
+    # A reserved F_code with a good check is a frame (`.reserved`): what to do with it is the reader's call.
     word = int.from_bytes(raw[:2], "big")
     return MasterFrame(word >> 12, word & MAX_ADDRESS)
 

@@ -8,6 +8,8 @@ from __future__ import annotations
 
 from dataclasses import dataclass, replace
 
+from sut.reference.metro.ports import DEVICE_STATUS_F_CODE
+
 MS = 1000
 
 
@@ -44,6 +46,7 @@ class MetroBehaviour:
     one_check_sequence: bool = False         # TCN-05: a check byte after every 64 bits, not one per frame
     network_failure_brake: bool = True       # TCN-09: brake to a stop when the train command is lost
     emergency_operation_at_speed: bool = False   # TCN-09: hard-wired operation only from standstill
+    status_poll_f_code: int = DEVICE_STATUS_F_CODE   # TCN-05/06: device status request (a reserved code is ignored)
 
 
 @dataclass(frozen=True)

@@ -16,7 +16,8 @@ from __future__ import annotations
 from dataclasses import replace
 from typing import Any, Callable
 
-from sut.codecs.mvb import MasterFrame, SlaveFrame, check_sequence, decode_master, decode_slave, slave_size_bits
+from sut.codecs.mvb import (MasterFrame, SlaveFrame, check_sequence, decode_master, decode_slave, is_reserved,
+                            slave_size_bits)
 from sut.reference.bulk import cyclic_period_us
 from sut.reference.kernel import Kernel, Timer
 from sut.reference.metro import ports
@@ -175,9 +176,10 @@ class MetroTrain:
         offset = 0
         for what, target in polls:
             f_code = {"io": ports.IO_PORT_F_CODE, "cmd": ports.COMMAND_F_CODE,
-                      "status": ports.DEVICE_STATUS_F_CODE}[what]
-            bits = MASTER_BITS + slave_size_bits(f_code) + 8 * max(1, slave_size_bits(f_code) // 64) \
-                + SLAVE_OVERHEAD_BITS
+                      "status": self.cfg.behaviour.status_poll_f_code}[what]
+            bits = MASTER_BITS
+            if not is_reserved(f_code):          # no slave frame answers a reserved F_code
+                bits += slave_size_bits(f_code) + 8 * max(1, slave_size_bits(f_code) // 64) + SLAVE_OVERHEAD_BITS
             # The whole message is taken at its master frame's instant, which is what an analyser logs.
             self.kernel.call_later(offset, self._mvb_message, unit, master.name, what, target, f_code)
             offset += DualLineBus.frame_us(bits, t.mvb_bit_ns) + REPLY_GAP_US
@@ -204,7 +206,10 @@ class MetroTrain:
             self._diagnose_lines(bus, master)
             return
         seg.last_master_t = self.kernel.now
-        source, data = self._answer(seg, master, what, target)
+        # IEC 61375-3-1 assigns no slave frame to F_code 5-7 and 10-11: a device ignores such a master frame
+        # (sut/reference/DECISIONS.md), so a poll with one goes unanswered.
+        source, data = (target.name if target is not None else master.name, None) if got.data.reserved \
+            else self._answer(seg, master, what, target)
         line, master_line = None, got.line
         if data is not None:
             size = slave_size_bits(f_code)
