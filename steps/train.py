@@ -45,6 +45,20 @@ def _(sut: TrainDriver, s: int) -> None:
     sut.advance_ms(s * 1000)
 
 
+# Minutes and hours for latched states: a steady train skips whole periods (sut/reference/bulk.py), so an
+# hour costs little more than its first seconds.
+@when(parsers.parse("经过{minutes:d} min"))
+@when(parsers.parse("{minutes:d} min pass"))
+def _(sut: TrainDriver, minutes: int) -> None:
+    sut.advance_ms(minutes * 60_000)
+
+
+@when(parsers.parse("经过{hours:d} h"))
+@when(parsers.parse("{hours:d} h pass"))
+def _(sut: TrainDriver, hours: int) -> None:
+    sut.advance_ms(hours * 3_600_000)
+
+
 @then(parsers.parse("环网上每辆车都有一个LCU且每辆头车都有一个含系统1和系统2的CCU"))
 @then(parsers.parse("every car has an LCU on the ring and every cab car a CCU with systems 1 and 2"))
 def _(sut: TrainDriver) -> None:

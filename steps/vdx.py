@@ -170,6 +170,9 @@ def _(sut: TrainDriver, t_action: int) -> None:
     assert raised is not None, f"no C019; self-tests: {describe(_selftests(sut, t_action))}"
     assert sut.output("VDX fault") == "C019" and sut.output("EB loop") == "open", \
         f"after C019 the VDX shows {sut.output('VDX fault')}, the loop is {sut.output('EB loop')}"
+    # Latched until restart (VDX-03/06): not closed for a moment in between either.
+    closed = [ev for ev in sut.trace.select(kind="loop.change", since=raised.t) if ev["state"] != "open"]
+    assert not closed, f"the loop closed {ms(closed[0].t - raised.t)} after C019 without a restart"
 
 
 @then("不报C019故障")

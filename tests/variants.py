@@ -521,6 +521,11 @@ class C019Clears(ReferenceAtp):
     VDX = {"c019_latches": False}
 
 
+class C019ClearsAfterTenMinutes(ReferenceAtp):
+    """VDX-03: C019 holds the FS output off for 10 minutes, then lets it come back without a restart."""
+    VDX = {"c019_self_clear_us": 10 * 60 * 1000 * MS}
+
+
 class RelayDropsIn2ms(ReferenceAtp):
     """VDX-04: EB2R drops 2 ms after its coil loses power, so every 3 ms self-test brakes the train."""
     VDX = {"relay_no_open_us": 2 * MS}
@@ -614,6 +619,7 @@ FAULTY += [
     (SampledAtOnce, "VDX-03", "F-ATP-05"),
     (SelfTestEvery10s, "VDX-03", "F-ATP-05"),
     (C019Clears, "VDX-03", "F-ATP-05"),
+    (C019ClearsAfterTenMinutes, "VDX-03", "F-ATP-05"),
     (RelayDropsIn2ms, "VDX-04", "F-ATP-05"),
     (SlowRelay, "VDX-04", "F-ATP-04"),
     (NarrowSupply, "VDX-02", "F-ATP-04"),

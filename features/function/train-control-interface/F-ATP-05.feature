@@ -30,6 +30,16 @@ Feature: F-ATP-05 FS output self-test every 5 s, 3 ms, sampled from the 2nd ms a
     Then C019 is raised and the emergency-brake loop stays open
     And every FS self-test sampled at 6 V or more raised C019 and none below
 
+  @req:VDX-03
+  Scenario: F-ATP-05 C019 still holds the emergency brake two hours later, without a restart
+    Given the VDX runs the old firmware
+    And the train has been powered up for 1000 ms
+    And the ATP has released the emergency brake
+    When 11 s pass
+    And the ATP releases the emergency brake 20 ms before the next FS self-test
+    And 2 h pass
+    Then C019 is raised and the emergency-brake loop stays open
+
   @req:VDX-03 @req:VDX-06
   Scenario: F-ATP-05 A restart clears C019
     Given the VDX runs the old firmware

@@ -20,6 +20,7 @@ class Vdx:
     low_threshold_v: float = 6.0              # VDX-03: below 6 V passes
     postpone_us: dict | None = None           # VDX-06: per firmware, see POSTPONE
     c019_latches: bool = True                 # VDX-03/06: FS stays off until restart
+    c019_self_clear_us: int | None = None     # faulty variants only: a "latched" C019 that clears itself
     relay_no_open_us: int = 5 * MS            # VDX-04: EB2R NO contact opens < 6 ms after its coil loses power
     relay_nc_close_us: int = 12 * MS          # VDX-04: EB2R NC contact closes < 15 ms after
     relay_pick_up_us: int = 8 * MS

@@ -186,4 +186,10 @@ class VdxInterface:
             self._emit("VDX", "fault.C019", text="C019: FS output did not go low in its self-test")
             if not self.cfg.c019_latches:
                 self.c019 = False
+            elif self.cfg.c019_self_clear_us is not None:
+                self.kernel.call_later(self.cfg.c019_self_clear_us, self._c019_clears)
+        self._drive()
+
+    def _c019_clears(self) -> None:
+        self.c019 = False
         self._drive()
