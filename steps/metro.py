@@ -361,6 +361,33 @@ def _(sut: TrainDriver, t_action: int, bus: str) -> None:
     assert {16, 64, 128} <= sizes, f"the frames on {bus} had only the sizes {sorted(sizes)}"
 
 
+@then(parsers.parse('"{bus}"上每个主帧都带着应答它的端口或设备的地址,每个设备一个地址'))
+@then(parsers.parse('every master frame on "{bus}" carries the address of the port or device that answers it, '
+                    'one address each'))
+def _(sut: TrainDriver, t_action: int, bus: str) -> None:
+    """The wire against the exchange (TCN-05): the master frame sent at a poll's instant carries the F_code
+    and address of that poll, one port or device answers at each address, and each answers at one address
+    per F_code. A SUT whose frames name the wrong port passes every decode check; this one it does not."""
+    wire = {ev.t: mvb.decode_master(bytes.fromhex(ev["hex"]))
+            for ev in sut.trace.select(kind="bus.frame", source=bus, since=t_action) if ev["type"] == "master"}
+    polls = [p for p in _polls(sut, bus, t_action) if p["responder"]]
+    assert len(polls) >= 20, f"only {len(polls)} answered polls on {bus}"
+    at: dict[tuple[int, int], set[str]] = {}
+    of: dict[tuple[str, int], set[int]] = {}
+    for p in polls:
+        frame = wire.get(p.t)
+        assert frame is not None, f"{ms(p.t)}: {p['responder']} answered on {bus} with no master frame on the wire"
+        assert (frame.f_code, frame.address) == (p["f_code"], p["address"]), (
+            f"{ms(p.t)}: the poll of {p['responder']} (F_code {p['f_code']}, address {p['address']:#05x}) went "
+            f"out as F_code {frame.f_code}, address {frame.address:#05x}")
+        at.setdefault((frame.f_code, frame.address), set()).add(p["responder"])
+        of.setdefault((p["responder"], frame.f_code), set()).add(frame.address)
+    shared = {f"F_code {f} address {a:#05x}": sorted(r) for (f, a), r in at.items() if len(r) > 1}
+    assert not shared, f"several answer at one address on {bus}: {shared}"
+    several = {f"{r} (F_code {f})": sorted(map(hex, a)) for (r, f), a in of.items() if len(a) > 1}
+    assert not several, f"some answer at several addresses on {bus}: {several}"
+
+
 @then(parsers.parse('"{bus}"上的主帧请求{classes}'), converters={"classes": zh.metro_data_classes})
 @then(parsers.parse('the master frames on "{bus}" ask for {classes}'))
 def _(sut: TrainDriver, t_action: int, bus: str, classes: str) -> None:

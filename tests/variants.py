@@ -459,6 +459,12 @@ class EmergencyOperationAtSpeed(ReferenceMetro):
     BEHAVIOUR = {"emergency_operation_at_speed": True}
 
 
+class StatusPolledAtOneAddress(ReferenceMetro):
+    """TCN-05: every device status request carries the first device's address; the devices still answer in
+    turn, so the frames decode and the log agrees with them, but the wire names the wrong device."""
+    BEHAVIOUR = {"status_polls_one_address": True}
+
+
 class StatusPolledWithReservedCode(ReferenceMetro):
     """TCN-05: device status is requested with F_code 10, which IEC 61375-3-1 reserves (devices ignore it)."""
     BEHAVIOUR = {"status_poll_f_code": 10}
@@ -491,6 +497,7 @@ FAULTY += [
     (NoBrakeOnNetworkFailure, "TCN-09", "F-NET-25"),
     (EmergencyOperationAtSpeed, "TCN-09", "F-NET-25"),
     (StatusPolledWithReservedCode, "TCN-05", "F-NET-24"),
+    (StatusPolledAtOneAddress, "TCN-05", "F-NET-24"),
 ]
 IN_BAND += [BriskMetro]
 

@@ -18,6 +18,7 @@ Feature: F-NET-24 MVB frames and data classes on the wire
   Scenario Outline: F-NET-24 Every frame on "<bus>" decodes with the standard check sequences
     When 100 ms pass
     Then every frame on "<bus>" decodes as an IEC 61375-3-1 MVB frame of the size its F_code asks
+    And every master frame on "<bus>" carries the address of the port or device that answers it, one address each
 
     Examples:
       | bus       |

@@ -47,6 +47,7 @@ class MetroBehaviour:
     network_failure_brake: bool = True       # TCN-09: brake to a stop when the train command is lost
     emergency_operation_at_speed: bool = False   # TCN-09: hard-wired operation only from standstill
     status_poll_f_code: int = DEVICE_STATUS_F_CODE   # TCN-05/06: device status request (a reserved code is ignored)
+    status_polls_one_address: bool = False   # TCN-05: every status request carries the unit's first device address
 
 
 @dataclass(frozen=True)

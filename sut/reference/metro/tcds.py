@@ -198,6 +198,8 @@ class MetroTrain:
             return
         bus = seg.bus
         address = self._address(unit, what, target)
+        if what == "status" and self.cfg.behaviour.status_polls_one_address:
+            address = min(self.device_addresses[device.name] for device in seg.devices)
         wire = MasterFrame(f_code, address).encode()
         got = self._carry(bus, "master", wire, decode_master)
         if got.data is None:
