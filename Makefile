@@ -34,7 +34,11 @@ XDIST := $(if $(filter 1,$(JOBS)),-p no:xdist,-n $(JOBS))
 XDIST_TESTS := $(if $(filter 1,$(JOBS)),-p no:xdist,-n $(JOBS) --dist loadgroup)
 SUT_ARG := $(if $(SUT),--sut $(SUT))
 
-.PHONY: help report test check trace clean distclean
+MUTANTS ?= 200
+SEED ?= 1
+MUTATE_STAMP := $(VENV)/.mutate-installed
+
+.PHONY: help report test check trace clean distclean mutate
 
 help: ## list the targets
 	@echo "CRH2 conformance suite (PYTEST_ARGS=... and SUT=... pass through to pytest)"
@@ -58,6 +62,9 @@ test: $(VENV_STAMP) $(NODE_STAMP) $(CHROMIUM) ## the project's own tests, then t
 	echo "make test: tests exit $$t, conformance run exit $$f"; \
 	[ $$t -eq 0 ] && [ $$f -eq 0 ]
 
+mutate: $(VENV_STAMP) $(MUTATE_STAMP) ## mutation testing of the references (MUTANTS=200 SEED=1): kill rate per reference, reports/mutation.md
+	$(PY) -m outline.mutation --mutants $(MUTANTS) --seed $(SEED) $(if $(filter auto,$(JOBS)),,--jobs $(JOBS))
+
 check: $(VENV_STAMP) ## python -m outline check: registry, features, steps and requirements agree
 	$(PY) -m outline check
 
@@ -65,7 +72,7 @@ trace: $(VENV_STAMP) ## python -m outline trace: requirement <-> item <-> scenar
 	$(PY) -m outline trace $(if $(wildcard $(RESULTS)),--results $(RESULTS))
 
 clean: ## remove reports and caches (keeps .venv and node_modules)
-	rm -rf $(RESULTS) $(HTML) reports/history.jsonl reports/traceability.* .pytest_cache .hypothesis
+	rm -rf $(RESULTS) $(HTML) reports/history.jsonl reports/traceability.* reports/mutation.* mutants .pytest_cache .hypothesis
 	find . -name __pycache__ -type d -not -path './$(VENV)/*' -not -path './node_modules/*' -prune -exec rm -rf {} +
 
 distclean: clean ## also remove .venv and node_modules
@@ -74,6 +81,10 @@ distclean: clean ## also remove .venv and node_modules
 $(VENV_STAMP): pyproject.toml
 	test -x $(PY) || $(PYTHON) -m venv $(VENV)
 	$(PY) -m pip install --quiet -e .
+	touch $@
+
+$(MUTATE_STAMP): pyproject.toml
+	$(PY) -m pip install --quiet -e '.[mutate]'
 	touch $@
 
 $(NODE_STAMP): package.json package-lock.json

@@ -1,0 +1,212 @@
+"""Mutation testing of the references: `make mutate` (`python -m outline.mutation --mutants 200 --seed 1`).
+
+A conformance suite is worth the faulty implementations it rejects; the hand-written variants in
+tests/variants.py are the ones somebody thought of. This breaks the references in ways nobody chose:
+mutmut (3.8, pinned in the `mutate` extra) writes one small change per mutant (a constant, a comparison, an
+operator, a dropped call) into every function of sut/reference/ ([tool.mutmut] in pyproject.toml), and the
+conformance run (`pytest features`) is the test. Why mutmut rather than cosmic-ray, from a trial on the ATP
+reference (2026-11-25): mutmut learns once which scenarios reach which function and runs only those, in a
+forked child of an already started pytest, stopping at the first failure: ~0.6 s per mutant on two cores;
+cosmic-ray starts the test command afresh per mutant (~2-3 s before the first scenario) and would run the
+whole suite for every survivor. mutmut also works with pytest-bdd's generated tests as they are.
+
+Phases:
+1. `mutmut run <no such mutant>`: mutmut copies the project to mutants/, writes every mutant and runs the
+   suite once to learn who reaches what (kept for the next run while the sources are unchanged), then
+   stops, finding no mutant by that name.
+2. A seeded sample, the same share from each part (crh2, metro, atp, and the shared kernel/bulk), leaving out
+   the mutants marked equivalent in sut/reference/EQUIVALENT_MUTANTS.txt.
+3. `mutmut run <sample>`; outline/mutation_plugin.py notes which scenario failed for each mutant.
+4. The table: file:line, the change, killed by which scenario or survived; a kill rate per part
+   (killed + timed out, over everything sampled; "no tests" means no scenario reaches the function, which
+   counts as a survivor). Printed, and written to reports/mutation.md and reports/mutation.json, which
+   `make report` turns into an entry of the Allure report.
+"""
+from __future__ import annotations
+
+import argparse
+import ast
+import json
+import os
+import random
+import re
+import subprocess
+import sys
+from dataclasses import asdict, dataclass
+from pathlib import Path
+
+ROOT = Path(__file__).resolve().parents[1]
+MUTANTS_DIR = ROOT / "mutants"
+EQUIVALENTS = ROOT / "sut" / "reference" / "EQUIVALENT_MUTANTS.txt"
+KILLS = MUTANTS_DIR / "kills.tsv"
+NAME = re.compile(r"^(?P<module>[\w.]+?)\.(?P<function>x[ǁ_].*)__mutmut_(?P<n>\d+)$")
+DETECTED = {"killed", "timeout", "segfault"}
+
+
+@dataclass
+class Mutant:
+    name: str
+    part: str               # crh2, metro, atp or shared
+    path: str               # sut/reference/...
+    line: int
+    before: str
+    after: str
+    status: str = "not checked"
+    killed_by: str = ""
+
+
+def _mutmut(*args: str, env: dict[str, str] | None = None) -> subprocess.CompletedProcess:
+    return subprocess.run([sys.executable, "-m", "mutmut", *args], cwd=ROOT, capture_output=True, text=True,
+                          env=dict(os.environ, **(env or {})))
+
+
+def generate() -> None:
+    """Phase 1: mutants written and scenarios mapped (mutmut refuses the name afterwards, as intended)."""
+    result = _mutmut("run", "outline.mutation.generate-only")
+    if not list(MUTANTS_DIR.rglob("*.py.meta")):
+        sys.exit(f"mutmut wrote no mutants:\n{result.stdout[-3000:]}\n{result.stderr[-3000:]}")
+
+
+def all_names() -> list[str]:
+    names: list[str] = []
+    for meta in sorted(MUTANTS_DIR.rglob("*.py.meta")):
+        names += sorted(json.loads(meta.read_text(encoding="utf-8"))["exit_code_by_key"])
+    return names
+
+
+def part_of(path: str) -> str:
+    parts = Path(path).parts              # sut/reference/<part>/... or sut/reference/<module>.py
+    return parts[2] if len(parts) > 3 else "shared"
+
+
+def describe(name: str) -> Mutant:
+    """Where a mutant is (file:line in the original source) and what it changes, from mutmut's diff."""
+    from mutmut.mutation.diff_apply import get_diff_for_mutant
+    match = NAME.match(name)
+    if not match:
+        raise ValueError(f"not a mutmut mutant name: {name}")
+    path = match["module"].replace(".", "/") + ".py"
+    diff = get_diff_for_mutant(name, path=MUTANTS_DIR / path).splitlines()
+    before = next((l[1:] for l in diff if l.startswith("-") and not l.startswith("---")), "")
+    after = next((l[1:] for l in diff if l.startswith("+") and not l.startswith("+++")), "")
+    return Mutant(name, part_of(path), path, _line_of(ROOT / path, match["function"], before), before.strip(),
+                  after.strip())
+
+
+def _line_of(source: Path, mangled: str, text: str) -> int:
+    """The line of `text` inside the function mutmut calls `mangled` (xǁClassǁmethod or x_function)."""
+    names = mangled[2:].split("ǁ") if mangled.startswith("xǁ") else [mangled[2:]]
+    nodes: list[ast.AST] = ast.parse(source.read_text(encoding="utf-8")).body
+    found = None
+    for name in (n for n in names if n):
+        found = next((n for n in nodes if isinstance(n, (ast.ClassDef, ast.FunctionDef, ast.AsyncFunctionDef))
+                      and n.name == name), None)
+        if found is None:
+            return 0
+        nodes = found.body
+    lines = source.read_text(encoding="utf-8").splitlines()
+    start, end = found.lineno, found.end_lineno or found.lineno
+    return next((i for i in range(start, end + 1) if lines[i - 1].strip() == text.strip()), start)
+
+
+def equivalents() -> list[tuple[str, str, str]]:
+    """(path, line before, line after) of each mutant marked equivalent, with its reason after ' # '."""
+    marked = []
+    for raw in EQUIVALENTS.read_text(encoding="utf-8").splitlines() if EQUIVALENTS.exists() else []:
+        if raw.strip() and not raw.startswith("#"):
+            fields = [f.strip() for f in raw.split(" | ")]
+            if len(fields) != 4 or not fields[3]:
+                raise ValueError(f"{EQUIVALENTS}: want 'path | before | after | reason', got {raw!r}")
+            marked.append((fields[0], fields[1], fields[2]))
+    return marked
+
+
+def sample(names: list[str], count: int, seed: int) -> list[Mutant]:
+    """`count` mutants, the same share from each part, none of them marked equivalent; seeded."""
+    rng = random.Random(seed)
+    marked = set(equivalents())
+    by_part: dict[str, list[str]] = {}
+    for name in names:
+        match = NAME.match(name)
+        if match:
+            by_part.setdefault(part_of(match["module"].replace(".", "/") + ".py"), []).append(name)
+    chosen: list[Mutant] = []
+    parts = sorted(by_part)
+    for index, part in enumerate(parts):
+        want = count // len(parts) + (1 if index < count % len(parts) else 0)
+        pool = by_part[part][:]
+        rng.shuffle(pool)
+        taken = 0
+        for name in pool:
+            if taken == want:
+                break
+            mutant = describe(name)
+            if (mutant.path, mutant.before, mutant.after) not in marked:
+                chosen.append(mutant)
+                taken += 1
+    return chosen
+
+
+def run(mutants: list[Mutant], jobs: int) -> None:
+    """Phase 3: mutmut runs the sample; statuses from its records, the killing scenario from the plugin."""
+    from mutmut.stats import status_by_exit_code
+    KILLS.unlink(missing_ok=True)
+    _mutmut("run", "--max-children", str(jobs), *[m.name for m in mutants], env={"CRH2_MUTATION_KILLS": str(KILLS)})
+    codes: dict[str, int | None] = {}
+    for meta in MUTANTS_DIR.rglob("*.py.meta"):
+        codes.update(json.loads(meta.read_text(encoding="utf-8"))["exit_code_by_key"])
+    killers = dict(line.split("\t", 1) for line in KILLS.read_text(encoding="utf-8").splitlines()) \
+        if KILLS.exists() else {}
+    for mutant in mutants:
+        mutant.status = status_by_exit_code[codes.get(mutant.name)]
+        mutant.killed_by = killers.get(mutant.name, "").split("::")[-1]
+
+
+def rates(mutants: list[Mutant]) -> dict[str, tuple[int, int]]:
+    """(detected, sampled) per part and over all."""
+    out: dict[str, tuple[int, int]] = {}
+    for part in sorted({m.part for m in mutants}) + ["all"]:
+        mine = [m for m in mutants if part in ("all", m.part)]
+        out[part] = (sum(m.status in DETECTED for m in mine), len(mine))
+    return out
+
+
+def table(mutants: list[Mutant], seed: int) -> str:
+    lines = [f"# Mutation testing of the references ({len(mutants)} mutants, seed {seed})", "",
+             "| part | kill rate |", "| --- | --- |"]
+    for part, (done, total) in rates(mutants).items():
+        lines.append(f"| {part} | {done}/{total} = {100 * done / max(total, 1):.1f} % |")
+    lines += ["", "| file:line | change | result | killed by |", "| --- | --- | --- | --- |"]
+    for m in sorted(mutants, key=lambda m: (m.path, m.line, m.name)):
+        change = f"`{m.before}` -> `{m.after}`".replace("|", "\\|")
+        lines.append(f"| {m.path}:{m.line} | {change} | {m.status} | {m.killed_by} |")
+    return "\n".join(lines) + "\n"
+
+
+def main(argv: list[str] | None = None) -> int:
+    parser = argparse.ArgumentParser(prog="python -m outline.mutation", description=__doc__.split("\n\n")[0])
+    parser.add_argument("--mutants", type=int, default=200, help="how many mutants to sample (default 200)")
+    parser.add_argument("--seed", type=int, default=1, help="seed of the sample (default 1)")
+    parser.add_argument("--jobs", type=int, default=os.cpu_count() or 2, help="mutants tested at once")
+    parser.add_argument("--out", type=Path, default=ROOT / "reports", help="where mutation.md/.json go")
+    args = parser.parse_args(argv)
+    print("mutmut: writing the mutants and mapping scenarios to functions (one conformance run) ...", flush=True)
+    generate()
+    names = all_names()
+    mutants = sample(names, args.mutants, args.seed)
+    print(f"mutmut: {len(names)} mutants of the references; testing {len(mutants)} (seed {args.seed}) ...",
+          flush=True)
+    run(mutants, args.jobs)
+    text = table(mutants, args.seed)
+    args.out.mkdir(parents=True, exist_ok=True)
+    (args.out / "mutation.md").write_text(text, encoding="utf-8")
+    (args.out / "mutation.json").write_text(json.dumps(
+        {"seed": args.seed, "mutants": [asdict(m) for m in mutants],
+         "rates": {p: list(r) for p, r in rates(mutants).items()}}, indent=1), encoding="utf-8")
+    print(text)
+    print(f"mutation: {args.out / 'mutation.md'}")
+    return 0
+
+
+if __name__ == "__main__":
+    sys.exit(main())

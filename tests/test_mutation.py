@@ -1,0 +1,75 @@
+"""make mutate (outline/mutation.py, outline/mutation_plugin.py): where a mutant is, what is equivalent,
+the kill rate per reference, and which scenario killed a mutant. The mutmut run itself is `make mutate`
+(minutes), not part of make test; its configuration is checked here."""
+from __future__ import annotations
+
+import os
+import subprocess
+import sys
+import tomllib
+from pathlib import Path
+
+import pytest
+
+from outline import mutation
+from outline.mutation import Mutant
+
+ROOT = Path(__file__).resolve().parents[1]
+
+
+def test_a_mutant_is_placed_on_its_line_inside_its_method(tmp_path: Path) -> None:
+    source = tmp_path / "relay.py"
+    source.write_text("x = 1\n\nclass Relay:\n    def power(self, on):\n        x = 1\n        self.on = on\n\n"
+                      "def x_helper():\n    x = 1\n", encoding="utf-8")
+    assert mutation._line_of(source, "xǁRelayǁpower", "x = 1") == 5
+    assert mutation._line_of(source, "x_x_helper", "x = 1") == 9
+    assert mutation._line_of(source, "xǁRelayǁpower", "    self.on = on") == 6
+
+
+def test_parts_are_the_three_references_and_the_shared_modules() -> None:
+    assert [mutation.part_of(p) for p in ("sut/reference/crh2/ring.py", "sut/reference/metro/tcds.py",
+                                           "sut/reference/atp/vdx.py", "sut/reference/bulk.py")] == \
+        ["crh2", "metro", "atp", "shared"]
+
+
+def test_an_equivalent_needs_its_reason(tmp_path: Path, monkeypatch: pytest.MonkeyPatch) -> None:
+    marked = tmp_path / "EQUIVALENT_MUTANTS.txt"
+    monkeypatch.setattr(mutation, "EQUIVALENTS", marked)
+    marked.write_text("# comment\nsut/reference/bulk.py | a = 1 | a = 2 | only the jump's size changes\n")
+    assert mutation.equivalents() == [("sut/reference/bulk.py", "a = 1", "a = 2")]
+    marked.write_text("sut/reference/bulk.py | a = 1 | a = 2 |\n")
+    with pytest.raises(ValueError, match="EQUIVALENT_MUTANTS.txt: want 'path | before | after | reason'"):
+        mutation.equivalents()
+
+
+def test_the_checked_in_equivalents_parse() -> None:
+    assert all(path.startswith("sut/reference/") for path, _, _ in mutation.equivalents())
+
+
+def test_kill_rate_per_part_counts_timeouts_as_detected_and_untested_as_survivors() -> None:
+    def m(part: str, status: str) -> Mutant:
+        return Mutant(f"{part}-{status}", part, f"sut/reference/{part}/x.py", 1, "a", "b", status, "")
+    sampled = [m("atp", "killed"), m("atp", "survived"), m("metro", "timeout"), m("metro", "no tests")]
+    assert mutation.rates(sampled) == {"atp": (1, 2), "metro": (1, 2), "all": (2, 4)}
+    text = mutation.table(sampled, seed=7)
+    assert "| atp | 1/2 = 50.0 % |" in text and "| all | 2/4 = 50.0 % |" in text and "seed 7" in text
+
+
+def test_mutmut_mutates_the_references_and_runs_the_features_with_the_kill_recorder() -> None:
+    config = tomllib.loads((ROOT / "pyproject.toml").read_text(encoding="utf-8"))
+    mutmut = config["tool"]["mutmut"]
+    assert mutmut["source_paths"] == ["sut/reference/"]
+    assert mutmut["pytest_add_cli_args_test_selection"] == ["features/"]
+    assert "outline.mutation_plugin" in mutmut["pytest_add_cli_args"]
+    assert {"steps/", "features/", "outline/", "conftest.py"} <= set(mutmut["also_copy"])
+    assert config["project"]["optional-dependencies"]["mutate"] == ["mutmut==3.8.1"]
+
+
+def test_the_plugin_notes_the_scenario_that_killed_a_mutant(tmp_path: Path) -> None:
+    (tmp_path / "test_x.py").write_text("def test_ok():\n    pass\n\ndef test_breaks():\n    assert False\n")
+    kills = tmp_path / "kills.tsv"
+    env = dict(os.environ, MUTANT_UNDER_TEST="sut.reference.atp.vdx.xǁRelayǁpower__mutmut_3",
+               CRH2_MUTATION_KILLS=str(kills), PYTHONPATH=str(ROOT))
+    subprocess.run([sys.executable, "-m", "pytest", "-q", "-p", "outline.mutation_plugin", "-p", "no:cacheprovider",
+                    "test_x.py"], cwd=tmp_path, env=env, capture_output=True, text=True, timeout=120)
+    assert kills.read_text(encoding="utf-8") == "sut.reference.atp.vdx.xǁRelayǁpower__mutmut_3\ttest_x.py::test_breaks\n"
