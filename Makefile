@@ -50,6 +50,7 @@ report: $(VENV_STAMP) $(NODE_STAMP) ## run every feature, build reports/html/ind
 	@$(PY) -m pytest features $(XDIST) --alluredir $(RESULTS) $(SUT_ARG) $(PYTEST_ARGS); status=$$?; \
 	$(PY) -m outline trace --results $(RESULTS) --md reports/traceability.md --html reports/traceability.html \
 		--allure $(RESULTS) || exit $$?; \
+	$(PY) -m outline.mutation --to-allure $(RESULTS) || exit $$?; \
 	npx --no-install allure generate $(RESULTS) --output $(HTML) >/dev/null || exit $$?; \
 	$(PY) -m outline.allure_html $(HTML)/index.html; \
 	echo "report: $(HTML)/index.html"; \

@@ -20,7 +20,7 @@ Phases:
 4. The table: file:line, the change, killed by which scenario or survived; a kill rate per part
    (killed + timed out, over everything sampled; "no tests" means no scenario reaches the function, which
    counts as a survivor). Printed, and written to reports/mutation.md and reports/mutation.json, which
-   `make report` turns into an entry of the Allure report.
+   `make report` turns into an entry of the Allure report (`--to-allure`).
 """
 from __future__ import annotations
 
@@ -32,6 +32,8 @@ import random
 import re
 import subprocess
 import sys
+import time
+import uuid
 from dataclasses import asdict, dataclass
 from pathlib import Path
 
@@ -41,6 +43,7 @@ EQUIVALENTS = ROOT / "sut" / "reference" / "EQUIVALENT_MUTANTS.txt"
 KILLS = MUTANTS_DIR / "kills.tsv"
 NAME = re.compile(r"^(?P<module>[\w.]+?)\.(?P<function>x[ǁ_].*)__mutmut_(?P<n>\d+)$")
 DETECTED = {"killed", "timeout", "segfault"}
+TARGET = 0.90               # issue 15: sampled kill rate of the references
 
 
 @dataclass
@@ -183,13 +186,46 @@ def table(mutants: list[Mutant], seed: int) -> str:
     return "\n".join(lines) + "\n"
 
 
+def to_allure(results: Path, kept: Path) -> Path | None:
+    """The last `make mutate` (reports/mutation.json) as one entry of an Allure results folder: the kill rate
+    against the 90 % target in its name and status, the table attached. None if mutation testing never ran."""
+    if not kept.exists():
+        return None
+    data = json.loads(kept.read_text(encoding="utf-8"))
+    mutants = [Mutant(**m) for m in data["mutants"]]
+    done, total = rates(mutants)["all"]
+    attachment = f"{uuid.uuid4()}-attachment.md"
+    (results / attachment).write_text(table(mutants, data["seed"]), encoding="utf-8")
+    now = int(time.time() * 1000)
+    per_part = ", ".join(f"{part} {d}/{t}" for part, (d, t) in rates(mutants).items() if part != "all")
+    result = {
+        "uuid": str(uuid.uuid4()), "historyId": "mutation-testing-of-the-references",
+        "name": f"Mutation testing of the references: {100 * done / max(total, 1):.1f} % killed (target 90 %)",
+        "fullName": "make mutate", "status": "passed" if done >= TARGET * total else "failed",
+        "statusDetails": {"message": f"{done} of {total} sampled mutants rejected (seed {data['seed']}): {per_part}"},
+        "stage": "finished", "start": now, "stop": now,
+        "labels": [{"name": "epic", "value": "Mutation testing"}, {"name": "suite", "value": "make mutate"},
+                   {"name": "tag", "value": "mutation"}],           # outline.summary: not a scenario
+        "attachments": [{"name": "mutants", "source": attachment, "type": "text/markdown"}],
+    }
+    out = results / f"{result['uuid']}-result.json"
+    out.write_text(json.dumps(result), encoding="utf-8")
+    return out
+
+
 def main(argv: list[str] | None = None) -> int:
     parser = argparse.ArgumentParser(prog="python -m outline.mutation", description=__doc__.split("\n\n")[0])
     parser.add_argument("--mutants", type=int, default=200, help="how many mutants to sample (default 200)")
     parser.add_argument("--seed", type=int, default=1, help="seed of the sample (default 1)")
     parser.add_argument("--jobs", type=int, default=os.cpu_count() or 2, help="mutants tested at once")
     parser.add_argument("--out", type=Path, default=ROOT / "reports", help="where mutation.md/.json go")
+    parser.add_argument("--to-allure", type=Path, metavar="RESULTS",
+                        help="run nothing: add the last run (--out/mutation.json) to this Allure results folder")
     args = parser.parse_args(argv)
+    if args.to_allure:
+        written = to_allure(args.to_allure, args.out / "mutation.json")
+        print(f"mutation: {written or 'no make mutate run to add to the report'}")
+        return 0
     print("mutmut: writing the mutants and mapping scenarios to functions (one conformance run) ...", flush=True)
     generate()
     names = all_names()

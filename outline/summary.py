@@ -24,6 +24,7 @@ class Summary:
     touched: set[str] = field(default_factory=set)  # requirement IDs of every scenario that ran
     not_passed: list[tuple[str, str]] = field(default_factory=list)  # (status, scenario name)
     by_profile: dict[str, Counter] = field(default_factory=dict)     # train profile -> status counts
+    mutation: str = ""                   # the name of `make mutate`'s entry (outline/mutation.py), if any
 
     @property
     def total(self) -> int:
@@ -63,6 +64,9 @@ def summarize(results: list[dict]) -> Summary:
     for result in results:
         if "traceability" in labels(result, "tag"):
             continue                     # the matrix's own entry (outline.render) is not a scenario
+        if "mutation" in labels(result, "tag"):
+            summary.mutation = result.get("name", "?")       # nor is the last make mutate run
+            continue
         status = result.get("status", "unknown")
         summary.counts[status] += 1
         reqs = labels(result, "requirement")
@@ -96,6 +100,8 @@ def format_summary(summary: Summary) -> str:
     for status, name in sorted(summary.not_passed):
         if status != "skipped":
             lines.append(f"{status}: {name}")
+    if summary.mutation:
+        lines.append(summary.mutation)
     return "\n".join(lines)
 
 

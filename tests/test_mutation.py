@@ -3,10 +3,12 @@ the kill rate per reference, and which scenario killed a mutant. The mutmut run 
 (minutes), not part of make test; its configuration is checked here."""
 from __future__ import annotations
 
+import json
 import os
 import subprocess
 import sys
 import tomllib
+from dataclasses import asdict
 from pathlib import Path
 
 import pytest
@@ -73,3 +75,26 @@ def test_the_plugin_notes_the_scenario_that_killed_a_mutant(tmp_path: Path) -> N
     subprocess.run([sys.executable, "-m", "pytest", "-q", "-p", "outline.mutation_plugin", "-p", "no:cacheprovider",
                     "test_x.py"], cwd=tmp_path, env=env, capture_output=True, text=True, timeout=120)
     assert kills.read_text(encoding="utf-8") == "sut.reference.atp.vdx.xǁRelayǁpower__mutmut_3\ttest_x.py::test_breaks\n"
+
+
+def test_the_last_run_becomes_one_entry_of_the_allure_report(tmp_path: Path) -> None:
+    kept = tmp_path / "mutation.json"
+    assert mutation.to_allure(tmp_path, kept) is None                  # make mutate never ran: nothing added
+    sampled = [Mutant("a", "atp", "sut/reference/atp/vdx.py", 135, "x", "y", "killed", "test_fatp04_x"),
+               Mutant("b", "crh2", "sut/reference/crh2/ring.py", 9, "x", "y", "survived", "")]
+    kept.write_text(json.dumps({"seed": 3, "mutants": [asdict(m) for m in sampled]}), encoding="utf-8")
+    result = json.loads(mutation.to_allure(tmp_path, kept).read_text(encoding="utf-8"))
+    assert result["name"] == "Mutation testing of the references: 50.0 % killed (target 90 %)"
+    assert result["status"] == "failed" and "atp 1/1, crh2 0/1" in result["statusDetails"]["message"]
+    attached = (tmp_path / result["attachments"][0]["source"]).read_text(encoding="utf-8")
+    assert "| sut/reference/atp/vdx.py:135 | `x` -> `y` | killed | test_fatp04_x |" in attached
+
+
+def test_the_summary_names_the_mutation_entry_and_does_not_count_it_as_a_scenario(tmp_path: Path) -> None:
+    from outline import summary
+    kept = tmp_path / "mutation.json"
+    kept.write_text(json.dumps({"seed": 1, "mutants": [asdict(Mutant("a", "atp", "p.py", 1, "x", "y", "killed"))]}))
+    mutation.to_allure(tmp_path, kept)
+    text = summary.format_summary(summary.summarize(summary.load_results(tmp_path)))
+    assert text.splitlines()[0].startswith("0 scenarios: 0 passed")
+    assert text.splitlines()[-1] == "Mutation testing of the references: 100.0 % killed (target 90 %)"
