@@ -15,7 +15,8 @@ Phases:
    suite once to learn who reaches what (kept for the next run while the sources are unchanged), then
    stops, finding no mutant by that name.
 2. A seeded sample, the same share from each part (crh2, metro, atp, and the shared kernel/bulk), leaving out
-   the mutants marked equivalent in sut/reference/EQUIVALENT_MUTANTS.txt.
+   the mutants marked equivalent in sut/reference/EQUIVALENT_MUTANTS.txt and those inside a `raise` of the
+   driver's usage errors (USAGE_ERRORS below); how many were passed over is printed and kept.
 3. `mutmut run <sample>`; outline/mutation_plugin.py notes which scenario failed for each mutant.
 4. The table: file:line, the change, killed by which scenario or survived; a kill rate per part
    (killed + timed out, over everything sampled; "no tests" means no scenario reaches the function, which
@@ -44,6 +45,11 @@ KILLS = MUTANTS_DIR / "kills.tsv"
 NAME = re.compile(r"^(?P<module>[\w.]+?)\.(?P<function>x[ǁ_].*)__mutmut_(?P<n>\d+)$")
 DETECTED = {"killed", "timeout", "segfault"}
 TARGET = 0.90               # issue 15: sampled kill rate of the references
+# The driver interface's answers to a stimulus the test itself got wrong (an unknown name, a value out of
+# range, a call out of order: sut/errors.py). They are the harness's contract, checked by the project's own
+# tests (tests/test_bad_input.py), not train behaviour the articles specify, and a conforming
+# rig words them as it likes: a mutant inside such a `raise` is left out of the sample, and counted.
+USAGE_ERRORS = frozenset({"SutError", "UnknownName", "OutOfRange", "NotPoweredUp", "NotSupported"})
 
 
 @dataclass
@@ -124,9 +130,24 @@ def equivalents() -> list[tuple[str, str, str]]:
     return marked
 
 
-def sample(names: list[str], count: int, seed: int) -> list[Mutant]:
-    """`count` mutants, the same share from each part, none of them marked equivalent; seeded."""
+_RAISES: dict[str, list[tuple[int, int]]] = {}
+
+
+def in_usage_error(path: str, line: int) -> bool:
+    """Whether `line` of `path` is inside a `raise` of one of the driver's USAGE_ERRORS."""
+    if path not in _RAISES:
+        tree = ast.parse((ROOT / path).read_text(encoding="utf-8"))
+        _RAISES[path] = [(node.lineno, node.end_lineno or node.lineno) for node in ast.walk(tree)
+                         if isinstance(node, ast.Raise) and isinstance(node.exc, ast.Call)
+                         and isinstance(node.exc.func, ast.Name) and node.exc.func.id in USAGE_ERRORS]
+    return any(start <= line <= end for start, end in _RAISES[path])
+
+
+def sample(names: list[str], count: int, seed: int, left_out: dict[str, int] | None = None) -> list[Mutant]:
+    """`count` mutants, the same share from each part, none of them marked equivalent nor inside a usage
+    error's `raise`; seeded. `left_out` counts the ones passed over, by reason."""
     rng = random.Random(seed)
+    left_out = {} if left_out is None else left_out
     marked = set(equivalents())
     by_part: dict[str, list[str]] = {}
     for name in names:
@@ -144,7 +165,11 @@ def sample(names: list[str], count: int, seed: int) -> list[Mutant]:
             if taken == want:
                 break
             mutant = describe(name)
-            if (mutant.path, mutant.before, mutant.after) not in marked:
+            if (mutant.path, mutant.before, mutant.after) in marked:
+                left_out["marked equivalent"] = left_out.get("marked equivalent", 0) + 1
+            elif in_usage_error(mutant.path, mutant.line):
+                left_out["usage error"] = left_out.get("usage error", 0) + 1
+            else:
                 chosen.append(mutant)
                 taken += 1
     return chosen
@@ -174,9 +199,12 @@ def rates(mutants: list[Mutant]) -> dict[str, tuple[int, int]]:
     return out
 
 
-def table(mutants: list[Mutant], seed: int) -> str:
-    lines = [f"# Mutation testing of the references ({len(mutants)} mutants, seed {seed})", "",
-             "| part | kill rate |", "| --- | --- |"]
+def table(mutants: list[Mutant], seed: int, left_out: dict[str, int] | None = None) -> str:
+    lines = [f"# Mutation testing of the references ({len(mutants)} mutants, seed {seed})", ""]
+    if left_out:
+        lines += ["Passed over while drawing: " + ", ".join(f"{n} {why}" for why, n in sorted(left_out.items()))
+                  + " (sut/reference/EQUIVALENT_MUTANTS.txt; usage errors: outline/mutation.py).", ""]
+    lines += ["| part | kill rate |", "| --- | --- |"]
     for part, (done, total) in rates(mutants).items():
         lines.append(f"| {part} | {done}/{total} = {100 * done / max(total, 1):.1f} % |")
     lines += ["", "| file:line | change | result | killed by |", "| --- | --- | --- | --- |"]
@@ -195,7 +223,7 @@ def to_allure(results: Path, kept: Path) -> Path | None:
     mutants = [Mutant(**m) for m in data["mutants"]]
     done, total = rates(mutants)["all"]
     attachment = f"{uuid.uuid4()}-attachment.md"
-    (results / attachment).write_text(table(mutants, data["seed"]), encoding="utf-8")
+    (results / attachment).write_text(table(mutants, data["seed"], data.get("left_out")), encoding="utf-8")
     now = int(time.time() * 1000)
     per_part = ", ".join(f"{part} {d}/{t}" for part, (d, t) in rates(mutants).items() if part != "all")
     result = {
@@ -229,15 +257,17 @@ def main(argv: list[str] | None = None) -> int:
     print("mutmut: writing the mutants and mapping scenarios to functions (one conformance run) ...", flush=True)
     generate()
     names = all_names()
-    mutants = sample(names, args.mutants, args.seed)
-    print(f"mutmut: {len(names)} mutants of the references; testing {len(mutants)} (seed {args.seed}) ...",
-          flush=True)
+    left_out: dict[str, int] = {}
+    mutants = sample(names, args.mutants, args.seed, left_out)
+    passed_over = ", ".join(f"{n} {why}" for why, n in sorted(left_out.items())) or "none"
+    print(f"mutmut: {len(names)} mutants of the references; testing {len(mutants)} (seed {args.seed}; "
+          f"passed over while drawing: {passed_over}) ...", flush=True)
     run(mutants, args.jobs)
-    text = table(mutants, args.seed)
+    text = table(mutants, args.seed, left_out)
     args.out.mkdir(parents=True, exist_ok=True)
     (args.out / "mutation.md").write_text(text, encoding="utf-8")
     (args.out / "mutation.json").write_text(json.dumps(
-        {"seed": args.seed, "mutants": [asdict(m) for m in mutants],
+        {"seed": args.seed, "left_out": left_out, "mutants": [asdict(m) for m in mutants],
          "rates": {p: list(r) for p, r in rates(mutants).items()}}, indent=1), encoding="utf-8")
     print(text)
     print(f"mutation: {args.out / 'mutation.md'}")

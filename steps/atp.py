@@ -302,6 +302,12 @@ def _(sut: TrainDriver, which: str) -> None:
 def _(sut: TrainDriver, fields: str) -> None:
     records = [r for r in sut.records("ATP") if "CFSK" in r]
     assert records, "no CFSK record"
+    # Each record is stamped with the train time it was made (TrainDriver.records: `t_ms ...`): a time the
+    # train has reached, not one from the future or in other units.
+    for record in records:
+        stamp = record.split(" ", 1)[0]
+        assert re.fullmatch(r"\d+(\.\d+)?", stamp) and float(stamp) <= sut.now_us / 1000, (
+            f"a CFSK record stamped {stamp!r} at {sut.now_us / 1000:.3f} ms: {record}")
     for field in re.split(r",\s*|\s+and\s+", fields):
         key, _, value = field.strip().partition(" ")
         assert any(f"{key}=" in r and value in r for r in records), f"no CFSK record with {field!r}: {records}"

@@ -341,6 +341,53 @@ def _(sut: TrainDriver, t_action: int, packets: int) -> None:
     assert count >= packets, f"only {count} packets decoded"
 
 
+# Who puts each kind of packet on the ring, as the trace names the handover: (event kind, board).
+_PACKET_SENDERS = {"status": ("status.tx", "CPU3"), "block": ("block.tx", "CPU3"), "command": ("cmd.tx", "MDM8")}
+
+
+@then(parsers.parse("分析仪看到的每个令牌都发给跨段另一端的节点,每个数据包都带有发送节点的编号"))
+@then(parsers.parse("every token the analyser saw is addressed to the node across the span and every packet carries "
+                    "its sender's node ID"))
+def _(sut: TrainDriver, t_action: int) -> None:
+    """NET-10 field by field against the exchange, not only the layout: a token (ITT) names the node it is
+    passed to, the one at the far end of the span (node number = ring position + 1); a packet's source ID
+    (SID) is the node that handed it to the ring (a status or block from its CPU3, a command from its
+    MDM8), its destination broadcast (0) or a node of the ring. A frame layout that is wrong but
+    self-consistent (IDs swapped, one constant ID) decodes and is understood by its own nodes: this
+    rejects it. A packet still on its way at the end may have been handed over just before the action."""
+    numbers = {name: index + 1 for index, name in enumerate(sut.ring_nodes())}
+    seen = sut.trace.select(kind="link.tx", since=t_action)
+    assert seen, "the analyser saw no frame"
+    end = sut.now_us
+    handed: dict[str, dict[int, int]] = {}        # packet kind -> sender node number -> last handover time
+    for kind, (event, board) in _PACKET_SENDERS.items():
+        for ev in sut.trace.select(kind=event, since=t_action - us(50)):
+            node = ev.source.removesuffix(f".{board}")
+            if node in numbers:
+                handed.setdefault(kind, {})[numbers[node]] = ev.t
+    carried: dict[str, set[int]] = {}
+    for ev in seen:
+        wire, where = bytes.fromhex(ev["hex"]), f"{ev.t_ms:.3f} ms, {ev['frm']} -> {ev['to']}"
+        try:
+            if wire[:1] == bytes([arcnet.EOT]):
+                did = arcnet.decode_itt(wire)
+                assert did == numbers[ev["to"]], (f"{where}: the token is addressed to node {did}; it is passed to "
+                                                  f"{ev['to']}, node {numbers[ev['to']]}")
+                continue
+            sid, did, _ = arcnet.decode_pac(wire)
+        except arcnet.FrameError as exc:
+            raise AssertionError(f"{where}: {exc}") from None
+        assert did == arcnet.BROADCAST or did in numbers.values(), f"{where}: {ev['frame']} packet for node {did}, not on the ring"
+        senders = handed.get(ev["frame"], {})
+        assert sid in senders, (f"{where}: a {ev['frame']} packet from node {sid}; nodes that handed one to the ring: "
+                                f"{sorted(senders)}")
+        carried.setdefault(ev["frame"], set()).add(sid)
+    # Every node's status crosses every span (broadcast both ways): all of those sent early enough are seen.
+    early = {sid for sid, t in handed.get("status", {}).items() if t <= end - us(100)}
+    missing = early - carried.get("status", set())
+    assert early and not missing, f"no status packet with the source ID of node(s) {sorted(missing)} crossed the span"
+
+
 @then(parsers.parse("分析仪发现被损坏的{kind}帧未通过ARCNET校验"), converters={"kind": zh.frame})
 @then(parsers.parse("the analyser finds the corrupted {kind} frame failing its ARCNET check"))
 def _(sut: TrainDriver, t_action: int, kind: str) -> None:

@@ -113,6 +113,15 @@ def _(sut: TrainDriver, relay: str, state: str) -> None:
     assert sut.output(relay) == state, f"{relay} is {sut.output(relay)}, not {state}"
 
 
+@then(parsers.parse("FS输出电压为{volts:g} V,误差不超过{tol:g} V"))
+@then(parsers.parse("the FS output reads {volts:g} V within {tol:g} V"))
+def _(sut: TrainDriver, volts: float, tol: float) -> None:
+    """VDX-01: the FS output feeds EB2R's coil, so it carries the supply while the brake is released and
+    nothing once the ATP brakes (fail-safe: a dead output is the braking state)."""
+    got = sut.reading("FS output voltage")
+    assert abs(got - volts) <= tol, f"the FS output reads {got:g} V, not {volts:g} V within {tol:g} V"
+
+
 @then(parsers.parse("紧急制动回路在{bound:g} ms内断开"))
 @then(parsers.parse("the emergency-brake loop opens within {bound:g} ms"))
 def _(sut: TrainDriver, t_action: int, bound: float) -> None:

@@ -63,6 +63,7 @@ def test_mutmut_mutates_the_references_and_runs_the_features_with_the_kill_recor
     assert mutmut["source_paths"] == ["sut/reference/"]
     assert mutmut["pytest_add_cli_args_test_selection"] == ["features/"]
     assert "outline.mutation_plugin" in mutmut["pytest_add_cli_args"]
+    assert "--no-snapshots" in mutmut["pytest_add_cli_args"]      # else restored scenarios hide who reaches what
     assert {"steps/", "features/", "outline/", "conftest.py"} <= set(mutmut["also_copy"])
     assert config["project"]["optional-dependencies"]["mutate"] == ["mutmut==3.8.1"]
 
@@ -98,3 +99,28 @@ def test_the_summary_names_the_mutation_entry_and_does_not_count_it_as_a_scenari
     text = summary.format_summary(summary.summarize(summary.load_results(tmp_path)))
     assert text.splitlines()[0].startswith("0 scenarios: 0 passed")
     assert text.splitlines()[-1] == "Mutation testing of the references: 100.0 % killed (target 90 %)"
+
+
+def test_a_mutant_inside_a_usage_error_is_passed_over_and_counted(tmp_path: Path,
+                                                                   monkeypatch: pytest.MonkeyPatch) -> None:
+    source = tmp_path / "sut" / "reference" / "atp" / "desk.py"
+    source.parent.mkdir(parents=True)
+    source.write_text("from sut.errors import OutOfRange\n\ndef set_notch(n):\n    if not 0 <= n <= 7:\n"
+                      "        raise OutOfRange('notch', n,\n                         '0..7')\n"
+                      "    if n == 3:\n        raise ValueError('three')\n    return n\n", encoding="utf-8")
+    monkeypatch.setattr(mutation, "ROOT", tmp_path)
+    monkeypatch.setattr(mutation, "_RAISES", {})
+    path = "sut/reference/atp/desk.py"
+    assert [line for line in range(1, 11) if mutation.in_usage_error(path, line)] == [5, 6]
+
+    lines = {"x_set_notch__mutmut_1": (4, "if not 1 <= n <= 7:"), "x_set_notch__mutmut_2": (6, "'XX0..7XX')"),
+             "x_set_notch__mutmut_3": (8, "raise ValueError('THREE')")}
+    monkeypatch.setattr(mutation, "describe", lambda name: Mutant(
+        name, "atp", path, lines[name.split(".")[-1]][0], "", lines[name.split(".")[-1]][1]))
+    monkeypatch.setattr(mutation, "equivalents", lambda: [])
+    left_out: dict[str, int] = {}
+    names = [f"sut.reference.atp.desk.{n}" for n in sorted(lines)]
+    chosen = mutation.sample(names, 3, seed=1, left_out=left_out)
+    assert sorted(m.name.split(".")[-1] for m in chosen) == ["x_set_notch__mutmut_1", "x_set_notch__mutmut_3"]
+    assert left_out == {"usage error": 1}
+    assert "Passed over while drawing: 1 usage error" in mutation.table(chosen, 1, left_out)

@@ -459,6 +459,12 @@ class EmergencyOperationAtSpeed(ReferenceMetro):
     BEHAVIOUR = {"emergency_operation_at_speed": True}
 
 
+class PacketsFromNodeOne(ReferenceTrain):
+    """NET-10: every packet on the ring carries node 1's ID as its source; the layout and CRC are right and
+    the nodes understand each other (they read the sender from the exchange), but the wire misnames it."""
+    BEHAVIOUR = {"packet_source_id": 1}
+
+
 class StatusPolledAtOneAddress(ReferenceMetro):
     """TCN-05: every device status request carries the first device's address; the devices still answer in
     turn, so the frames decode and the log agrees with them, but the wire names the wrong device."""
@@ -498,6 +504,7 @@ FAULTY += [
     (EmergencyOperationAtSpeed, "TCN-09", "F-NET-25"),
     (StatusPolledWithReservedCode, "TCN-05", "F-NET-24"),
     (StatusPolledAtOneAddress, "TCN-05", "F-NET-24"),
+    (PacketsFromNodeOne, "NET-10", "F-NET-26"),
 ]
 IN_BAND += [BriskMetro]
 

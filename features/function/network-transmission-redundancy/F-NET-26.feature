@@ -22,3 +22,8 @@ Feature: F-NET-26 ARCNET frames on the ring, read by an analyser
     When the next command frame from "car3.LCU" to "car4.LCU" is corrupted
     And 100 ms pass
     Then the analyser finds the corrupted command frame failing its ARCNET check
+
+  @req:NET-10
+  Scenario: F-NET-26 Tokens and packets on a span carry the IDs of the exchange they belong to
+    When 500 ms pass
+    Then every token the analyser saw is addressed to the node across the span and every packet carries its sender's node ID

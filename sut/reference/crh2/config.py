@@ -59,6 +59,7 @@ class Behaviour:
     undervoltage_lockout: bool = True     # FS-02 a supply below 0.6 Un past its hold-up switches off
     restart_after_dropout: bool = True    # DECISIONS: a supply restarts once its input is back in range
     selfdiag_fcs_check: bool = True       # NET-05 the RXC discards self-diagnostic frames with a bad FCS
+    packet_source_id: int | None = None   # NET-10 a fixed SID on every packet (None: the sender's own ID)
 
 
 @dataclass(frozen=True)

@@ -15,7 +15,7 @@ from __future__ import annotations
 import heapq
 from typing import TYPE_CHECKING, Any, Protocol
 
-from sut.reference.crh2.frames import BROADCAST, Frame, tx_time_us
+from sut.reference.crh2.frames import BROADCAST, Frame, declared_length, encode_pac, tx_time_us
 
 if TYPE_CHECKING:
     from sut.reference.crh2.context import TrainContext
@@ -97,6 +97,7 @@ class Ring:
         self.by_priority = behaviour.priorities
         self.check = behaviour.frame_check
         self.both_ways = behaviour.reverse_routing
+        self.source_id = behaviour.packet_source_id
 
     def span_between(self, a: "RingNode", b: "RingNode") -> Span | None:
         for span in self.spans:
@@ -112,6 +113,9 @@ class Ring:
 
     def broadcast(self, node: "RingNode", frame: Frame) -> None:
         self._number(frame)
+        if self.source_id is not None:         # faulty variants only: the nodes still read frame.src
+            offset, _ = declared_length(frame.wire)
+            frame.wire = encode_pac(self.source_id, frame.dst, frame.wire[offset:-2])
         node.seen_add(frame.uid)
         for direction in ((R, L) if self.both_ways else (R,)):
             if node.port_ok(direction):
