@@ -70,8 +70,11 @@ def _(sut: TrainDriver, a: int, b: int) -> int:
 
 @given(parsers.parse("{car:d}号车的制动力为需求值的{pct:g} %"))
 @given(parsers.parse("the brake force of car {car:d} is {pct:g} % of the demand"))
-def _(sut: TrainDriver, car: int, pct: float) -> None:
+@when(parsers.parse("{car:d}号车的制动力变为需求值的{pct:g} %"), target_fixture="t_action")
+@when(parsers.parse("the brake force of car {car:d} becomes {pct:g} % of the demand"), target_fixture="t_action")
+def _(sut: TrainDriver, car: int, pct: float) -> int:
     sut.set_input(f"car{car}.brake force", pct)
+    return sut.now_us
 
 
 @given(parsers.parse("车门处于{state:w}状态"), converters={"state": zh.core_state})

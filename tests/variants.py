@@ -465,6 +465,18 @@ class PacketsFromNodeOne(ReferenceTrain):
     BEHAVIOUR = {"packet_source_id": 1}
 
 
+class MainCircuitResetsItself(ReferenceTrain):
+    """ILK-06 (the project's latching decision): an opened VCB closes again by itself one minute after the
+    transformer fault clears, without the driver's reset; the 500 ms watch of F-VSD-02 let it pass."""
+    BEHAVIOUR = {"protection_self_reset_us": 60_000_000}
+
+
+class BrakeForceTripClearsItself(ReferenceTrain):
+    """ILK-03 (latched trip, DECISIONS.md): the emergency brake for insufficient brake force releases by
+    itself two minutes after it tripped."""
+    BEHAVIOUR = {"brake_force_trip_clears_us": 120_000_000}
+
+
 class StatusPolledAtOneAddress(ReferenceMetro):
     """TCN-05: every device status request carries the first device's address; the devices still answer in
     turn, so the frames decode and the log agrees with them, but the wire names the wrong device."""
@@ -505,6 +517,8 @@ FAULTY += [
     (StatusPolledWithReservedCode, "TCN-05", "F-NET-24"),
     (StatusPolledAtOneAddress, "TCN-05", "F-NET-24"),
     (PacketsFromNodeOne, "NET-10", "F-NET-26"),
+    (MainCircuitResetsItself, "ILK-06", "F-VSD-02"),
+    (BrakeForceTripClearsItself, "ILK-03", "F-ILK-03"),
 ]
 IN_BAND += [BriskMetro]
 

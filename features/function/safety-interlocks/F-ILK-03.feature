@@ -25,3 +25,16 @@ Feature: F-ILK-03 Insufficient brake force applies the emergency and the rapid b
     And 2 s pass
     Then the "emergency brake" never became applied
     And the "rapid brake" never became commanded
+
+  @req:ILK-03 @tentative
+  Scenario: F-ILK-03 The tripped emergency brake still holds ten minutes after the brake force came back and the train stopped
+    Given the brake force of car 3 is 30 % of the demand
+    When the driver moves the brake handle of cab 1 to step 4
+    And 1000 ms pass
+    And the train speed changes to 0 km/h
+    And the brake force of car 3 becomes 100 % of the demand
+    And the driver moves the brake handle of cab 1 to step 0
+    And 10 min pass
+    Then the "emergency brake" stays applied
+    And the "rapid brake" stays commanded
+    And the cab 1 monitor shows "insufficient brake force"

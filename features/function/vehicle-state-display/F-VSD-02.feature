@@ -44,3 +44,16 @@ Feature: F-VSD-02 VCB state on the cab monitor after a transformer earth fault
     When the driver resets the main circuit
     And 150 ms pass
     Then the cab 1 monitor changes "unit1.VCB" to "closed" within 150 ms
+
+  @req:ILK-06 @tentative
+  Scenario: F-VSD-02 An opened VCB is still open ten minutes after the fault cleared, until the main circuit is reset
+    Given the vehicle input "unit1.transformer" is "secondary earth fault"
+    When 300 ms pass
+    And the vehicle input "unit1.transformer" becomes "normal"
+    And 10 min pass
+    Then the "unit1.VCB" stays open
+    And the "unit1.auxiliary supply" stays extended
+    And the cab 1 monitor displays "unit1.VCB" as "open"
+    When the driver resets the main circuit
+    And 150 ms pass
+    Then the "unit1.VCB" is closed within 150 ms

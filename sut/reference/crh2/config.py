@@ -60,6 +60,9 @@ class Behaviour:
     restart_after_dropout: bool = True    # DECISIONS: a supply restarts once its input is back in range
     selfdiag_fcs_check: bool = True       # NET-05 the RXC discards self-diagnostic frames with a bad FCS
     packet_source_id: int | None = None   # NET-10 a fixed SID on every packet (None: the sender's own ID)
+    protection_self_reset_us: int | None = None   # ILK-06 a main circuit that resets itself this long after
+                                                  # its fault clears (None: only the driver's reset)
+    brake_force_trip_clears_us: int | None = None  # ILK-03 a brake-force trip that clears itself (None: latched)
 
 
 @dataclass(frozen=True)

@@ -207,6 +207,13 @@ class Vehicle:
             if name == "speed":
                 self._odometer(value, linear=False)
             self.inputs[name] = value
+            resets_after = self.train.cfg.behaviour.protection_self_reset_us
+            if resets_after is not None and name.endswith(".transformer") and value == "normal":
+                self.kernel.call_later(resets_after, self._main_circuit_reset_now)    # faulty variants only
+        self._evaluate()
+
+    def _main_circuit_reset_now(self) -> None:
+        self._main_circuit_reset()
         self._evaluate()
 
     # -- mileage: speed integrated exactly over piecewise-constant and linear pieces -------------
@@ -341,6 +348,13 @@ class Vehicle:
         self._force_timer = None
         self.brake_force_low = True            # latched: the emergency brake holds until the train stops
         self.train.emit("vehicle", "brake.force_low")
+        self._evaluate()
+        clears_after = self.train.cfg.behaviour.brake_force_trip_clears_us
+        if clears_after is not None:                                                  # faulty variants only
+            self.kernel.call_later(clears_after, self._brake_force_trip_clears)
+
+    def _brake_force_trip_clears(self) -> None:
+        self.brake_force_low = False
         self._evaluate()
 
     # ILK-06: transformer, oil pump, oil temperature
