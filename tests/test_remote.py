@@ -151,6 +151,7 @@ def _raw(url: str, *lines: bytes, hello: bool = True, closes: bool = True, timeo
     (b'{"id":1,"op":"call","method":"advance","args":[1]}\n', "before open"),
     (b'{"id":1,"op":"launch"}\n', "unknown op 'launch'"),
     (b"\xff\xfe\n", "not UTF-8"),
+    (b'{"id":' + b"9" * 5000 + b',"op":"open"}\n', "not JSON the protocol can carry"),   # past int's digit limit
 ])
 def test_the_server_answers_garbage_and_closes(local_server: str, line: bytes, says: str) -> None:
     hello, answer, after = _raw(local_server, line)
@@ -252,6 +253,8 @@ def _silent(conn, stream) -> None:
     (_open_ok_then(lambda conn, stream: (stream.readline(), conn.sendall(b'{"id":2,"result":{"$bytes":"zz"}}\n'))),
      "garbled result: $bytes"),
     (_open_ok_then(_silent), "no answer to configure() within 0.5 s"),
+    (_open_ok_then(lambda conn, stream: (stream.readline(), conn.sendall(b'{"id":2,"result":' + b"7" * 5000 + b"}\n"))),
+     "garbled answer: not JSON the protocol can carry"),
 ])
 def test_a_bad_server_is_not_reachable_quickly(behaviour, says: str) -> None:
     with fake_server(behaviour) as url:
@@ -297,6 +300,20 @@ def test_any_line_is_a_message_or_a_wire_error(line: bytes) -> None:
     try:
         message = wire.loads(line)
     except wire.WireError:
+        return
+    assert isinstance(message, dict)
+
+
+@FUZZ
+@given(st.integers(min_value=1, max_value=12_000), st.booleans(),
+       st.sampled_from([b'{"id":%d}', b'{"id":1,"result":%d}', b'{"id":1,"events":[[%d,"a","b",{}]]}']))
+def test_a_number_of_any_length_is_a_message_or_a_wire_error(digits: int, negative: bool, template: bytes) -> None:
+    """JSON has no limit on an integer's digits, Python's int() has (4300): past it is a WireError too."""
+    line = template.replace(b"%d", b"-" * negative + b"7" * digits) + b"\n"
+    try:
+        message = wire.loads(line)
+    except wire.WireError:
+        assert digits > 4000
         return
     assert isinstance(message, dict)
 

@@ -84,6 +84,8 @@ def loads(line: bytes) -> dict[str, Any]:
         raise WireError(f"not JSON ({exc.msg} at column {exc.colno}): {line[:60]!r}") from None
     except RecursionError:
         raise WireError("JSON nested too deeply") from None
+    except ValueError as exc:           # an integer past Python's str-to-int digit limit (4300 by default)
+        raise WireError(f"not JSON the protocol can carry ({exc}): {line[:60]!r}") from None
     if not isinstance(message, dict):
         raise WireError(f"a message is a JSON object, not {type(message).__name__}: {line[:60]!r}")
     return message
