@@ -187,7 +187,8 @@ def run(mutants: list[Mutant], jobs: int) -> None:
         if KILLS.exists() else {}
     for mutant in mutants:
         mutant.status = status_by_exit_code[codes.get(mutant.name)]
-        mutant.killed_by = killers.get(mutant.name, "").split("::")[-1]
+        killer = killers.get(mutant.name, "")          # a scenario by its title, a test of the engine in full
+        mutant.killed_by = killer.split("::")[-1] if killer.startswith("features/") else killer
 
 
 def rates(mutants: list[Mutant]) -> dict[str, tuple[int, int]]:

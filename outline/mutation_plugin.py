@@ -1,14 +1,40 @@
-"""pytest plugin for `make mutate` (outline/mutation.py): which scenario killed a mutant.
+"""pytest plugin for `make mutate` (outline/mutation.py): what may judge a mutant, and what killed it.
 
-mutmut runs the scenarios that reach a mutant's function in a forked child with MUTANT_UNDER_TEST naming
-the mutant, and stops at the first failure (-x); it keeps only the exit code. This notes the failing
-scenario, one line per mutant, in the file named by $CRH2_MUTATION_KILLS.
+mutmut runs the tests that reach a mutant's function in a forked child with MUTANT_UNDER_TEST naming
+the mutant, and stops at the first failure (-x); it keeps only the exit code.
+
+- What may judge it: a train reference (crh2, metro, atp) is judged by the conformance scenarios alone. The
+  simulation engine they share (kernel.py, bulk.py) is no train: its specification is that a bulk advance
+  gives the same state and trace as frame by frame (tests/test_bulk.py) and the kernel's own contract
+  (tests/test_kernel.py), so its mutants also meet those tests, after the scenarios. mutmut collects all of
+  them (pyproject.toml); this leaves each mutant only its own judges.
+- What killed it: the failing test, one line per mutant, in the file named by $CRH2_MUTATION_KILLS.
 """
 from __future__ import annotations
 
 import os
 
 import pytest
+
+
+ENGINE = ("sut.reference.kernel.", "sut.reference.bulk.")
+
+
+def judges(mutant: str, nodeids: list[str]) -> list[str]:
+    """The tests that may judge `mutant`, scenarios first."""
+    scenarios = [n for n in nodeids if n.startswith("features/")]
+    return scenarios + ([n for n in nodeids if not n.startswith("features/")] if mutant.startswith(ENGINE) else [])
+
+
+@pytest.hookimpl(trylast=True)
+def pytest_collection_modifyitems(config: pytest.Config, items: list[pytest.Item]) -> None:
+    mutant = os.environ.get("MUTANT_UNDER_TEST", "")
+    if "__mutmut_" not in mutant:
+        return                        # mutmut's own runs (the map of who reaches what, the clean run): all
+    by_id = {item.nodeid: item for item in items}
+    kept = [by_id[n] for n in judges(mutant, list(by_id))]
+    config.hook.pytest_deselected(items=[item for item in items if item not in kept])
+    items[:] = kept
 
 
 def pytest_runtest_logreport(report: pytest.TestReport) -> None:

@@ -61,7 +61,7 @@ def test_mutmut_mutates_the_references_and_runs_the_features_with_the_kill_recor
     config = tomllib.loads((ROOT / "pyproject.toml").read_text(encoding="utf-8"))
     mutmut = config["tool"]["mutmut"]
     assert mutmut["source_paths"] == ["sut/reference/"]
-    assert mutmut["pytest_add_cli_args_test_selection"] == ["features/"]
+    assert mutmut["pytest_add_cli_args_test_selection"] == ["features/", "tests/test_bulk.py", "tests/test_kernel.py"]
     assert "outline.mutation_plugin" in mutmut["pytest_add_cli_args"]
     assert "--no-snapshots" in mutmut["pytest_add_cli_args"]      # else restored scenarios hide who reaches what
     assert {"steps/", "features/", "outline/", "conftest.py"} <= set(mutmut["also_copy"])
@@ -69,13 +69,17 @@ def test_mutmut_mutates_the_references_and_runs_the_features_with_the_kill_recor
 
 
 def test_the_plugin_notes_the_scenario_that_killed_a_mutant(tmp_path: Path) -> None:
-    (tmp_path / "test_x.py").write_text("def test_ok():\n    pass\n\ndef test_breaks():\n    assert False\n")
+    (tmp_path / "features").mkdir()
+    (tmp_path / "features" / "test_x.py").write_text("def test_ok():\n    pass\n\ndef test_breaks():\n    assert False\n")
+    (tmp_path / "test_own.py").write_text("def test_own():\n    assert False\n")     # not a judge of a train
     kills = tmp_path / "kills.tsv"
     env = dict(os.environ, MUTANT_UNDER_TEST="sut.reference.atp.vdx.xǁRelayǁpower__mutmut_3",
                CRH2_MUTATION_KILLS=str(kills), PYTHONPATH=str(ROOT))
     subprocess.run([sys.executable, "-m", "pytest", "-q", "-p", "outline.mutation_plugin", "-p", "no:cacheprovider",
-                    "test_x.py"], cwd=tmp_path, env=env, capture_output=True, text=True, timeout=120)
-    assert kills.read_text(encoding="utf-8") == "sut.reference.atp.vdx.xǁRelayǁpower__mutmut_3\ttest_x.py::test_breaks\n"
+                    "test_own.py", "features/test_x.py"], cwd=tmp_path, env=env, capture_output=True, text=True,
+                   timeout=120)
+    assert kills.read_text(encoding="utf-8") == \
+        "sut.reference.atp.vdx.xǁRelayǁpower__mutmut_3\tfeatures/test_x.py::test_breaks\n"
 
 
 def test_the_last_run_becomes_one_entry_of_the_allure_report(tmp_path: Path) -> None:
@@ -124,3 +128,14 @@ def test_a_mutant_inside_a_usage_error_is_passed_over_and_counted(tmp_path: Path
     assert sorted(m.name.split(".")[-1] for m in chosen) == ["x_set_notch__mutmut_1", "x_set_notch__mutmut_3"]
     assert left_out == {"usage error": 1}
     assert "Passed over while drawing: 1 usage error" in mutation.table(chosen, 1, left_out)
+
+
+def test_a_train_reference_is_judged_by_the_scenarios_alone_the_engine_also_by_its_own_tests() -> None:
+    from outline.mutation_plugin import judges
+    ids = ["tests/test_bulk.py::test_both_ways", "features/test_outline.py::test_fnet01_a", "tests/test_kernel.py::test_k",
+           "features/test_outline.py::test_filk06_b"]
+    assert judges("sut.reference.crh2.ring.xǁRingǁ_start__mutmut_4", ids) == \
+        ["features/test_outline.py::test_fnet01_a", "features/test_outline.py::test_filk06_b"]
+    assert judges("sut.reference.bulk.x_slope__mutmut_53", ids) == \
+        ["features/test_outline.py::test_fnet01_a", "features/test_outline.py::test_filk06_b",
+         "tests/test_bulk.py::test_both_ways", "tests/test_kernel.py::test_k"]
