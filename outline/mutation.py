@@ -134,12 +134,17 @@ _RAISES: dict[str, list[tuple[int, int]]] = {}
 
 
 def in_usage_error(path: str, line: int) -> bool:
-    """Whether `line` of `path` is inside a `raise` of one of the driver's USAGE_ERRORS."""
+    """Whether `line` of `path` is inside a `raise` of one of the driver's USAGE_ERRORS, or in the test of an
+    `if` that does nothing but raise one (the check of the stimulus is part of the usage error)."""
     if path not in _RAISES:
+        def usage(node: ast.AST) -> bool:
+            return isinstance(node, ast.Raise) and isinstance(node.exc, ast.Call) \
+                and isinstance(node.exc.func, ast.Name) and node.exc.func.id in USAGE_ERRORS
         tree = ast.parse((ROOT / path).read_text(encoding="utf-8"))
-        _RAISES[path] = [(node.lineno, node.end_lineno or node.lineno) for node in ast.walk(tree)
-                         if isinstance(node, ast.Raise) and isinstance(node.exc, ast.Call)
-                         and isinstance(node.exc.func, ast.Name) and node.exc.func.id in USAGE_ERRORS]
+        spans = [(node.lineno, node.end_lineno or node.lineno) for node in ast.walk(tree) if usage(node)]
+        spans += [(node.test.lineno, node.test.end_lineno or node.test.lineno) for node in ast.walk(tree)
+                  if isinstance(node, ast.If) and len(node.body) == 1 and usage(node.body[0]) and not node.orelse]
+        _RAISES[path] = spans
     return any(start <= line <= end for start, end in _RAISES[path])
 
 

@@ -62,10 +62,13 @@ def _(sut: TrainDriver, cab: int, pct: int) -> int:
     return sut.now_us
 
 
-@when("司机将紧急运行开关置于接通位", target_fixture="t_action")
-@when("the driver turns the emergency-operation switch on", target_fixture="t_action")
-def _(sut: TrainDriver) -> int:
-    sut.set_input("emergency operation", True)
+@when(parsers.parse("司机将紧急运行开关置于{position}位"), converters={"position": zh.metro_switch},
+      target_fixture="t_action")
+@when(parsers.parse("the driver turns the emergency-operation switch {position:w}"), target_fixture="t_action")
+def _(sut: TrainDriver, position: str) -> int:
+    if position not in ("on", "off"):
+        raise ValueError(f"the emergency-operation switch is turned on or off, not {position!r}")
+    sut.set_input("emergency operation", position == "on")
     return sut.now_us
 
 

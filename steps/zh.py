@@ -147,6 +147,7 @@ METRO_DATA_CLASSES = {"过程数据": "process data", "消息数据": "message d
 
 # 正常 -> normal, 列车网络故障 -> train network failure, 紧急运行 -> emergency operation.
 metro_mode = words(METRO_MODES)
+metro_switch = words({"接通": "on", "断开": "off"})      # a switch's two positions
 
 
 def metro_data_classes(text: str) -> str:

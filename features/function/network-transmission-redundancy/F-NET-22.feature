@@ -48,7 +48,16 @@ Feature: F-NET-22 WTB master fallback: car 1 CCU, then car 2 VCU, then car 3 VCU
   Scenario: F-NET-22 A backup master collects but stores nothing: the records go to the car 6 CCU
     When "car1.CCU" fails
     And 1000 ms pass
-    Then "car6.CCU" holds a record "car1.CCU: no answer on WTB"
+    Then "car6.CCU" holds the record "car1.CCU: no answer on WTB" exactly once
     And "car6.CCU" holds a record "WTB master (car1.CCU silent)"
     And "car2.VCU" holds no record
     And "car3.VCU" holds no record
+
+  @req:RED-04
+  Scenario: F-NET-22 A repaired CCU is recorded once as answering on the WTB again
+    When "car1.CCU" fails
+    And 1000 ms pass
+    And "car1.CCU" is repaired
+    And 1000 ms pass
+    Then "car6.CCU" holds the record "car1.CCU: no answer on WTB" exactly once
+    And "car6.CCU" holds the record "car1.CCU: answering on WTB again" exactly once

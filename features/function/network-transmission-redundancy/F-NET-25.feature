@@ -36,6 +36,11 @@ Feature: F-NET-25 Train network failure: brake to a stop, then hard-wired emerge
     Then every VVVF applies 60 % traction within 50 ms
     And every BECU applies 0 % brake
     And the cab 6 display shows the mode "emergency operation"
+    When the driver turns the emergency-operation switch off
+    And 100 ms pass
+    Then every BECU applies 100 % brake within 50 ms
+    And every VVVF applies 0 % traction
+    And the cab 6 display shows the mode "train network failure"
 
   @req:TCN-09
   Scenario: F-NET-25 Emergency operation is not taken at speed
