@@ -65,3 +65,22 @@ Feature: F-CTL-15 Active-cab CCU failure: the adjacent VCU takes over and the tr
     And 200 ms pass
     Then every BECU applies 100 % brake within 100 ms
     And every VVVF applies 0 % traction
+
+  @req:TCN-08
+  Scenario: F-CTL-15 In reverse the master controller reaches every VVVF too
+    Given the driver has inserted the key in cab 1
+    And the direction switch of cab 1 is at reverse
+    And the train has been powered up for 1000 ms
+    When the driver moves the master controller of cab 1 to 45 % traction
+    And 200 ms pass
+    Then every VVVF applies 45 % traction within 100 ms
+    And every BECU applies 0 % brake
+
+  @req:TCN-08
+  Scenario: F-CTL-15 Without a key in either cab the train stays braked and the displays say so
+    Given the train has been powered up for 1000 ms
+    When 500 ms pass
+    Then every VVVF applies 0 % traction
+    And every BECU applies 100 % brake
+    And the cab 1 display shows the mode "no cab"
+    And the cab 6 display shows the mode "no cab"
