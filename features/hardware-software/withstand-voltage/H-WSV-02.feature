@@ -27,4 +27,5 @@ Feature: H-WSV-02 Dielectric test at 1500 V rms for 1 min: the unit survives and
     Then "car3.LCU" sends status data again within 61000 ms
     And the CI and BCU of car 3 receive traction notch 7 over path 1 within 61000 ms
     And the cab 1 monitor shows no faults
+    And the maintenance view of cab 1 lists "car3.LCU.supply restarted after withstand test"
     And the insulation resistance of "car3.LCU" is at least 20 MOhm
