@@ -72,6 +72,8 @@ def _(sut: TrainDriver, lo: float, hi: float) -> None:
 def _(sut: TrainDriver, cab: int, text: str) -> None:
     history = sut.monitor(cab)["maintenance"]
     assert any(text in line for line in history), f"the maintenance view lists {history or 'nothing'}"
+    garbled = [line for line in history if not line.isprintable()]
+    assert not garbled, f"the maintenance view shows lines a driver cannot read: {garbled}"
 
 
 @then(parsers.parse('{cab:d}号司机室的检修画面中"{first}"列在"{second}"之前'))
