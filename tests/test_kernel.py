@@ -269,6 +269,30 @@ def test_interrupt_while_waiting_on_a_signal(k):
     assert log == [("interrupted", 10, "power"), ("woke", 110), ("woke again", 1_110)]
 
 
+def test_a_stale_signal_never_wakes_a_process_that_has_waited_as_often_again(k):
+    """Wait numbers only grow: the signal a process waited on before an interrupt cannot wake it later, even
+    once it has waited as many times again."""
+    sig = k.signal()
+    log = []
+
+    def proc():
+        for _ in range(3):
+            yield 1
+        try:
+            yield sig
+        except Interrupt:
+            log.append(("interrupted", k.now))
+        for _ in range(3):
+            yield 100
+        log.append(("done", k.now))
+
+    p = k.process(proc(), "waiter")
+    k.call_at(10, p.interrupt, "power")
+    k.call_at(250, sig.fire)
+    k.run(10_000)
+    assert log == [("interrupted", 10), ("done", 310)]
+
+
 def test_interrupt_before_the_process_has_started(k):
     log = []
 
