@@ -197,10 +197,10 @@ def run(mutants: list[Mutant], jobs: int) -> None:
 
 
 def rates(mutants: list[Mutant]) -> dict[str, tuple[int, int]]:
-    """(detected, sampled) per part and over all."""
+    """(detected, checked) per part and over all; a mutant a stopped run never got to is in neither."""
     out: dict[str, tuple[int, int]] = {}
     for part in sorted({m.part for m in mutants}) + ["all"]:
-        mine = [m for m in mutants if part in ("all", m.part)]
+        mine = [m for m in mutants if part in ("all", m.part) and m.status != "not checked"]
         out[part] = (sum(m.status in DETECTED for m in mine), len(mine))
     return out
 
@@ -210,6 +210,10 @@ def table(mutants: list[Mutant], seed: int, left_out: dict[str, int] | None = No
     if left_out:
         lines += ["Passed over while drawing: " + ", ".join(f"{n} {why}" for why, n in sorted(left_out.items()))
                   + " (sut/reference/EQUIVALENT_MUTANTS.txt; usage errors: outline/mutation.py).", ""]
+    unchecked = sum(m.status == "not checked" for m in mutants)
+    if unchecked:
+        lines += [f"{unchecked} sampled mutants were not checked (the run was stopped before them); the rates "
+                  "are over the checked ones.", ""]
     lines += ["| part | kill rate |", "| --- | --- |"]
     for part, (done, total) in rates(mutants).items():
         lines.append(f"| {part} | {done}/{total} = {100 * done / max(total, 1):.1f} % |")

@@ -51,8 +51,10 @@ def test_the_checked_in_equivalents_parse() -> None:
 def test_kill_rate_per_part_counts_timeouts_as_detected_and_untested_as_survivors() -> None:
     def m(part: str, status: str) -> Mutant:
         return Mutant(f"{part}-{status}", part, f"sut/reference/{part}/x.py", 1, "a", "b", status, "")
-    sampled = [m("atp", "killed"), m("atp", "survived"), m("metro", "timeout"), m("metro", "no tests")]
+    sampled = [m("atp", "killed"), m("atp", "survived"), m("metro", "timeout"), m("metro", "no tests"),
+               m("metro", "not checked")]
     assert mutation.rates(sampled) == {"atp": (1, 2), "metro": (1, 2), "all": (2, 4)}
+    assert "1 sampled mutants were not checked" in mutation.table(sampled, seed=7)
     text = mutation.table(sampled, seed=7)
     assert "| atp | 1/2 = 50.0 % |" in text and "| all | 2/4 = 50.0 % |" in text and "seed 7" in text
 
