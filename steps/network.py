@@ -378,9 +378,12 @@ def _(sut: TrainDriver, t_action: int) -> None:
         except arcnet.FrameError as exc:
             raise AssertionError(f"{where}: {exc}") from None
         assert did == arcnet.BROADCAST or did in numbers.values(), f"{where}: {ev['frame']} packet for node {did}, not on the ring"
-        senders = handed.get(ev["frame"], {})
-        assert sid in senders, (f"{where}: a {ev['frame']} packet from node {sid}; nodes that handed one to the ring: "
-                                f"{sorted(senders)}")
+        if ev["frame"] in _PACKET_SENDERS:
+            senders = handed.get(ev["frame"], {})
+            assert sid in senders, (f"{where}: a {ev['frame']} packet from node {sid}; nodes that handed one to the "
+                                    f"ring: {sorted(senders)}")
+        else:                            # token formation: no handover in the trace to hold the ID against
+            assert sid in numbers.values(), f"{where}: a {ev['frame']} packet from node {sid}, not on the ring"
         carried.setdefault(ev["frame"], set()).add(sid)
     # Every node's status crosses every span (broadcast both ways): all of those sent early enough are seen.
     early = {sid for sid, t in handed.get("status", {}).items() if t <= end - us(100)}
