@@ -324,21 +324,32 @@ def _(sut: TrainDriver, t_action: int, device: str) -> None:
 def _(sut: TrainDriver, t_action: int, packets: int) -> None:
     """NET-10 with the suite's own codec (sut/codecs/arcnet.py): ITT = 04 + destination twice; PAC = 01,
     source, destination twice, length, data, CRC-16/ARC; at most 508 data bytes."""
+    count = 0
+    for _, sid, _, data in _analysed(sut, t_action):
+        if sid is not None:
+            assert len(data) <= arcnet.MAX_DATA, f"{len(data)} data bytes in one packet"
+            count += 1
+    assert count >= packets, f"only {count} packets decoded"
+
+
+def _analysed(sut: TrainDriver, t_action: int):
+    """Every frame the analyser saw since the action, decoded: (event, sid, did, data), sid None for a token;
+    a frame that does not decode fails the step, named by its time and span."""
     seen = sut.trace.select(kind="link.tx", since=t_action)
     assert seen, "the analyser saw no frame"
-    count = 0
     for ev in seen:
         wire = bytes.fromhex(ev["hex"])
         try:
             if wire[:1] == bytes([arcnet.EOT]):
-                arcnet.decode_itt(wire)
+                yield ev, None, arcnet.decode_itt(wire), b""
             else:
-                _, _, data = arcnet.decode_pac(wire)
-                assert len(data) <= arcnet.MAX_DATA, f"{len(data)} data bytes in one packet"
-                count += 1
+                yield (ev, *arcnet.decode_pac(wire))
         except arcnet.FrameError as exc:
-            raise AssertionError(f"{ev.t_ms:.3f} ms, {ev['frm']} -> {ev['to']}: {exc}") from None
-    assert count >= packets, f"only {count} packets decoded"
+            raise AssertionError(f"{_where(ev)}: {exc}") from None
+
+
+def _where(ev) -> str:
+    return f"{ev.t_ms:.3f} ms, {ev['frm']} -> {ev['to']}"
 
 
 # Who puts each kind of packet on the ring, as the trace names the handover: (event kind, board).
@@ -356,8 +367,6 @@ def _(sut: TrainDriver, t_action: int) -> None:
     self-consistent (IDs swapped, one constant ID) decodes and is understood by its own nodes: this
     rejects it. A packet still on its way at the end may have been handed over just before the action."""
     numbers = {name: index + 1 for index, name in enumerate(sut.ring_nodes())}
-    seen = sut.trace.select(kind="link.tx", since=t_action)
-    assert seen, "the analyser saw no frame"
     end = sut.now_us
     handed: dict[str, dict[int, int]] = {}        # packet kind -> sender node number -> last handover time
     for kind, (event, board) in _PACKET_SENDERS.items():
@@ -366,17 +375,12 @@ def _(sut: TrainDriver, t_action: int) -> None:
             if node in numbers:
                 handed.setdefault(kind, {})[numbers[node]] = ev.t
     carried: dict[str, set[int]] = {}
-    for ev in seen:
-        wire, where = bytes.fromhex(ev["hex"]), f"{ev.t_ms:.3f} ms, {ev['frm']} -> {ev['to']}"
-        try:
-            if wire[:1] == bytes([arcnet.EOT]):
-                did = arcnet.decode_itt(wire)
-                assert did == numbers[ev["to"]], (f"{where}: the token is addressed to node {did}; it is passed to "
-                                                  f"{ev['to']}, node {numbers[ev['to']]}")
-                continue
-            sid, did, _ = arcnet.decode_pac(wire)
-        except arcnet.FrameError as exc:
-            raise AssertionError(f"{where}: {exc}") from None
+    for ev, sid, did, _ in _analysed(sut, t_action):
+        where = _where(ev)
+        if sid is None:
+            assert did == numbers[ev["to"]], (f"{where}: the token is addressed to node {did}; it is passed to "
+                                              f"{ev['to']}, node {numbers[ev['to']]}")
+            continue
         assert did == arcnet.BROADCAST or did in numbers.values(), f"{where}: {ev['frame']} packet for node {did}, not on the ring"
         if ev["frame"] in _PACKET_SENDERS:
             senders = handed.get(ev["frame"], {})

@@ -209,11 +209,8 @@ class Vehicle:
             self.inputs[name] = value
             resets_after = self.train.cfg.behaviour.protection_self_reset_us
             if resets_after is not None and name.endswith(".transformer") and value == "normal":
-                self.kernel.call_later(resets_after, self._main_circuit_reset_now)    # faulty variants only
-        self._evaluate()
-
-    def _main_circuit_reset_now(self) -> None:
-        self._main_circuit_reset()
+                # faulty variants only: the driver's reset, made by the train itself
+                self.kernel.call_later(resets_after, self._apply, "main circuit reset", "reset")
         self._evaluate()
 
     # -- mileage: speed integrated exactly over piecewise-constant and linear pieces -------------
