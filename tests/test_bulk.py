@@ -26,6 +26,7 @@ from tests.test_faulty_variants import ROOT
 
 S = 1_000_000
 MIN = 60 * S
+MS = 1_000
 
 
 def powered() -> ReferenceTrain:
@@ -149,9 +150,10 @@ def test_bulk_runs_are_deterministic() -> None:
     assert one.trace.to_csv() == two.trace.to_csv()
 
 
-def test_the_steady_period_of_an_8_car_set_is_3_s() -> None:
-    # 12 nodes x 10 ms token rotation, command and poll cycles of 10 ms, loop devices up to 1 s (SDD)
-    assert bulk.steady_period_us(powered().train) == 3 * S
+def test_the_steady_period_of_an_8_car_set_is_one_token_rotation() -> None:
+    # 12 nodes x 10 ms token rotation, command and poll cycles of 10 ms; the loop devices (up to the side
+    # display's 1 s) are metronomes, regenerated over a skip rather than part of the period.
+    assert bulk.steady_period_us(powered().train) == 120 * MS
 
 
 def test_a_state_that_does_not_move_in_a_straight_line_is_not_steady() -> None:
@@ -167,7 +169,7 @@ def test_a_state_that_does_not_move_in_a_straight_line_is_not_steady() -> None:
 
 
 def test_a_sample_on_a_copy_shows_what_the_train_itself_does() -> None:
-    # Where the steady period is long (123 s for a 10.25 ms token hold), samples run on a copy (bulk._probe).
+    # Where the steady period is long (3.09 s for a 10.3 ms token hold), samples run on a copy (bulk._probe).
     train = powered()
     start, before = train.now_us, len(train.train.events)
     end = bulk._probe(train.train, 3 * S, bulk.BulkReport())
@@ -179,14 +181,35 @@ def test_a_sample_on_a_copy_shows_what_the_train_itself_does() -> None:
     assert itself == sampled
 
 
-def test_a_token_hold_of_10_25_ms_makes_the_steady_period_123_s() -> None:
-    # 12 x 10.25 ms = 123 ms against the 1 s cycles: lcm 123 s, longer than a sample (bulk.SAMPLE_US)
+def test_a_token_hold_of_10_25_ms_makes_the_steady_period_1_23_s() -> None:
+    # 12 x 10.25 ms = 123 ms against the 10 ms command and poll cycles: lcm 1.23 s (the loop devices' 1 s
+    # is a metronome's, not the train's)
     class TenQuarterHold(ReferenceTrain):
         TIMING = {"token_hold_us": 10_250}
 
     train = TenQuarterHold()
     train.power_on()
-    assert bulk.steady_period_us(train.train) == 123 * S > bulk.SAMPLE_US
+    assert bulk.steady_period_us(train.train) == 1230 * MS
+
+
+class LongPeriod(ReferenceTrain):
+    """12 x 10.3 ms = 123.6 ms against 10 ms: a steady period of 3.09 s, longer than a sample (3 s)."""
+    TIMING = {"token_hold_us": 10_300}
+
+
+def test_a_period_longer_than_a_sample_is_sampled_on_a_copy_in_a_soak_and_agrees_both_ways() -> None:
+    exact, fast = LongPeriod(), LongPeriod()
+    for train in (exact, fast):
+        train.power_on()
+        train.advance(2 * S)
+    assert bulk.steady_period_us(fast.train) == 3090 * MS > bulk.SAMPLE_US
+    with frame_by_frame():
+        exact.advance(3 * MIN)
+    fast.soak(3 * MIN, sample_every_us=MIN)
+    report, = fast.trace.select(kind="bulk.report")
+    assert report["jumps"] >= 1 and report["simulated_us"] < MIN, report
+    a, b = bulk.snapshot(exact.train), bulk.snapshot(fast.train)
+    assert a.shape == b.shape and a.ints == b.ints
 
 
 # -- the ATP rig (profile atp), alone and fitted to a CRH2 set: the same rule -------------------------

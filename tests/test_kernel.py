@@ -390,6 +390,54 @@ def test_every_rejects_non_positive_periods(k):
             k.every(period, lambda: None)
 
 
+# -- metronomes: free-running emitters ----------------------------------------------------------------
+def test_a_metronome_ticks_after_everything_else_due_at_its_instant_in_registration_order(k):
+    log = []
+    k.metronome(100, log.append, args=("m-slow",))           # registered first: first among metronomes
+    k.metronome(50, log.append, args=("m-fast",))
+    k.call_at(100, log.append, "late", prio=LATE)
+    k.call_at(100, lambda: k.call_later(0, log.append, "scheduled at 100 for 100"))
+    k.run(100)
+    assert log == ["m-slow", "m-fast", "m-fast", "scheduled at 100 for 100", "late", "m-slow", "m-fast"]
+
+
+def test_metronomes_are_not_in_the_periods_and_do_not_move_the_sequence(k):
+    k.every(10, lambda: None)
+    k.metronome(7, lambda: None)
+    k.run(1_000)
+    assert k.periods() == [10]
+    assert all(timer.fn != k._metronome_tick for timer in k.pending_model())
+    seq = k._seq
+    k.run(1_010)
+    assert k._seq - seq == 1           # the one cyclic tick; the metronome's ticks take no sequence number
+
+
+def _metronome_kernel() -> tuple[Kernel, list]:
+    k, log = Kernel(), []
+    k.metronome(30, lambda: log.append(("a", k.now)), phase=5)
+    k.metronome(45, lambda: log.append(("b", k.now)))
+    k.every(20, lambda: None)
+    return k, log
+
+
+def test_running_the_metronomes_alone_gives_their_ticks_as_run_does():
+    whole, by_run = _metronome_kernel()
+    whole.run(1_000)
+    alone, by_metronomes = _metronome_kernel()
+    alone.run_metronomes(1_000)
+    assert alone.now == 0 and by_metronomes == by_run
+    whole.run(2_000)
+    alone.run(2_000)                  # and from there on, the same again
+    assert by_metronomes == by_run
+
+
+def test_skipped_metronomes_go_on_from_their_next_tick():
+    k, log = _metronome_kernel()
+    k.skip_metronomes(1_000)
+    k.run(1_100)
+    assert log == [("a", 1_025), ("b", 1_035), ("a", 1_055), ("b", 1_080), ("a", 1_085)]
+
+
 # -- the whole model ------------------------------------------------------------------------------
 def _reference_trace_csv(us: int) -> tuple[str, int]:
     from sut.reference.crh2.backend import ReferenceTrain

@@ -16,6 +16,11 @@ the model must keep to make this sound: no behaviour that depends on elapsed tim
 or through comparisons with bounds shorter than the two checked periods (every bound in config.py is),
 counters kept unbounded (frames.py masks them on the wire), and nothing outside the Train that changes.
 
+Metronomes (Kernel.metronome: free-running emitters that only read the model and write the trace, such
+as the CRH2 current-loop devices) are left out of the state, of P and of the pattern: over a skipped
+stretch their ticks are run in place (an advance) or skipped (a soak), which is what frame by frame does
+because they run last at any instant and nothing depends on them.
+
 The trace of skipped periods: a soak (`run`) leaves samples and `time.skip` marks; a plain advance
 (`advance`) owes every event, and repeats the traffic of the last checked period, times and moving fields
 carried on (the same rule one level up: event fields carry unbounded values, and a pattern that does not
@@ -27,6 +32,7 @@ from __future__ import annotations
 
 import copy
 import enum
+from bisect import bisect_left
 import math
 import os
 import types
@@ -86,7 +92,7 @@ class _Reader:
             self.ints.append(value)
             self.writers.append(writer)
             return
-        if isinstance(value, _SCALARS):
+        if t in _PLAIN or isinstance(value, _SCALARS):
             self.shape.append(t)
             self.shape.append(value)
             return
@@ -133,23 +139,42 @@ class _Reader:
             self._read_object(value, t)
 
     def _read_object(self, obj: Any, t: type) -> None:
-        if not t.__module__.startswith("sut."):
-            raise NotSteady(f"cannot read a {t.__module__}.{t.__qualname__} inside the train")
-        skip = getattr(t, "BULK_SKIP", ()) + getattr(t, "BULK_DERIVED", ())
-        self.shape.append(t)
-        names = list(getattr(obj, "__dict__", {}))
-        for klass in t.__mro__:
-            names.extend(n for n in getattr(klass, "__slots__", ()) if n != "__dict__" and n != "__weakref__")
-        for name in names:
+        info = _CLASSES.get(t)
+        if info is None:
+            info = _CLASSES[t] = _class_info(t)
+        skip, slots, steady, rebuild = info
+        shape, read = self.shape, self.read
+        shape.append(t)
+        attrs = getattr(obj, "__dict__", None)
+        if attrs is not None:
+            for name, value in list(attrs.items()):
+                if name not in skip:
+                    shape.append(name)
+                    read(value, ("attr", obj, name))
+        for name in slots:
             if name in skip or not hasattr(obj, name):
                 continue
-            self.shape.append(name)
-            self.read(getattr(obj, name), ("attr", obj, name))
-        steady = getattr(obj, "bulk_steady", None)
-        if steady is not None and not steady():
+            shape.append(name)
+            read(getattr(obj, name), ("attr", obj, name))
+        if steady and not obj.bulk_steady():
             raise NotSteady(f"{t.__qualname__} {obj!r:.60} cannot be carried over a jump")
-        if hasattr(obj, "bulk_rebuild"):
+        if rebuild:
             self.rebuild.append(("object", obj))
+
+
+_PLAIN = frozenset((str, bytes, float, type(None), bool))
+_CLASSES: dict[type, tuple] = {}
+
+
+def _class_info(t: type) -> tuple:
+    """What reading an object of a model class needs, worked out once per class: the attributes to leave
+    out, the slots, and whether it says if it is steady and has something to rebuild after a jump."""
+    if not t.__module__.startswith("sut."):
+        raise NotSteady(f"cannot read a {t.__module__}.{t.__qualname__} inside the train")
+    skip = frozenset(getattr(t, "BULK_SKIP", ()) + getattr(t, "BULK_DERIVED", ()))
+    slots = [n for klass in t.__mro__ for n in getattr(klass, "__slots__", ())
+             if n != "__dict__" and n != "__weakref__"]
+    return skip, slots, hasattr(t, "bulk_steady"), hasattr(t, "bulk_rebuild")
 
 
 def snapshot(train: "Train") -> Snapshot:
@@ -162,7 +187,7 @@ def snapshot(train: "Train") -> Snapshot:
         fn = timer.fn
         owner = reader.refs.get(id(getattr(fn, "__self__", None)), -1)
         return (getattr(fn, "__qualname__", ""), owner, timer.at - kernel.now, timer.prio, timer.seq)
-    timers = sorted(kernel.pending(), key=key)
+    timers = sorted(kernel.pending_model(), key=key)
     reader.read(timers, ("const",))
     return Snapshot(kernel.now, reader.shape, reader.ints, reader.writers, reader.rebuild)
 
@@ -257,14 +282,15 @@ def run(train: "Train", until: int, sample_every_us: int | None = None) -> BulkR
     P, with a sample of the train's traffic (the trace shows it) near every `sample_every_us` of the run
     and the last stretch before `until`.
 
-    A sample is one period P of traffic. Where the two periods that showed the line also showed one
-    traffic pattern (as for a plain advance), the sample is that pattern's next repetition, the state
-    jumped along with it: what simulating it would give, without the cost. Otherwise it is simulated on
-    the train, followed by a check that the train is still on the line the jumps extrapolate (if not,
-    something changed: it is simulated frame by frame until steady again). Where P is longer than
-    SAMPLE_US (a token rotation incommensurate with the 1 s cycles: 10.25 ms x 12 nodes gives P = 123 s),
-    the sample is SAMPLE_US simulated on a copy of the train, which is cheaper than P on the train. The
-    last stretch before `until` is always simulated on the train itself."""
+    A sample is at least SAMPLE_US of traffic: whole periods P where P is shorter (a token rotation, 120 ms
+    for an 8-car set), else SAMPLE_US. Where the two periods that showed the line also showed one traffic
+    pattern (as for a plain advance), the sample is that pattern's next repetitions, the state jumped along
+    with them: what simulating them would give, without the cost. Otherwise it is simulated on the train,
+    followed by a check that the train is still on the line the jumps extrapolate (if not, something
+    changed: it is simulated frame by frame until steady again). Where P is longer than SAMPLE_US (a token
+    rotation incommensurate with the 10 ms cycles: 10.3 ms x 12 nodes gives P = 3.09 s), the sample is
+    SAMPLE_US simulated on a copy of the train, which is cheaper than P on the train. The last stretch
+    before `until`, at least a sample long, is always simulated on the train itself."""
     kernel = train.kernel
     period = steady_period_us(train)
     report = BulkReport(period_us=period)
@@ -275,13 +301,14 @@ def run(train: "Train", until: int, sample_every_us: int | None = None) -> BulkR
         report.simulated_us += to - kernel.now
         kernel.run(to)
 
-    # The last stretch, simulated on the train: at least one period; where a period is longer than a
-    # sample, at least a sample (so, on average, half a period less).
-    end = until - min(period, SAMPLE_US)
-    if period > SAMPLE_US:
-        # A long period costs three of them to find the line: start reading the state only once what
-        # was done just before (a fault, a repair) has had a sample's time to settle.
-        frame_by_frame(min(until, kernel.now + SAMPLE_US))
+    # A sample in whole periods where they are short; the last stretch, simulated on the train, is at least
+    # that long (where a period is longer than a sample: a sample, so on average half a period less).
+    sample = -(-SAMPLE_US // period) * period if period <= SAMPLE_US else SAMPLE_US
+    end = until - sample
+    # The first stretch the trace observes is a sample too (a jump always lands just before the next one);
+    # where a period is long, it also lets what was done just before (a fault, a repair) settle before
+    # three periods are spent finding the line.
+    frame_by_frame(min(until, kernel.now + sample))
 
     snaps: list[Snapshot] = []          # [anchor, ...]: the anchor is where the line was found
     marks: list[int] = []               # the trace's length at each snapshot
@@ -292,7 +319,7 @@ def run(train: "Train", until: int, sample_every_us: int | None = None) -> BulkR
     from_base = False                   # ... of snaps[-1], with nothing simulated since: a jump may follow
     while kernel.now < until:
         now = kernel.now
-        if until - now < period:
+        if until - now < period or now >= end:
             frame_by_frame(until)
             break
         base_is_current = not jumped or from_base
@@ -329,14 +356,14 @@ def run(train: "Train", until: int, sample_every_us: int | None = None) -> BulkR
         if now + period > next_sample:                # a sample is due within the coming period
             next_sample += every * ((now + period - next_sample) // every + 1)
             if period <= SAMPLE_US:
-                if pattern is not None and base_is_current and _before_one_shots(base, line, now + period, period):
+                if pattern is not None and base_is_current and _before_one_shots(base, line, now + sample, period):
                     k = (now + period - pattern_end) // period
-                    _repeat(train, pattern, k, k, period)
-                    jump(train, base, line, (now + period - base.at) // period)
-                    report.replayed_us += period
+                    _repeat(train, pattern, k, k + sample // period - 1, period)
+                    jump(train, base, line, (now + sample - base.at) // period)
+                    report.replayed_us += sample
                     jumped = from_base = True
                     continue
-                frame_by_frame(now + period)          # checked against the line next time round
+                frame_by_frame(now + sample)          # checked against the line next time round
                 continue
             sampled_until = _probe(train, SAMPLE_US, report)
         if not base_is_current:
@@ -351,6 +378,7 @@ def run(train: "Train", until: int, sample_every_us: int | None = None) -> BulkR
             frame_by_frame(now + period)
             continue
         jump(train, base, line, (now - base.at) // period + periods)
+        kernel.skip_metronomes(kernel.now)            # a skipped stretch has no trace
         report.jumps += 1
         report.skipped_us += periods * period
         train.emit("train", "time.skip", frm=sampled_until, to=kernel.now, periods=periods, period_us=period)
@@ -361,9 +389,9 @@ def run(train: "Train", until: int, sample_every_us: int | None = None) -> BulkR
 
 def _replayable(train: "Train", marks: list[int], period: int) -> list | None:
     """The traffic pattern of the two periods between three snapshots, if they show one (_trace_pattern)."""
-    events = train.events
     try:
-        return _trace_pattern(events[marks[0]:marks[1]], events[marks[1]:marks[2]], period)
+        return _trace_pattern(_model_events(train, marks[0], marks[1]), _model_events(train, marks[1], marks[2]),
+                              period)
     except NotSteady:
         return None
 
@@ -375,8 +403,12 @@ def _before_one_shots(base: Snapshot, line: list[int], to: int, period: int) -> 
 
 
 def _repeat(train: "Train", pattern: list, first: int, last: int, period: int) -> None:
-    """Append the pattern's repetitions `first`..`last` periods after the period it was taken from."""
-    append, make = train.events.append, tuple.__new__
+    """Append the pattern's repetitions `first`..`last` periods after the period it was taken from (they
+    start now), with the metronomes' ticks of the same stretch run in place, merged as the kernel would have
+    run them: by time, and at one instant the model's events before the metronomes'."""
+    make = tuple.__new__
+    model: list = []
+    append = model.append
     for k in range(first, last + 1):
         shift = k * period
         for ev, moving in pattern:
@@ -386,6 +418,36 @@ def _repeat(train: "Train", pattern: list, first: int, last: int, period: int) -
                 for name, d in moving:
                     fields[name] += d * k
             append(make(type(ev), (ev.t + shift, ev.source, ev.kind, fields)))
+    events, marks = train.events, getattr(train, "free_marks", None)
+    if marks is None:
+        events.extend(model)
+        return
+    n, m = len(events), len(marks)
+    train.kernel.run_metronomes(train.kernel.now + (last - first + 1) * period)
+    free = events[n:]
+    del events[n:], marks[m:]
+    i, nf = 0, len(free)
+    for ev in model:
+        while i < nf and free[i].t < ev.t:
+            marks.append(len(events))
+            events.append(free[i])
+            i += 1
+        events.append(ev)
+    for ev in free[i:]:
+        marks.append(len(events))
+        events.append(ev)
+
+
+def _model_events(train: "Train", start: int, stop: int) -> list:
+    """The trace between two marks without the metronomes' events (the pattern is the model's own)."""
+    events, marks = train.events, getattr(train, "free_marks", None)
+    if not marks:
+        return events[start:stop]
+    lo, hi = bisect_left(marks, start), bisect_left(marks, stop)
+    if lo == hi:
+        return events[start:stop]
+    free = set(marks[lo:hi])
+    return [events[i] for i in range(start, stop) if i not in free]
 
 
 def advance(train: "Train", until: int) -> BulkReport:
@@ -399,35 +461,56 @@ def advance(train: "Train", until: int) -> BulkReport:
     by a fixed amount), the periods up to `until` (or up to a pending one-shot timer, after which the line
     is looked for again) are skipped: the state by jump(), the trace by repeating the second period's
     events with their times and moving fields carried on. The rest is frame by frame.
-    Advances shorter than three periods are simulated as they are (nothing to gain). What makes the copied
-    trace exact is what makes the jump exact (the module docstring), and one thing more: event fields carry
-    the model's unbounded values (a wire image that wraps is a string or bytes, and then the pattern check
-    fails). tests/test_bulk.py and tests/test_snapshot.py hold the two ways byte-identical."""
+    The metronomes' ticks (Kernel.metronome: the CRH2 loop devices) are not part of the pattern: they are
+    run in place over the skipped stretch and merged in as the kernel orders them.
+    Advances shorter than three periods or than BULK_MIN_US are simulated as they are (nothing to gain),
+    and where a period is short, a look that finds no line is followed by 2, 4 ... 16 periods frame by
+    frame before the next. What makes the copied trace exact is what makes the jump exact (the module
+    docstring), and one thing more: event fields carry the model's unbounded values (a wire image that
+    wraps is a string or bytes, and then the pattern check fails). tests/test_bulk.py and
+    tests/test_snapshot.py hold the two ways byte-identical."""
     kernel = train.kernel
     period = steady_period_us(train)
     report = BulkReport(period_us=period)
-    if until - kernel.now < 3 * period or frame_by_frame():
+    if until - kernel.now < max(3 * period, BULK_MIN_US) or frame_by_frame():
         report.simulated_us = until - kernel.now
         kernel.run(until)
         return report
     events = train.events
     window: list[tuple[Snapshot, int]] = []           # (state, trace length) at the last period boundaries
+    misses = 0                                        # looks in a row that found no line
     while until - kernel.now >= (3 - len(window)) * period:    # enough left to find the line and skip a period
+        failed = False
         try:
             window.append((snapshot(train), len(events)))
             report.checks += 1
         except NotSteady:
             window.clear()
+            failed = True
+        if len(window) > 1 and window[-1][0].shape != window[-2][0].shape:
+            del window[:-1]                      # changing: look again from here
+            failed = True
         if len(window) == 3:
             periods = _skip(train, window, until, period)
             if periods:                          # to `until`, or to just before a one-shot timer: then on
                 report.jumps += 1
                 report.skipped_us += periods * period
                 window.clear()
+                misses = 0
                 continue
             del window[0]
-        report.simulated_us += period
-        kernel.run(kernel.now + period)
+            failed = True
+        step = period
+        if failed:
+            misses += 1
+            if period < BULK_MIN_US:
+                # Reading the train costs about what simulating a short period does: a train that is not
+                # steady (a ramp, a supply restarting) is read again after 2, 4 ... 16 periods, not at every one.
+                window.clear()
+                step = period << min(misses, 4)
+        to = min(kernel.now + step, until)
+        report.simulated_us += to - kernel.now
+        kernel.run(to)
     report.simulated_us += until - kernel.now
     kernel.run(until)
     return report
@@ -439,7 +522,7 @@ def _skip(train: "Train", window: list[tuple[Snapshot, int]], until: int, period
     (s0, n0), (s1, n1), (s2, n2) = window
     try:
         line = slope(s0, s1, s2)
-        pattern = _trace_pattern(train.events[n0:n1], train.events[n1:n2], period)
+        pattern = _trace_pattern(_model_events(train, n0, n1), _model_events(train, n1, n2), period)
     except NotSteady:
         return 0
     now = train.kernel.now
@@ -479,6 +562,9 @@ def _trace_pattern(first: list, second: list, period: int) -> list[tuple[Any, tu
 
 
 SAMPLE_US = 3_000_000
+# Shorter advances are simulated as they are: three readings of the train cost about what a second of it
+# does frame by frame (bench/bulk_bench.py).
+BULK_MIN_US = 1_000_000
 
 # Every advance frame by frame: the other way round, to prove the two equal. Soaks still skip (72 h frame
 # by frame is hours). Set here by tests, or by CRH2_FRAME_BY_FRAME=1 (pytest --frame-by-frame), which a
@@ -502,8 +588,14 @@ def soak(train: "Train", us: int, sample_every_us: int | None) -> BulkReport:
 def _probe(train: "Train", span: int, report: BulkReport) -> int:
     """Simulate `span` frame by frame on a copy of the train and put what happened in the train's trace;
     the train itself stays where it is. Returns the end of the sample."""
-    probe = copy.deepcopy(train, {id(train.events): []})
+    marks = getattr(train, "free_marks", None)
+    memo = {id(train.events): []}
+    if marks is not None:
+        memo[id(marks)] = []
+    probe = copy.deepcopy(train, memo)
     probe.kernel.run(probe.kernel.now + span)
+    if marks is not None:
+        marks.extend(len(train.events) + i for i in probe.free_marks)
     train.events.extend(probe.events)
     report.simulated_us += span
     return probe.kernel.now

@@ -21,6 +21,9 @@ from typing import Any, Callable, Generator, Iterable
 URGENT = 0
 NORMAL = 1
 LATE = 2
+# Free-running emitters (Kernel.metronome) run after everything else due at the same instant, in the order
+# they were registered: their ticks never depend on the rest's history, so bulk.py can regenerate them.
+FREE = 3
 
 
 class SimulationError(RuntimeError):
@@ -150,11 +153,14 @@ class Cyclic:
     next_at: int = 0
     timer: Timer | None = None
     args: tuple = ()                 # for tick: a bound method and its arguments pickle, a lambda does not
+    rank: int = -1                   # a metronome's place among the free-running lane (its heap sequence)
 
 
 class Kernel:
-    __slots__ = ("now", "_heap", "_seq", "events", "_cyclics")
-    BULK_SKIP = ("_heap",)        # bulk.py reads the live timers instead, and rebuilds the heap from them
+    __slots__ = ("now", "_heap", "_seq", "events", "_cyclics", "_metronomes")
+    # bulk.py reads the live timers instead of the heap (and rebuilds it from them), counts no callback it
+    # skipped, and regenerates the metronomes' ticks rather than reading them.
+    BULK_SKIP = ("_heap", "events", "_metronomes")
 
     def __init__(self) -> None:
         self.now = 0
@@ -162,6 +168,7 @@ class Kernel:
         self._seq = 0
         self.events = 0  # callbacks run, for benchmarks
         self._cyclics: list[Cyclic] = []
+        self._metronomes: list[Cyclic] = []
 
     # -- scheduling -----------------------------------------------------------------------------
     def call_at(self, at: int, fn: Callable, *args: Any, prio: int = NORMAL) -> Timer:
@@ -197,7 +204,62 @@ class Kernel:
         cyc.timer = self.call_at(cyc.next_at, self._cyclic_tick, cyc)
         return cyc
 
+    def metronome(self, period: int, tick: Callable[..., None], phase: int = 0, args: tuple = ()) -> Cyclic:
+        """A free-running emitter: `tick(*args)` every `period` us from now + phase, after everything else
+        due at that instant (metronomes among themselves in the order they were registered). A tick may
+        read the model and write the trace, never change the model or schedule anything: then its ticks
+        are a function of time alone while the rest is steady, and its period stays out of the model's
+        steady period (bulk.py regenerates its ticks over a skipped stretch; run_metronomes)."""
+        if period <= 0:
+            raise SimulationError(f"period must be positive, got {period} us")
+        cyc = Cyclic(period, tick, self.now + phase, args=args, rank=len(self._metronomes))
+        self._metronomes.append(cyc)
+        self._schedule_metronome(cyc)
+        return cyc
+
+    def _schedule_metronome(self, cyc: Cyclic) -> None:
+        timer = Timer(cyc.next_at, FREE, cyc.rank, self._metronome_tick, (cyc,))
+        heapq.heappush(self._heap, (cyc.next_at, FREE, cyc.rank, timer))
+        cyc.timer = timer
+
+    def _metronome_tick(self, cyc: Cyclic) -> None:
+        cyc.next_at += cyc.period
+        self._schedule_metronome(cyc)
+        cyc.tick(*cyc.args)
+
+    def run_metronomes(self, until: int) -> None:
+        """Run only the metronomes' ticks due up to `until`, as `run` would have run them, and leave every
+        other timer where it is; `now` is back where it was afterwards. For bulk.py, which puts the rest of
+        the model `until - now` further on by itself."""
+        start, due = self.now, []
+        for cyc in self._metronomes:
+            if cyc.next_at <= until:
+                cyc.timer.cancel()
+                heapq.heappush(due, (cyc.next_at, cyc.rank, cyc))
+        try:
+            while due:
+                at, rank, cyc = heapq.heappop(due)
+                self.now = at
+                cyc.next_at += cyc.period
+                cyc.tick(*cyc.args)
+                if cyc.next_at <= until:
+                    heapq.heappush(due, (cyc.next_at, rank, cyc))
+                else:
+                    self._schedule_metronome(cyc)
+        finally:
+            self.now = start
+
+    def skip_metronomes(self, until: int) -> None:
+        """Put every metronome on its first tick after `until`, running none (a soak's skipped stretch has
+        no trace)."""
+        for cyc in self._metronomes:
+            if cyc.next_at <= until:
+                cyc.timer.cancel()
+                cyc.next_at += (until - cyc.next_at) // cyc.period * cyc.period + cyc.period
+                self._schedule_metronome(cyc)
+
     def periods(self) -> list[int]:
+        """The periods of the cyclic activities (metronomes are not part of the model's steady period)."""
         return [c.period for c in self._cyclics]
 
     def stop_cyclic(self, cyc: Cyclic) -> None:
@@ -239,6 +301,10 @@ class Kernel:
 
     def pending(self) -> Iterable[Timer]:
         return (entry[3] for entry in self._heap if entry[3].fn is not None)
+
+    def pending_model(self) -> Iterable[Timer]:
+        """The live timers of the model proper: the metronomes' own are left out (bulk.py)."""
+        return (entry[3] for entry in self._heap if entry[3].fn is not None and entry[1] != FREE)
 
     def rebuild_heap(self) -> None:
         """After a bulk advance moved the timers' keys: the heap again, from the live timers only."""

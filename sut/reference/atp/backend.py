@@ -88,6 +88,11 @@ class ReferenceAtp(PickledState, TrainDriver):
     def events(self) -> list[TraceEvent]:
         return self._events
 
+    @property
+    def free_marks(self) -> list[int] | None:
+        """Where the fitted train's metronomes' events are in the shared trace (bulk.py); the rig has none."""
+        return self._crh2.train.free_marks if self._crh2 is not None else None
+
     def emit(self, source: str, kind: str, /, **fields: Any) -> None:
         self._emit(source, kind, **fields)
 

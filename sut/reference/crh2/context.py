@@ -30,6 +30,9 @@ class TrainContext(Protocol):
 
     def emit(self, source: str, kind: str, /, **fields: Any) -> None: ...
 
+    def emit_free(self, source: str, kind: str, /, **fields: Any) -> None:
+        """An event of a free-running emitter (Kernel.metronome), marked as such for bulk advance."""
+
     def node_by_number(self, number: int) -> Any: ...
 
     def span_changed(self, span: Any) -> None: ...

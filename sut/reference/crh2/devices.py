@@ -47,15 +47,17 @@ class LoopDevice:
         self.loop, self.period_us, self.mode = loop, period_us, mode
 
     def start(self) -> None:
-        self.train.kernel.every(self.period_us, self._cycle, phase=self.period_us // 2)
+        # A free-running clock of its own: the loop's traffic changes nothing else in the train, so its
+        # periods (up to the side display's 1 s) stay out of the train's steady period (kernel.metronome).
+        self.train.kernel.metronome(self.period_us, self._cycle, phase=self.period_us // 2)
 
     def _cycle(self) -> None:
         if not self.cpu3.alive:
             return
         if self.mode == "polled":
-            self.train.emit(self.name, "loop.poll", loop=self.loop, reply=True)
+            self.train.emit_free(self.name, "loop.poll", loop=self.loop, reply=True)
         elif self.mode == "to-device":
-            self.train.emit(self.name, "loop.send", loop=self.loop, reply=False)
+            self.train.emit_free(self.name, "loop.send", loop=self.loop, reply=False)
         else:
-            self.train.emit(self.name, "loop.report", loop=self.loop, reply=False)
+            self.train.emit_free(self.name, "loop.report", loop=self.loop, reply=False)
 

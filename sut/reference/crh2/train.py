@@ -25,12 +25,13 @@ from sut.trace import TraceEvent
 
 
 class Train:
-    BULK_SKIP = ("events",)           # the trace is history, not state (bulk.py)
+    BULK_SKIP = ("events", "free_marks")   # the trace is history, not state (bulk.py)
 
     def __init__(self, cfg: TrainConfig):
         self.cfg = cfg
         self.kernel = Kernel()
         self.events: list[TraceEvent] = []
+        self.free_marks: list[int] = []   # where the metronomes' events are in `events` (bulk.py)
         self.supplies: dict[str, PowerSupply] = {}
         self.ccus: dict[int, Ccu] = {}
         self.lcus: list[Lcu] = []
@@ -88,6 +89,10 @@ class Train:
     def emit(self, source: str, kind: str, /, **fields: Any) -> None:
         self.events.append(TraceEvent(self.kernel.now, source, kind, fields))
 
+    def emit_free(self, source: str, kind: str, /, **fields: Any) -> None:
+        self.free_marks.append(len(self.events))
+        self.events.append(TraceEvent(self.kernel.now, source, kind, fields))
+
     def start(self) -> None:
         self.emit("train", "power.on", cars=self.cfg.cars, nodes=self.ring.size)
         self.vehicle.announce()
@@ -97,8 +102,31 @@ class Train:
             ccu.start()
 
     def bulk_period_us(self) -> int:
-        """The steady period (sut/reference/bulk.py): one token rotation and every cyclic activity."""
-        return cyclic_period_us(self.kernel, self.ring.size * self.cfg.timing.token_hold_us)
+        """The steady period (sut/reference/bulk.py): every cyclic activity and the token's round, one
+        holding time per hop. A guess that is wrong only costs speed: bulk.py checks the line it finds."""
+        hold = self.cfg.timing.token_hold_us
+        return cyclic_period_us(self.kernel, *(hops * hold for hops in self._token_round_hops()))
+
+    def _token_round_hops(self) -> list[int]:
+        """Hops of each token's round: all the nodes on an intact ring; on a ring broken into lines (a cut
+        span, a dead MDM8) each line's token goes to its end and back, and a node cut off on both sides
+        keeps its own."""
+        ring = self.ring
+        usable = [span.usable for span in ring.spans]          # span i joins node i and node i + 1
+        if all(usable):
+            return [ring.size]
+        first = usable.index(False) + 1
+        rounds, line = [], []
+        for k in range(ring.size):
+            i = (first + k) % ring.size
+            line.append(ring.nodes[i])
+            if not usable[i]:
+                if len(line) > 1:
+                    rounds.append(2 * (len(line) - 1))
+                elif line[0].mdm8.alive:
+                    rounds.append(1)
+                line = []
+        return rounds or [1]
 
     def node_by_number(self, number: int) -> RingNode:
         return self.ring.nodes[number - 1]
