@@ -32,7 +32,7 @@ from __future__ import annotations
 
 import copy
 import enum
-from bisect import bisect_left
+from bisect import bisect_left, bisect_right
 import math
 import os
 import types
@@ -406,36 +406,48 @@ def _repeat(train: "Train", pattern: list, first: int, last: int, period: int) -
     """Append the pattern's repetitions `first`..`last` periods after the period it was taken from (they
     start now), with the metronomes' ticks of the same stretch run in place, merged as the kernel would have
     run them: by time, and at one instant the model's events before the metronomes'."""
-    make = tuple.__new__
-    model: list = []
-    append = model.append
-    for k in range(first, last + 1):
-        shift = k * period
-        for ev, moving in pattern:
-            fields = ev.fields
-            if moving:
-                fields = dict(fields)
-                for name, d in moving:
-                    fields[name] += d * k
-            append(make(type(ev), (ev.t + shift, ev.source, ev.kind, fields)))
+    if not pattern:
+        model: list = []
+    else:
+        make, kind = tuple.__new__, type(pattern[0][0])
+        # Most events move one field (a sequence number): that one is set in a copy without a call.
+        rows = [(ev.t, ev.source, ev.kind, ev.fields, moving, moving[0] if len(moving) == 1 else (None, 0))
+                for ev, moving in pattern]
+        model = []
+        for k in range(first, last + 1):
+            shift = k * period
+            model.extend([make(kind, (t + shift, source, what,
+                                      fields if not moving else
+                                      {**fields, one: fields[one] + d * k} if one is not None else
+                                      _moved(fields, moving, k)))
+                          for t, source, what, fields, moving, (one, d) in rows])
     events, marks = train.events, getattr(train, "free_marks", None)
+    n = len(events)
+    events.extend(model)
     if marks is None:
-        events.extend(model)
         return
-    n, m = len(events), len(marks)
+    m = len(marks)
     train.kernel.run_metronomes(train.kernel.now + (last - first + 1) * period)
-    free = events[n:]
-    del events[n:], marks[m:]
-    i, nf = 0, len(free)
-    for ev in model:
-        while i < nf and free[i].t < ev.t:
-            marks.append(len(events))
-            events.append(free[i])
-            i += 1
-        events.append(ev)
-    for ev in free[i:]:
-        marks.append(len(events))
-        events.append(ev)
+    free = events[n + len(model):]
+    if not free:
+        return
+    del marks[m:]
+    # Both runs are in time order: a stable sort of model-then-metronome merges them with the model's
+    # events first at any instant; each metronome event lands after every model event up to its time.
+    times = [ev.t for ev in model]
+    marks.extend(n + j + bisect_right(times, ev.t) for j, ev in enumerate(free))
+    events[n:] = sorted(events[n:], key=_time)
+
+
+def _moved(fields: dict, moving: tuple, k: int) -> dict:
+    fields = dict(fields)
+    for name, d in moving:
+        fields[name] += d * k
+    return fields
+
+
+def _time(ev: Any) -> int:
+    return ev.t
 
 
 def _model_events(train: "Train", start: int, stop: int) -> list:
@@ -505,9 +517,11 @@ def advance(train: "Train", until: int) -> BulkReport:
             misses += 1
             if period < BULK_MIN_US:
                 # Reading the train costs about what simulating a short period does: a train that is not
-                # steady (a ramp, a supply restarting) is read again after 2, 4 ... 16 periods, not at every one.
+                # steady (a ramp, a supply restarting) is read again after 2, 4 ... 16 periods (at least
+                # 1/8 s, 1/4 s ... 2 s), not at every one.
                 window.clear()
-                step = period << min(misses, 4)
+                wait = max(period, BULK_MIN_US // 8) << min(misses, 4)
+                step = -(-wait // period) * period
         to = min(kernel.now + step, until)
         report.simulated_us += to - kernel.now
         kernel.run(to)
