@@ -42,12 +42,7 @@ def _(sut: TrainDriver, monitor_watch: dict[str, Any] | None, cab: int, span: in
         samples = list(monitor_watch["samples"])
     else:
         samples = []
-    end = sut.now_us + us(span)
-    while True:
-        samples.append((sut.now_us, tuple(sut.monitor(cab)["faults"])))
-        if sut.now_us >= end:
-            break
-        sut.advance(min(WATCH_STEP_US, end - sut.now_us))
+    samples.extend((t, tuple(faults)) for t, faults in sut.watch_monitor(cab, us(span), WATCH_STEP_US))
     return {"cab": cab, "samples": samples}
 
 

@@ -322,6 +322,26 @@ class TrainDriver(abc.ABC):
         """The cab monitor: {'status': {node: age_us or None}, 'faults': [text, ...]}."""
         raise self._unsupported("monitor")
 
+    def watch_monitor(self, cab: int, us: int, step_us: int) -> list[tuple[int, list[str]]]:
+        """Let `us` pass while looking at the cab monitor's faults every `step_us`, as a tester watching
+        the screen notes what it shows: [(t_us, faults), ...] from now to now + us, both included.
+
+        The same as `monitor` between `advance` calls (that is this default); one call so that a backend
+        can watch without a round trip per look (the features look every 1 ms for seconds)."""
+        self.check_us("watch", us, 0)
+        self.check_us("watch step", step_us)
+        self._require_power()
+        end = self.now_us + us
+        samples = []
+        while True:
+            samples.append((self.now_us, self._monitor_faults(cab)))
+            if self.now_us >= end:
+                return samples
+            self.advance(min(step_us, end - self.now_us))
+
+    def _monitor_faults(self, cab: int) -> list[str]:
+        return list(self.monitor(cab)["faults"])
+
     def status_table(self, node: str) -> dict[str, int | None]:
         """Age in us of the last status data `node` received from every other node (None: never)."""
         raise self._unsupported("status_table")

@@ -52,10 +52,11 @@ INPUTS = frozenset({
     "power_off", "restore_power", "set_input", "ramp_input", "monitor_order", "set_supply_voltage",
     "interrupt_supply", "set_temperature", "interfere", "vibrate", "withstand_test", "cut_line",
     "restore_line", "disturb_line", "tap_bus", "pass_balise", "request_block_transfer", "tap_link",
-    "insulation_resistance",
+    "insulation_resistance", "watch_monitor",
 })
-# Inputs that return what they measured (and leave the measurement in the trace): journaled, never deferred.
-MEASUREMENTS = frozenset({"insulation_resistance"})
+# Inputs that return what they measured (an insulation test leaves it in the trace; a watch of the monitor
+# returns what it saw while time passed): journaled, never deferred.
+MEASUREMENTS = frozenset({"insulation_resistance", "watch_monitor"})
 
 DEFAULT_BUDGET = 256 * 2**20
 

@@ -361,3 +361,41 @@ def test_any_request_gets_an_answer(request: dict) -> None:
     finally:
         session.close()
 
+
+
+def _watched(train: TrainDriver, *, looks: bool = False) -> tuple[list, str]:
+    """A watch of the cab 1 monitor across a board failure and its repair; with `looks`, TrainDriver's
+    own look-by-look loop instead of the backend's watch."""
+    train.configure(sets=1, cars_per_set=8)
+    train.power_on()
+    train.advance_ms(1000)
+    watch = TrainDriver.watch_monitor.__get__(train) if looks else train.watch_monitor
+    seen = watch(1, 20_000, 1000)
+    train.fail("car3.LCU.CPU3")
+    seen += watch(1, 400_000, 1000)
+    train.repair("car3.LCU.CPU3")
+    seen += watch(1, 300_000, 7000)
+    return [(t, list(faults)) for t, faults in seen], train.trace.to_csv()
+
+
+def test_a_watch_of_the_monitor_is_what_looking_between_advances_sees_in_process_and_remote() -> None:
+    with open_backend("reference", "crh2") as local:
+        expected = _watched(local, looks=True)
+    with open_backend("reference", "crh2") as local:
+        assert _watched(local) == expected
+    samples, _ = expected
+    assert len(samples) == 21 + 401 + 44 and samples[-1][0] == 1_720_000
+    shown = {fault for _, faults in samples for fault in faults}
+    assert any("car3" in fault for fault in shown) and samples[0][1] == [], "the watch saw nothing change"
+    with served("--profile", "crh2") as url:
+        with open_backend(url, "crh2") as train:
+            assert _watched(train) == expected
+
+
+def test_a_watch_checks_its_span_and_step() -> None:
+    with open_backend("reference", "crh2") as train:
+        train.configure(sets=1, cars_per_set=8)
+        train.power_on()
+        for span, step in ((-1, 1000), (1000, 0), (1000, 1.5)):
+            with pytest.raises(OutOfRange):
+                train.watch_monitor(1, span, step)

@@ -346,6 +346,11 @@ class ReferenceTrain(PickledState, TrainDriver):
         view["maintenance"] = self._fault_history()
         return view
 
+    def _monitor_faults(self, cab: int) -> list[str]:
+        # A watch looks a thousand times a second: the fault list alone, not the maintenance view.
+        view = self._cab(cab).monitor_view(stale_us=self._cfg.timing.token_loss_us)
+        return sorted(view["faults"] + self.train.vehicle.monitor_alarms())
+
     def _fault_history(self) -> list[str]:
         """The maintenance view: fault records held at the master, oldest first (DECISIONS.md)."""
         entries = []

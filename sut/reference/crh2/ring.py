@@ -149,16 +149,18 @@ class Ring:
 
     def _start(self, link: Link, frame: Frame, hops: int) -> None:
         span = link.span
-        if not span.usable:
+        optics_a, optics_b = span._optics               # Span.usable, inlined: once per hop
+        if span.cut or not (optics_a.alive and optics_b.alive):
             return                                        # light is gone: the frame is lost
         now = self.kernel.now
         duration = tx_time_us(len(frame.wire), self.bitrate)
         link.busy_until = now + duration
-        key = (link.src.name, frame.kind)
-        left = span.corrupt.get(key)
-        if left:
-            span.corrupt[key] = left - 1
-            frame = frame.corrupted()
+        if span.corrupt:
+            key = (link.src.name, frame.kind)
+            left = span.corrupt.get(key)
+            if left:
+                span.corrupt[key] = left - 1
+                frame = frame.corrupted()
         if span.tapped:
             self.train.emit(f"link.{span.name}", "link.tx", frm=link.src.name, to=link.dst.name,
                             frame=frame.name, bytes=len(frame.wire),
@@ -169,16 +171,20 @@ class Ring:
     # -- receiving ------------------------------------------------------------------------------
     def _arrive(self, link: Link, frame: Frame, hops: int) -> None:
         node = link.dst
-        if not link.span.usable:
+        span = link.span
+        optics_a, optics_b = span._optics
+        if span.cut or not (optics_a.alive and optics_b.alive):
             return
         if self.check and not frame.ok:
             node.frames_discarded += 1
             node.emit("frame.discard", frame=frame.name, frm=link.src.name, hops=hops)
             return
-        if frame.uid in node.seen:
+        uid = frame.uid
+        if uid in node.seen:
             return                                        # the other copy got here first
-        node.seen_add(frame.uid)
-        if frame.dst == BROADCAST or frame.dst == node.number:
-            node.receive(frame, link.direction, hops)
-        if frame.dst != node.number and hops < self.size - 1 and node.port_ok(link.direction):
-            self._enqueue(node.out[link.direction], frame, hops + 1)
+        node.seen_add(uid)
+        dst, direction = frame.dst, link.direction
+        if dst == BROADCAST or dst == node.number:
+            node.receive(frame, direction, hops)
+        if dst != node.number and hops < self.size - 1 and node.port_ok(direction):
+            self._enqueue(node.out[direction], frame, hops + 1)
