@@ -1,13 +1,11 @@
 """Powered-up snapshots (sut/snapshot.py) are invisible: the same verdicts and byte-identical traces with
-snapshots on and off, for every profile; a scenario never sees another's state; the key holds everything
-that makes a state (backend class and its parameters, profile, every call); a backend that cannot
-snapshot simulates, saying why once."""
+snapshots on and off, for every profile (tests/test_determinism.py runs that); a scenario never sees
+another's state; the key holds everything that makes a state (backend class and its parameters, profile,
+every call); a backend that cannot snapshot simulates, saying why once."""
 from __future__ import annotations
 
-import re
 import subprocess
 import sys
-from pathlib import Path
 
 import pytest
 
@@ -15,43 +13,10 @@ from sut.errors import NotSupported, OutOfRange
 from sut.reference.crh2.backend import ReferenceTrain
 from sut.reference.profiles import Reference
 from sut.snapshot import SnapshotCache, SnapshotDriver
-from tests.helpers import traces, verdicts
+from tests.helpers import verdicts
 from tests.test_faulty_variants import ROOT
 
-# Per profile, items whose scenarios share a Background (and features that share one with each other), so
-# that states are stored and restored many times over: crh2 (routine class, English and zh-CN, and a
-# coupled set), metro-tcn, atp (the rig and the ATP fitted to a CRH2 set). One run with snapshots, one
-# without.
-SAMPLES = {
-    "ReferenceTrain": "R-CTL-01,R-CTL-02,R-CTL-03,R-DIA-01,F-NET-08,F-ILK-02",
-    "ReferenceMetro": "F-NET-22,F-CTL-16",
-    "ReferenceAtp": "F-ATP-04,F-ATP-07,F-ATP-13",
-}
-
-
-def _run(trace_dir: Path, *args: str) -> subprocess.CompletedProcess:
-    cmd = [sys.executable, "-m", "pytest", "features", "-q", "-rA", "-p", "no:cacheprovider", "-p", "no:xdist",
-           f"--item={','.join(SAMPLES.values())}", f"--trace-dir={trace_dir}", *args]
-    return subprocess.run(cmd, cwd=ROOT, capture_output=True, text=True, timeout=900)
-
-
-@pytest.mark.cost(25)
-def test_snapshots_on_and_off_give_identical_verdicts_and_traces_in_every_profile(tmp_path: Path) -> None:
-    on = _run(tmp_path / "on")
-    off = _run(tmp_path / "off", "--no-snapshots")
-    assert on.returncode == 0, on.stdout[-3000:] + on.stderr[-2000:]
-    assert off.returncode == 0, off.stdout[-3000:] + off.stderr[-2000:]
-    summary = re.search(r"^snapshots: \d+ restored \((.*?)\),", on.stdout, re.M)
-    assert summary, f"snapshots were not used: {on.stdout[-1500:]}"
-    restored = {name: int(count) for name, count in re.findall(r"(\w+) (\d+)", summary.group(1))}
-    assert all(restored.get(backend, 0) >= 2 for backend in SAMPLES), f"restored per backend: {restored}"
-    assert "snapshots:" not in off.stdout
-    assert verdicts(on.stdout) == verdicts(off.stdout) and len(verdicts(on.stdout)) >= 40
-    expected = traces(tmp_path / "off")
-    found = traces(tmp_path / "on")
-    differ = [name for name in expected if found.get(name) != expected[name]]
-    assert not differ and found.keys() == expected.keys(), f"traces differ: {differ[:5]}"
-    assert sum(map(len, expected.values())) > 1_000_000, "the traces compared are not empty"
+# Snapshots on and off, every profile, byte for byte: tests/test_determinism.py (its first two runs).
 
 
 def test_the_journal_knows_every_call_of_the_driver_interface() -> None:
