@@ -39,6 +39,7 @@ class ReferenceMetro(PickledState, TrainDriver):
     def __init__(self) -> None:
         super().__init__()
         self._train = MetroTrain(MetroConfig().with_timing(**self.TIMING).with_behaviour(**self.BEHAVIOUR))
+        self._kept_trace: list | None = None              # the trace of a train shut down
 
     # -- life cycle and time -----------------------------------------------------------------
     def configure(self, *, sets: int = 1, cars_per_set: int = 6) -> None:
@@ -47,6 +48,10 @@ class ReferenceMetro(PickledState, TrainDriver):
 
     def _power_on(self) -> None:
         self._train.start()
+
+    def _shutdown(self) -> None:
+        # As ReferenceTrain._shutdown: the trace goes by reference counting, not with the train's cycles.
+        self._kept_trace, self._train.events = self._train.events, []
 
     @property
     def now_us(self) -> int:
@@ -60,7 +65,7 @@ class ReferenceMetro(PickledState, TrainDriver):
 
     @property
     def trace(self) -> Trace:
-        return Trace(self._train.events)
+        return Trace(self._kept_trace if self._kept_trace is not None else self._train.events)
 
     def _mark(self, source: str, kind: str, **fields: Any) -> None:
         self._train.emit(source, kind, **fields)
