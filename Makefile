@@ -1,4 +1,4 @@
-# CRH2 conformance suite. `make` alone lists the targets.
+# Train network conformance suite (CRH2, metro TCN, ATP). `make` alone lists the targets.
 #   PYTEST_ARGS="..."  extra pytest arguments for the conformance run, e.g. PYTEST_ARGS="--item F-NET-03 -x"
 #   SUT=...            backend for --sut (reference, or package.module:Class); unset = the suite's default
 #   JOBS=N             pytest-xdist workers (default auto = one per core; JOBS=1 runs in one process)
@@ -41,7 +41,7 @@ MUTATE_STAMP := $(VENV)/.mutate-installed
 .PHONY: help report test check trace clean distclean mutate
 
 help: ## list the targets
-	@echo "CRH2 conformance suite (PYTEST_ARGS=... and SUT=... pass through to pytest)"
+	@echo "Train network conformance suite: CRH2, metro TCN, ATP (PYTEST_ARGS=... and SUT=... pass through to pytest)"
 	@grep -E '^[a-z][a-z-]*:.*## ' $(MAKEFILE_LIST) | sed -E 's/^([a-z-]+):.*## (.*)/  make \1\t\2/' | expand -t 20
 
 report: $(VENV_STAMP) $(NODE_STAMP) ## run every feature, build reports/html/index.html and reports/traceability.{md,html}, print a summary

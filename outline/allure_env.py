@@ -3,7 +3,9 @@
 Allure 3 (3.18.0) still reads the Allure 2 `environment.properties` file from the results directory; the
 awesome report shows it as the "Environment" block on the overview page. pytest-xdist workers and several
 scenarios may each call `write_environment`, so values are merged under a file lock: a key that took
-several values in one run (e.g. two train profiles) lists them all, comma-separated, first seen first.
+several values in one run (one set and two coupled sets) lists each once, " | "-separated, first seen first.
+Keys are the caller's: the step library prefixes a SUT's with its profile (`[crh2] SUT class`) and the run's
+own facts with `[run]` (steps/report.py), so three trains in one run are three groups, not one list.
 """
 
 from __future__ import annotations
@@ -14,7 +16,7 @@ from collections.abc import Iterator, Mapping
 from pathlib import Path
 
 FILE_NAME = "environment.properties"
-_SEP = ", "
+_SEP = " | "
 
 try:
     import fcntl
@@ -101,7 +103,9 @@ def write_environment(results_dir: str | os.PathLike | None, mapping: Mapping[st
         for key, value in mapping.items():
             if value is None:
                 continue
-            value = str(value)
+            # A value holding the separator would never be found among the merged ones again (it was
+            # appended once per scenario: the same MVB line ~60 times).
+            value = str(value).replace(_SEP, " / ")
             old = current.get(str(key))
             if old is None:
                 current[str(key)] = value

@@ -15,6 +15,11 @@ import platform
 import subprocess
 from pathlib import Path
 
+from outline.allure_env import write_environment
+
+# The whole suite's title (allurerc.mjs names the report the same: tests/test_allure_env.py holds them equal).
+REPORT_NAME = "Train network conformance: CRH2, metro TCN, ATP"
+
 CATEGORIES = [
     {"name": "SUT not reachable", "matchedStatuses": ["broken", "failed"],
      "messageRegex": r"(?s).*(SUT backend|cannot import|not reachable|Connection(Refused|Reset)?Error|timed out).*"},
@@ -41,9 +46,12 @@ def write(results_dir: str | Path, root: Path, command: str) -> None:
     (results / "categories.json").write_text(json.dumps(CATEGORIES, indent=1), encoding="utf-8")
     now = _dt.datetime.now(_dt.timezone.utc).strftime("%Y-%m-%d %H:%M UTC")
     executor = {"name": f"{platform.node() or 'local'} (pytest)", "type": "local",
-                "buildName": f"{now}, commit {_commit(root)}", "reportName": "CRH2 conformance",
+                "buildName": f"{now}, commit {_commit(root)}", "reportName": REPORT_NAME,
                 "buildOrder": int(_dt.datetime.now(_dt.timezone.utc).timestamp()),
                 "reportUrl": "", "buildUrl": ""}
     if command:
         executor["name"] += f": {command}"
     (results / "executor.json").write_text(json.dumps(executor, indent=1), encoding="utf-8")
+    # The run's own facts, once, beside each profile's SUT (steps/report.py keys those by profile).
+    write_environment(results, {"[run] command": command or None, "[run] commit": _commit(root),
+                                "[run] date": now, "[run] host": platform.node() or None})

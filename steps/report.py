@@ -70,6 +70,15 @@ def _attach_diagram(trace: Trace, key: Trace, now_us: int, bounds: tuple[Bound, 
 _WRITTEN = pytest.StashKey[set]()
 
 
+def environment_of(described: dict[str, object]) -> dict[str, object]:
+    """A SUT's description as report environment keys: each under its profile (`[crh2] SUT class`), so the
+    trains of a run that covers several profiles stay apart; `[run] profiles` lists the profiles that ran."""
+    profile = str(described.get("profile") or "no profile")
+    keyed: dict[str, object] = {f"[{profile}] {k}": v for k, v in described.items() if k != "profile"}
+    keyed["[run] profiles"] = profile
+    return keyed
+
+
 def _write_environment(driver: TrainDriver, config: pytest.Config) -> None:
     # Every scenario adds its SUT's parameters: values that differ (one set, two sets) are merged, not lost.
     # A mapping this process already merged is not merged again (reading, merging and rewriting the file under
@@ -83,4 +92,4 @@ def _write_environment(driver: TrainDriver, config: pytest.Config) -> None:
         key = tuple(sorted((str(k), str(v)) for k, v in described.items()))
         if key not in seen:
             seen.add(key)
-            write_environment(results_dir, described)
+            write_environment(results_dir, environment_of(described))

@@ -15,10 +15,45 @@ def test_merge_escape_and_accumulate(tmp_path: Path):
     assert path == out / "environment.properties"
     assert read_environment(out) == {
         "sut": "reference",
-        "profile": "crh2-8, crh2-16",
+        "profile": "crh2-8 | crh2-16",
         "cars": "8",
         "key with=sep": "a:b\\c ü",
     }
     text = path.read_text(encoding="ascii")
     assert "key\\ with\\=sep=a\\:b\\\\c \\u00fc\n" in text
     assert text.splitlines()[0].startswith("cars=")  # sorted: identical runs give identical files
+
+
+def test_a_value_holding_commas_or_the_separator_is_merged_once(tmp_path: Path):
+    for _ in range(3):
+        write_environment(tmp_path, {"MVB": "1.5 Mbit/s, basic period 1 ms", "odd": "a | b"})
+    write_environment(tmp_path, {"MVB": "2 Mbit/s"})
+    assert read_environment(tmp_path) == {"MVB": "1.5 Mbit/s, basic period 1 ms | 2 Mbit/s", "odd": "a / b"}
+
+
+def test_a_run_of_three_profiles_keeps_each_profiles_environment_apart(tmp_path: Path):
+    """Issue 17: a reviewer signing off one train must not read another's composition or backend."""
+    import subprocess
+    import sys
+
+    from tests.test_faulty_variants import ROOT
+
+    results = tmp_path / "results"
+    run = subprocess.run([sys.executable, "-m", "pytest", "features", "-q", "-p", "no:cacheprovider", "-p", "no:xdist",
+                          "--item=R-CTL-01,F-NET-21,F-ATP-04", f"--alluredir={results}"],
+                         cwd=ROOT, capture_output=True, text=True, timeout=600)
+    assert run.returncode == 0, run.stdout[-2000:]
+    env = read_environment(results)
+    modules = {"crh2": "sut.reference.crh2.", "metro-tcn": "sut.reference.metro.", "atp": "sut.reference.atp."}
+    assert sorted(env["[run] profiles"].split(" | ")) == sorted(modules)
+    for profile, module in modules.items():
+        assert env[f"[{profile}] SUT class"].startswith(module), env[f"[{profile}] SUT class"]
+    for key, value in env.items():
+        prefix = key[1:key.index("]")] if key.startswith("[") else None
+        assert prefix in (*modules, "run"), f"a key outside every profile: {key}"
+        others = [module for profile, module in modules.items() if profile != prefix]
+        assert not any(module in value for module in others), f"{key} carries another profile's value: {value}"
+        parts = value.split(" | ")
+        assert len(parts) == len(set(parts)), f"{key} repeats a value: {value}"
+    assert {"[run] command", "[run] commit", "[run] date", "[run] host"} <= env.keys()
+    assert env["[crh2] cars per set"] == "8" and env["[metro-tcn] cars"].startswith("6 "), env
