@@ -228,19 +228,50 @@ def _decorate(item: pytest.Item, reg: Registry | None) -> None:
                                                     link_type="tms"))
     for profile in profiles:
         item.add_marker(_label("tag", f"profile:{profile}"))
+    item.add_marker(pytest.mark.allure_description(_reviewers_view(item, reg, item_ids, reqs, profiles)))
 
 
-_REQ_LINES = pytest.StashKey[dict]()
+def _reviewers_view(item: pytest.Item, reg: Registry | None, item_ids: list[str], reqs: list[str],
+                    profiles: list[str]) -> str:
+    """The scenario page's description (Markdown): what a reviewer signs off, on the page itself: the test
+    item and its title, the profile, the full text of every requirement verified (not only its ID), then
+    the feature's and the scenario's own description as allure-pytest-bdd would have shown them."""
+    texts = _requirements(item.config)
+    lines = []
+    for item_id in item_ids:
+        entry = reg.items.get(item_id) if reg else None
+        lines += [f"**Test item** {item_id}" + (f": {entry.title}" if entry is not None else ""), ""]
+    lines.append(f"**Profile** {', '.join(profiles) or 'any'}")
+    if reqs:
+        lines += ["", "**Requirements verified**", ""]
+        lines += [f"- **{req}** {texts[req].text if req in texts else '(not in docs/requirements.md)'}"
+                  for req in reqs]
+    template = step_index.template_of(item)
+    own = [text for text in (_text(getattr(template.feature, "description", None)),
+                             _text(getattr(template, "description", None))) if text]
+    return "\n".join(lines + ["", *own] if own else lines)
 
 
-def _requirement_lines(config: pytest.Config) -> dict[str, int]:
-    if _REQ_LINES not in config.stash:
+def _text(description: object) -> str:
+    if isinstance(description, list):
+        description = "\n".join(description)
+    return description.strip() if isinstance(description, str) else ""
+
+
+_REQ_TEXTS = pytest.StashKey[dict]()
+
+
+def _requirements(config: pytest.Config) -> dict:
+    if _REQ_TEXTS not in config.stash:
         from .requirements import load_requirements
 
         path = Path(config.rootpath) / "docs" / "requirements.md"
-        config.stash[_REQ_LINES] = ({r.id: r.line for r in load_requirements(path).values()}
-                                    if path.is_file() else {})
-    return config.stash[_REQ_LINES]
+        config.stash[_REQ_TEXTS] = load_requirements(path) if path.is_file() else {}
+    return config.stash[_REQ_TEXTS]
+
+
+def _requirement_lines(config: pytest.Config) -> dict[str, int]:
+    return {req: r.line for req, r in _requirements(config).items()}
 
 
 def _wanted(config: pytest.Config, option: str) -> list[str]:

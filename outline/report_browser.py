@@ -60,7 +60,11 @@ _STATE_JS = r"""(() => {
     sections[title.textContent.trim()] = n;
   }
   const app = document.getElementById('app');
+  // A test result's description is rendered into an iframe (srcdoc, same origin): its text, if one is shown.
+  const frame = q('[data-testid="test-result-description-frame"]');
+  const frameBody = frame && frame.contentDocument && frame.contentDocument.body;
   return {
+    description: frameBody ? frameBody.innerText : null,
     title: document.title.trim(),
     reportTitle: (q('[data-testid="report-title"]') || {}).textContent || null,
     appChildren: app ? app.childElementCount : -1,
@@ -95,6 +99,7 @@ class PageLoad:
     total: int | None = None
     sections: dict[str, int] = field(default_factory=dict)
     text: str = ""
+    description: str | None = None      # a test result page's description, as shown in its frame
     errors: list[str] = field(default_factory=list)
     seconds: float = 0.0
 
@@ -223,7 +228,8 @@ def _above_4(fd: int) -> int:
 
 
 def load(target: str | Path, *, chromium: str = CHROMIUM, timeout: float = 30.0, settle: float = 0.5) -> PageLoad:
-    """Open `target` (a file path or URL) and wait until the report shows its total (or `timeout` passes)."""
+    """Open `target` (a file path or URL) and wait until the report shows its total, or a test result page its
+    description (or `timeout` passes)."""
     url = target if isinstance(target, str) and "://" in target else Path(target).resolve().as_uri()
     exe = shutil.which(chromium) if os.sep not in chromium else chromium
     if not exe or not os.access(exe, os.X_OK):
@@ -262,7 +268,8 @@ def load(target: str | Path, *, chromium: str = CHROMIUM, timeout: float = 30.0,
             deadline = time.monotonic() + timeout
             while True:
                 state = _state(pipe, session)
-                done = state.get("total") is not None and not state.get("loaderShown")
+                shown = state.get("total") is not None or state.get("description") is not None   # overview, result
+                done = shown and not state.get("loaderShown")
                 if done or _shown_errors(state.get("text", "")) or time.monotonic() > deadline:
                     break
                 pipe.drain(0.2)
@@ -276,6 +283,7 @@ def load(target: str | Path, *, chromium: str = CHROMIUM, timeout: float = 30.0,
             page.total = int(total) if total and total.isdigit() else None
             page.sections = state.get("sections") or {}
             page.text = state.get("text", "")
+            page.description = state.get("description")
             page.errors += _errors(pipe.events, session) + _shown_errors(page.text)
             try:
                 pipe.call("Browser.close", timeout=5)

@@ -12,6 +12,7 @@ Allure CLI (`node_modules`, from package-lock.json).
 """
 from __future__ import annotations
 
+import base64
 import fcntl
 import json
 import os
@@ -103,6 +104,32 @@ def test_report_renders_in_headless_chromium(report: dict) -> None:
     found = problems(page, report["ran"])
     assert not found, (f"report of `pytest features --item={ITEMS}` ({report['summary']}) in headless Chromium, "
                        f"{page.url}:\n  " + "\n  ".join(found) + f"\npage text: {page.excerpt()}")
+
+
+def _result_id(index: str, name_prefix: str) -> str:
+    """The report's id of the first test result whose name starts with `name_prefix` (singleFile embeds each
+    result as d("data/test-results/<id>.json", "<base64 JSON>"))."""
+    html = Path(index).read_text(encoding="utf-8")
+    for rid, data in re.findall(r'd\("data/test-results/([0-9a-f]+)\.json","([^"]*)"\)', html):
+        if json.loads(base64.b64decode(data)).get("name", "").startswith(name_prefix):
+            return rid
+    raise AssertionError(f"no test result named {name_prefix}... in {index}")
+
+
+def test_a_scenario_page_shows_what_a_reviewer_signs_off(report: dict) -> None:
+    """Issue 17: the item's title, the full text of each requirement verified, the profile, the attachments."""
+    from outline.requirements import load_requirements
+
+    page = report_browser.load(f"{Path(report['index']).as_uri()}#{_result_id(report['index'], 'R-CTL-01')}")
+    assert not page.errors, page.errors
+    shown = page.description or ""
+    ctl01 = "Traction and brake command transmission"              # features/registry.yaml
+    requirement = load_requirements(ROOT / "docs" / "requirements.md")["CMD-05"].text
+    for expected in (f"Test item R-CTL-01: {ctl01}", "Profile crh2", "Requirements verified",
+                     f"CMD-05 {requirement}"):
+        assert expected in shown, f"the page's description lacks {expected!r}: {shown[:1500]}"
+    for expected in ("timing diagram", "key events", "profile:crh2", "req:CMD-05"):
+        assert expected in page.text, f"the page lacks {expected!r}: {page.excerpt(3000)}"
 
 
 def _throwing_script(html: str) -> str:
