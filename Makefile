@@ -44,7 +44,7 @@ help: ## list the targets
 	@echo "Train network conformance suite: CRH2, metro TCN, ATP (PYTEST_ARGS=... and SUT=... pass through to pytest)"
 	@grep -E '^[a-z][a-z-]*:.*## ' $(MAKEFILE_LIST) | sed -E 's/^([a-z-]+):.*## (.*)/  make \1\t\2/' | expand -t 20
 
-report: $(VENV_STAMP) $(NODE_STAMP) ## run every feature, build reports/html/index.html and reports/traceability.{md,html}, print a summary
+report: $(VENV_STAMP) $(NODE_STAMP) ## run every feature, build reports/html/index.html (one file; a copy named by commit to archive) and reports/traceability.{md,html}, print a summary
 	@rm -rf $(RESULTS) $(HTML) && mkdir -p $(RESULTS)
 	@# Keep pytest's status, still build the report, exit with that status at the end.
 	@$(PY) -m pytest features $(XDIST) --alluredir $(RESULTS) $(SUT_ARG) $(PYTEST_ARGS); status=$$?; \
@@ -53,7 +53,9 @@ report: $(VENV_STAMP) $(NODE_STAMP) ## run every feature, build reports/html/ind
 	$(PY) -m outline.mutation --to-allure $(RESULTS) || exit $$?; \
 	npx --no-install allure generate $(RESULTS) --output $(HTML) >/dev/null || exit $$?; \
 	$(PY) -m outline.allure_html $(HTML)/index.html; \
-	echo "report: $(HTML)/index.html"; \
+	archive=reports/conformance-$$(git rev-parse --short HEAD 2>/dev/null || echo local).html; \
+	rm -f reports/conformance-*.html; ln -f $(HTML)/index.html $$archive 2>/dev/null || cp $(HTML)/index.html $$archive; \
+	echo "report: $(HTML)/index.html (one self-contained file; to archive: $$archive)"; \
 	$(PY) -m outline.summary $(RESULTS); \
 	exit $$status
 
@@ -73,7 +75,7 @@ trace: $(VENV_STAMP) ## python -m outline trace: requirement <-> item <-> scenar
 	$(PY) -m outline trace $(if $(wildcard $(RESULTS)),--results $(RESULTS))
 
 clean: ## remove reports and caches (keeps .venv and node_modules)
-	rm -rf $(RESULTS) $(HTML) reports/history.jsonl reports/traceability.* reports/mutation.* mutants .pytest_cache .hypothesis
+	rm -rf $(RESULTS) $(HTML) reports/history.jsonl reports/traceability.* reports/mutation.* reports/conformance-*.html mutants .pytest_cache .hypothesis
 	find . -name __pycache__ -type d -not -path './$(VENV)/*' -not -path './node_modules/*' -prune -exec rm -rf {} +
 
 distclean: clean ## also remove .venv and node_modules
