@@ -393,3 +393,20 @@ def test_the_features_give_the_same_verdicts_and_traces_in_bulk_and_frame_by_fra
     expected, found = traces(tmp_path / "exact"), traces(tmp_path / "bulk")
     differ = [name for name in expected if found.get(name) != expected[name]]
     assert not differ and found.keys() == expected.keys(), f"traces differ: {differ[:5]}"
+
+
+def test_a_read_given_the_last_one_stops_at_the_first_difference_and_is_whole_otherwise() -> None:
+    sut = powered()
+    train = sut.train
+    period = bulk.steady_period_us(train)
+    sut.advance(2_000_000)
+    last = bulk.snapshot(train)
+    sut.advance(period)
+    alike = bulk.snapshot(train, last)                   # steady: read to the end, as without `like`
+    whole = bulk.snapshot(train)
+    assert alike.shape == whole.shape == last.shape and alike.ints == whole.ints
+    sut.fail("car3.LCU.CPU3")
+    sut.advance(period)
+    with pytest.raises(bulk.Changing):
+        bulk.snapshot(train, alike)
+    assert bulk.snapshot(train).shape != alike.shape     # what the early stop saw, a whole read sees too

@@ -61,6 +61,10 @@ class NotSteady(Exception):
     """The train is not on a straight line over the checked periods (the reason says where)."""
 
 
+class Changing(NotSteady):
+    """A read stopped early: the train's state already differs in shape from the last read."""
+
+
 _SCALARS = (str, bytes, float, complex, type(None), bool, range, enum.Enum)
 _FUNCTIONS = (types.FunctionType, types.BuiltinFunctionType, types.MethodWrapperType, type)
 
@@ -77,7 +81,14 @@ class Snapshot:
 
 
 class _Reader:
-    def __init__(self) -> None:
+    # Reading the whole train costs about what simulating a period does, and most reads in a short advance
+    # find the train still changing. Given the last read's shape, the reader compares as it goes (every
+    # CHECK_EVERY leaves, at the end of an object) and stops at the first difference.
+    CHECK_EVERY = 2048
+
+    def __init__(self, expect: list | None = None) -> None:
+        self.expect = expect
+        self.checked = 0
         self.shape: list = []
         self.ints: list[int] = []
         self.writers: list[tuple] = []
@@ -160,6 +171,11 @@ class _Reader:
             raise NotSteady(f"{t.__qualname__} {obj!r:.60} cannot be carried over a jump")
         if rebuild:
             self.rebuild.append(("object", obj))
+        if self.expect is not None and len(shape) - self.checked >= self.CHECK_EVERY:
+            n = len(shape)
+            if shape[self.checked:n] != self.expect[self.checked:n]:
+                raise Changing(f"the train's state changed shape near leaf {self.checked}..{n}")
+            self.checked = n
 
 
 _PLAIN = frozenset((str, bytes, float, type(None), bool))
@@ -177,9 +193,10 @@ def _class_info(t: type) -> tuple:
     return skip, slots, hasattr(t, "bulk_steady"), hasattr(t, "bulk_rebuild")
 
 
-def snapshot(train: "Train") -> Snapshot:
+def snapshot(train: "Train", like: Snapshot | None = None) -> Snapshot:
+    """The train read as leaves; with `like`, Changing as soon as its shape is seen to differ from like's."""
     kernel = train.kernel
-    reader = _Reader()
+    reader = _Reader(like.shape if like is not None else None)
     reader.read(train, ("const",))
     # Timers in an order that does not depend on absolute time: what they call, on which object, how far
     # ahead; the sequence number only separates timers that agree on all of that.
@@ -494,9 +511,12 @@ def advance(train: "Train", until: int) -> BulkReport:
     while until - kernel.now >= (3 - len(window)) * period:    # enough left to find the line and skip a period
         failed = False
         try:
-            window.append((snapshot(train), len(events)))
+            # Where a look that fails clears the window anyway (short periods, below), stop reading at the
+            # first difference from the last read; else the new read is kept to start the next line from.
+            like = window[-1][0] if window and period < BULK_MIN_US else None
+            window.append((snapshot(train, like), len(events)))
             report.checks += 1
-        except NotSteady:
+        except NotSteady:                        # Changing too: the shape differs from the last read's
             window.clear()
             failed = True
         if len(window) > 1 and window[-1][0].shape != window[-2][0].shape:
