@@ -4,8 +4,9 @@ The report is built here the way `make report` builds it, on a small run (two ro
 --alluredir (the plugin writes categories, executor and environment), `python -m outline trace --allure` (one
 "Traceability matrix" entry), `npx allure generate` with the project's allurerc.mjs (history kept in tmp, not
 in reports/), `python -m outline.allure_html` (drops the analytics tag). Then outline.report_browser opens
-index.html from disk (file://, as a reader does) over the DevTools protocol; see that module for what counts as
-an error. A second test breaks copies of the report and checks that the same assertions catch each break.
+index.html from disk (file://, as a reader does) with Playwright driving Debian's Chromium; see that module
+for what counts as an error. One test opens a scenario's page; another breaks copies of the report and checks
+that the same assertions catch each break.
 
 Chromium is not skipped when missing: CI runs `make test`, which installs Debian's `chromium`; so is the npm
 Allure CLI (`node_modules`, from package-lock.json).
@@ -141,9 +142,15 @@ def _missing_data_file(html: str) -> str:
     return re.sub(r'd\("widgets/statistic\.json","[^"]*"\),', "", html, count=1)
 
 
+def _calling_out(html: str) -> str:
+    # What outline/allure_html.py strips from Allure's page: a script fetched from the network.
+    return html.replace("</head>", '<script async src="https://analytics.invalid/tag.js"></script></head>', 1)
+
+
 @pytest.mark.parametrize(("mutate", "expected"), [(_throwing_script, "uncaught exception: Error: mutant"),
-                                                  (_missing_data_file, "Total shows 0")],
-                         ids=["throwing-script", "missing-data-file"])
+                                                  (_missing_data_file, "Total shows 0"),
+                                                  (_calling_out, "external request: https://analytics.invalid")],
+                         ids=["throwing-script", "missing-data-file", "calling-out"])
 def test_check_catches_a_broken_report(report: dict, tmp_path: Path, mutate, expected: str) -> None:
     original = Path(report["index"]).read_text(encoding="utf-8")
     broken = mutate(original)
