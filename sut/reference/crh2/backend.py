@@ -350,15 +350,18 @@ class ReferenceTrain(PickledState, TrainDriver):
         return [n.name for n in self.train.ring.nodes if n.has_token]
 
     def monitor(self, cab: int) -> dict[str, Any]:
-        view = self._cab(cab).monitor_view(stale_us=self._cfg.timing.token_loss_us)
-        view["faults"] = sorted(view["faults"] + self.train.vehicle.monitor_alarms())
+        view = self._screen(cab)
         view["maintenance"] = self._fault_history()
         return view
 
     def _monitor_faults(self, cab: int) -> list[str]:
-        # A watch looks a thousand times a second: the fault list alone, not the maintenance view.
+        # A watch looks a thousand times a second: the screen alone, not the maintenance view.
+        return self._screen(cab)["faults"]
+
+    def _screen(self, cab: int) -> dict[str, Any]:
         view = self._cab(cab).monitor_view(stale_us=self._cfg.timing.token_loss_us)
-        return sorted(view["faults"] + self.train.vehicle.monitor_alarms())
+        view["faults"] = sorted(view["faults"] + self.train.vehicle.monitor_alarms())
+        return view
 
     def _fault_history(self) -> list[str]:
         """The maintenance view: fault records held at the master, oldest first (DECISIONS.md)."""
