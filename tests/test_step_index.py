@@ -21,3 +21,23 @@ def test_the_index_finds_what_pytest_bdd_finds_for_every_step() -> None:
     assert not differ, "\n".join(differ[:10])
     checked = re.search(r"^STEP INDEX CHECKED (\d+)$", result.stdout, re.M)
     assert checked and int(checked.group(1)) >= 5000, result.stdout[-2000:]
+
+
+def test_a_literal_prefix_is_never_longer_than_what_every_match_starts_with() -> None:
+    from pytest_bdd import parsers
+
+    from outline.step_index import literal_chunks, literal_prefix
+
+    assert literal_prefix(parsers.string("the train is powered")) == ("the train is powered", False)
+    assert literal_prefix(parsers.parse('the cab {cab:d} monitor shows "{text}"')) == ("the cab ", True)
+    assert literal_chunks(parsers.parse('the cab {cab:d} monitor shows "{text}"')) == ("the cab ", " monitor shows \"")
+    assert literal_prefix(parsers.re(r'the "(?P<o>[^"]+)" stays')) == ('the "', False)
+    assert literal_prefix(parsers.re(r"the trains? stops?")) == ("the train", False)       # "s?": s optional
+    assert literal_prefix(parsers.re(r"the train stops|a train halts")) == ("", False)    # alternation
+    assert literal_prefix(parsers.re(r"(?i)the train"))[0] == ""
+    assert literal_prefix(parsers.re(r"THE train", flags=__import__("re").IGNORECASE)) == ("THE train", True)
+    assert literal_prefix(parsers.parse("持续观察{cab:d}号")) == ("", True)                   # no case folding guess
+    for parser, text in ((parsers.parse("The Cab {n:d} is Open"), "the cab 3 is open"),
+                         (parsers.re(r"the trains? stops?"), "the train stop")):
+        prefix, fold = literal_prefix(parser)
+        assert parser.is_matching(text) and (text.lower() if fold else text).startswith(prefix.lower() if fold else prefix)
