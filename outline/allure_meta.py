@@ -17,7 +17,7 @@ from pathlib import Path
 
 from outline.allure_env import write_environment
 
-# The whole suite's title (allurerc.mjs names the report the same: tests/test_allure_env.py holds them equal).
+# The whole suite's title (allurerc.mjs names the report the same: tests/test_report_in_browser.py reads it there).
 REPORT_NAME = "Train network conformance: CRH2, metro TCN, ATP"
 
 CATEGORIES = [
@@ -45,13 +45,14 @@ def write(results_dir: str | Path, root: Path, command: str) -> None:
     results.mkdir(parents=True, exist_ok=True)
     (results / "categories.json").write_text(json.dumps(CATEGORIES, indent=1), encoding="utf-8")
     now = _dt.datetime.now(_dt.timezone.utc).strftime("%Y-%m-%d %H:%M UTC")
+    commit = _commit(root)
     executor = {"name": f"{platform.node() or 'local'} (pytest)", "type": "local",
-                "buildName": f"{now}, commit {_commit(root)}", "reportName": REPORT_NAME,
+                "buildName": f"{now}, commit {commit}", "reportName": REPORT_NAME,
                 "buildOrder": int(_dt.datetime.now(_dt.timezone.utc).timestamp()),
                 "reportUrl": "", "buildUrl": ""}
     if command:
         executor["name"] += f": {command}"
     (results / "executor.json").write_text(json.dumps(executor, indent=1), encoding="utf-8")
     # The run's own facts, once, beside each profile's SUT (steps/report.py keys those by profile).
-    write_environment(results, {"[run] command": command or None, "[run] commit": _commit(root),
+    write_environment(results, {"[run] command": command or None, "[run] commit": commit,
                                 "[run] date": now, "[run] host": platform.node() or None})

@@ -216,15 +216,15 @@ def _decorate(item: pytest.Item, reg: Registry | None) -> None:
             item.add_marker(_label("story", item_id))
         item.add_marker(_label("tag", f"item:{item_id}"))
     tms = _link_pattern(item.config, "tms")
-    lines = _requirement_lines(item.config)
+    known = _requirements(item.config)
     for req in reqs:
         item.add_marker(_label("requirement", req))
         item.add_marker(_label("tag", f"req:{req}"))
         if tms:  # a tracker given with --allure-link-pattern tms:...: link there
             item.add_marker(pytest.mark.allure_link(tms.format(req), name=req, link_type="tms"))
-        elif req in lines:  # else its line in docs/requirements.md, relative to reports/html/index.html
-            item.add_marker(pytest.mark.allure_link(f"../../docs/requirements.md#L{lines[req]}",
-                                                    name=f"{req} (requirements.md line {lines[req]})",
+        elif req in known:  # else its line in docs/requirements.md, relative to reports/html/index.html
+            item.add_marker(pytest.mark.allure_link(f"../../docs/requirements.md#L{known[req].line}",
+                                                    name=f"{req} (requirements.md line {known[req].line})",
                                                     link_type="tms"))
     for profile in profiles:
         item.add_marker(_label("tag", f"profile:{profile}"))
@@ -268,10 +268,6 @@ def _requirements(config: pytest.Config) -> dict:
         path = Path(config.rootpath) / "docs" / "requirements.md"
         config.stash[_REQ_TEXTS] = load_requirements(path) if path.is_file() else {}
     return config.stash[_REQ_TEXTS]
-
-
-def _requirement_lines(config: pytest.Config) -> dict[str, int]:
-    return {req: r.line for req, r in _requirements(config).items()}
 
 
 def _wanted(config: pytest.Config, option: str) -> list[str]:

@@ -362,7 +362,6 @@ def test_any_request_gets_an_answer(request: dict) -> None:
         session.close()
 
 
-
 def _watched(train: TrainDriver, *, looks: bool = False) -> tuple[list, str]:
     """A watch of the cab 1 monitor across a board failure and its repair; with `looks`, TrainDriver's
     own look-by-look loop instead of the backend's watch."""
