@@ -370,3 +370,30 @@ def test_compiled_layouts_build_as_declared(case):
     wire = frames.LAYOUTS[kind].build(dict(values, kind=kind))
     assert frames._BUILDERS[kind].build(dict(values, kind=kind)) == wire
     assert frames.build_payload(kind, values) == wire
+
+
+# -- the packets of the steady traffic come from templates (frames.packet) ------------------------------
+counters = st.integers(0, 2**40)        # the senders' counts are unbounded; the wire carries them masked
+
+
+@relaxed
+@given(case=st.sampled_from([K_COMMAND, K_STATUS]).flatmap(lambda k: st.tuples(st.just(k), PAYLOAD_VALUES[k])),
+       src=node_ids, dst=node_ids, seq=counters, clock=counters)
+def test_a_packet_from_its_template_is_the_packet_built_through_the_layout(case, src, dst, seq, clock):
+    kind, values = case
+    values = dict(values, seq=seq, **({"clock_ms": clock} if kind == K_COMMAND else {}))
+    built = encode_pac(src, dst, frames.build_payload(kind, values))
+    assert frames.packet(kind, src, dst, values) == built
+    # Again from the template now remembered, with other counters: only the counters' bytes and the CRC move.
+    again = dict(values, seq=seq + 12_345, **({"clock_ms": clock * 3 + 1} if kind == K_COMMAND else {}))
+    assert frames.packet(kind, src, dst, again) == encode_pac(src, dst, frames.build_payload(kind, again))
+
+
+def test_a_field_the_layout_refuses_is_refused_from_a_template_too():
+    good = dict(seq=1, cab=1, system=1, direction=1, traction=3, brake=0, flags=1, clock_ms=5)
+    frames.packet(K_COMMAND, 1, BROADCAST, good)                         # the template is remembered
+    for bad in (dict(good, traction=256), dict(good, seq="1"), {k: v for k, v in good.items() if k != "seq"}):
+        with pytest.raises(Exception) as caught:
+            frames.packet(K_COMMAND, 1, BROADCAST, bad)
+        with pytest.raises(type(caught.value)):
+            encode_pac(1, BROADCAST, frames.build_payload(K_COMMAND, bad))

@@ -8,8 +8,8 @@ from hypothesis import HealthCheck, given, settings
 from hypothesis import strategies as st
 
 from sut.codecs.mvb import (F_CODES, SLAVE_SIZES_BITS, DataClass, MasterFrame, MvbFrameError,
-                                     SlaveFrame, check_sequence, data_class, decode_master, decode_slave,
-                                     slave_size_bits)
+                                     SlaveFrame, check_sequence, data_class, decode_master, decode_slave, encode_master,
+                                     encode_slave, slave_size_bits)
 
 # Loaded machines make per-example deadlines flaky; these are not timing tests.
 relaxed = settings(deadline=None, suppress_health_check=[HealthCheck.too_slow])
@@ -281,3 +281,30 @@ def test_frames_are_immutable():
     with pytest.raises(AttributeError):
         frame.address = 2
     assert isinstance(SlaveFrame(bytearray(2)).data, bytes)
+
+
+# -- the reference's cached encodings and decodings (frames are values) ------------------------------
+@settings(relaxed, max_examples=200)
+@given(frame=master_frames)
+def test_cached_master_encoding_is_the_frames(frame):
+    assert encode_master(frame.f_code, frame.address) == frame.encode() == reference_body(frame.encode()[:2])
+
+
+@settings(relaxed, max_examples=200)
+@given(frame=slave_frames)
+def test_cached_slave_encoding_is_the_frames(frame):
+    assert encode_slave(frame.data) == encode_slave(bytearray(frame.data)) == reference_body(frame.data)
+
+
+def test_a_bad_frame_is_refused_every_time_not_only_the_first():
+    bad = bytearray(MasterFrame(2, 0x123).encode())
+    bad[2] ^= 1
+    for _ in range(3):
+        with pytest.raises(MvbFrameError, match="check sequence failed"):
+            decode_master(bytes(bad))
+        with pytest.raises(MvbFrameError, match="check sequence"):
+            decode_slave(bytes(bad), 16)
+    with pytest.raises(MvbFrameError, match="slave frame size"):
+        decode_slave(SlaveFrame(b"ab").encode(), [16])              # unhashable: still the codec's own error
+    with pytest.raises(MvbFrameError, match="out of range"):
+        encode_master(16, 1)

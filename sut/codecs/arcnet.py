@@ -24,6 +24,7 @@ def _table(poly_reflected: int) -> list[int]:
 
 
 _ARC = _table(0xA001)     # x^16+x^15+x^2+1 reflected
+ARC_TABLE = tuple(_ARC)
 _X25 = _table(0x8408)     # x^16+x^12+x^5+1 reflected (HDLC FCS)
 
 

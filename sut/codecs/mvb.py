@@ -150,7 +150,7 @@ class MasterFrame:
 
     @property
     def reserved(self) -> bool:
-        return is_reserved(self.f_code)
+        return self.f_code not in F_CODES          # is_reserved, the range checked when the frame was made
 
     @property
     def data_class(self) -> DataClass:
@@ -161,8 +161,7 @@ class MasterFrame:
         return slave_size_bits(self.f_code)
 
     def encode(self) -> bytes:
-        head = (self.f_code << 12 | self.address).to_bytes(2, "big")
-        return head + bytes([check_sequence(head)])
+        return _master_wire(self.f_code, self.address)
 
 
 @dataclass(frozen=True)
@@ -182,11 +181,47 @@ class SlaveFrame:
         return len(self.data) * 8
 
     def encode(self) -> bytes:
-        out = bytearray()
-        for group in _groups(self.data):
-            out += group
-            out.append(check_sequence(group))
-        return bytes(out)
+        return _slave_wire(self.data)
+
+
+# Frames are values: a bus carries the same few hundred of them every basic period, so each wire image and
+# each decoding is worked out once (the metro reference spent a third of its time here; bench/suite_bench.py
+# --profile-run). A decoding that fails raises every time: lru_cache keeps no exceptions.
+@functools.lru_cache(maxsize=1 << 16)
+def _master_wire(f_code: int, address: int) -> bytes:
+    head = (f_code << 12 | address).to_bytes(2, "big")
+    return head + bytes([check_sequence(head)])
+
+
+@functools.lru_cache(maxsize=1 << 16)
+def _slave_wire(data: bytes) -> bytes:
+    out = bytearray()
+    for group in _groups(data):
+        out += group
+        out.append(check_sequence(group))
+    return bytes(out)
+
+
+def encode_master(f_code: int, address: int) -> bytes:
+    """`MasterFrame(f_code, address).encode()`, the frame checked once per F_code and address."""
+    return _master_frame(f_code, address).encode()
+
+
+def encode_slave(data: bytes) -> bytes:
+    """`SlaveFrame(data).encode()`, the frame checked once per data."""
+    if type(data) is not bytes:
+        return SlaveFrame(data).encode()
+    return _slave_frame(data).encode()
+
+
+@functools.lru_cache(maxsize=1 << 16)
+def _master_frame(f_code: int, address: int) -> "MasterFrame":
+    return MasterFrame(f_code, address)
+
+
+@functools.lru_cache(maxsize=1 << 16)
+def _slave_frame(data: bytes) -> "SlaveFrame":
+    return SlaveFrame(data)
 
 
 def _groups(data: bytes) -> list[bytes]:
@@ -210,7 +245,11 @@ def _as_bytes(raw: object, what: str) -> bytes:
 
 def decode_master(raw: bytes) -> MasterFrame:
     """The master frame in `raw` (body after a master start delimiter); MvbFrameError if it is not one."""
-    raw = _as_bytes(raw, "master frame")
+    return _decode_master(raw if type(raw) is bytes else _as_bytes(raw, "master frame"))
+
+
+@functools.lru_cache(maxsize=1 << 16)
+def _decode_master(raw: bytes) -> MasterFrame:
     if len(raw) != MASTER_FRAME_BYTES:
         raise MvbFrameError(f"master frame of {len(raw)} bytes: a master frame is {MASTER_FRAME_BYTES} bytes "
                             "(F_code, address, check sequence)")
@@ -231,7 +270,14 @@ def decode_slave(raw: bytes, size_bits: int | None = None) -> SlaveFrame:
     size follows from the length, and a 128/256-bit frame cut after a whole 64-bit group and its check
     byte reads as a valid shorter frame.
     """
-    raw = _as_bytes(raw, "slave frame")
+    raw = raw if type(raw) is bytes else _as_bytes(raw, "slave frame")
+    if size_bits is None or type(size_bits) is int:
+        return _decode_slave(raw, size_bits)
+    return _decode_slave.__wrapped__(raw, size_bits)        # unhashable: its error, not lru_cache's
+
+
+@functools.lru_cache(maxsize=1 << 16)
+def _decode_slave(raw: bytes, size_bits: int | None) -> SlaveFrame:
     if size_bits is None:
         if len(raw) not in _SIZE_BY_FRAME_BYTES:
             raise MvbFrameError(f"slave frame of {len(raw)} bytes is not a valid frame size (3, 5, 9, 18 or "

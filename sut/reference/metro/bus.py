@@ -11,7 +11,7 @@ The bus knows nothing of frame layouts: a `decode` function turns the bits on a 
 from __future__ import annotations
 
 from dataclasses import dataclass
-from typing import Any, Callable
+from typing import Any, Callable, NamedTuple
 
 LINES = ("A", "B")
 
@@ -29,9 +29,9 @@ class Line:
     reported: bool = False     # the diagnosing unit has reported this line faulty
 
 
-@dataclass(frozen=True)
-class Carried:
-    """What one frame became on the bus: data for the receivers, or None if no line brought it intact."""
+class Carried(NamedTuple):
+    """What one frame became on the bus: data for the receivers, or None if no line brought it intact.
+    (A tuple: one is made per frame, thousands per simulated second.)"""
     data: Any
     line: str | None
     errors: tuple[str, ...]

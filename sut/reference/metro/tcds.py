@@ -13,11 +13,12 @@ Read with requirements.md TCN-01..10, RED-04..07 and DECISIONS.md "Metro TCDS". 
 """
 from __future__ import annotations
 
+import functools
 from dataclasses import replace
 from typing import Any, Callable
 
-from sut.codecs.mvb import (MasterFrame, SlaveFrame, check_sequence, decode_master, decode_slave, is_reserved,
-                            slave_size_bits)
+from sut.codecs.mvb import (SlaveFrame, check_sequence, decode_master, decode_slave, encode_master, encode_slave,
+                            is_reserved, slave_size_bits)
 from sut.reference.bulk import cyclic_period_us
 from sut.reference.kernel import Kernel, Timer
 from sut.reference.metro import ports
@@ -37,6 +38,15 @@ WTB_OVERHEAD_BITS = 64   # HDLC flags, address, control, preamble
 
 def _nothing() -> None:
     pass
+
+
+@functools.lru_cache(maxsize=None)
+def _message_us(f_code: int, bit_ns: int) -> int:
+    """A poll's time on the bus: master frame, the slave frame answering it, the gap before the next."""
+    bits = MASTER_BITS
+    if not is_reserved(f_code):          # no slave frame answers a reserved F_code
+        bits += slave_size_bits(f_code) + 8 * max(1, slave_size_bits(f_code) // 64) + SLAVE_OVERHEAD_BITS
+    return DualLineBus.frame_us(bits, bit_ns) + REPLY_GAP_US
 
 
 def _one_check_encode(data: bytes) -> bytes:
@@ -177,12 +187,9 @@ class MetroTrain:
         for what, target in polls:
             f_code = {"io": ports.IO_PORT_F_CODE, "cmd": ports.COMMAND_F_CODE,
                       "status": self.cfg.behaviour.status_poll_f_code}[what]
-            bits = MASTER_BITS
-            if not is_reserved(f_code):          # no slave frame answers a reserved F_code
-                bits += slave_size_bits(f_code) + 8 * max(1, slave_size_bits(f_code) // 64) + SLAVE_OVERHEAD_BITS
             # The whole message is taken at its master frame's instant, which is what an analyser logs.
             self.kernel.call_later(offset, self._mvb_message, unit, master.name, what, target, f_code)
-            offset += DualLineBus.frame_us(bits, t.mvb_bit_ns) + REPLY_GAP_US
+            offset += _message_us(f_code, t.mvb_bit_ns)
 
     def _address(self, unit: int, what: str, target: Any) -> int:
         if what == "io":
@@ -200,7 +207,7 @@ class MetroTrain:
         address = self._address(unit, what, target)
         if what == "status" and self.cfg.behaviour.status_polls_one_address:
             address = min(self.device_addresses[device.name] for device in seg.devices)
-        wire = MasterFrame(f_code, address).encode()
+        wire = encode_master(f_code, address)
         got = self._carry(bus, "master", wire, decode_master)
         if got.data is None:
             self.emit(bus.name, "mvb.msg", master=master_name, f_code=f_code, address=address, line=None,
@@ -216,7 +223,7 @@ class MetroTrain:
         if data is not None:
             size = slave_size_bits(f_code)
             long_one = self.cfg.behaviour.one_check_sequence and size > 64
-            wire = _one_check_encode(data) if long_one else SlaveFrame(data).encode()
+            wire = _one_check_encode(data) if long_one else encode_slave(data)
             decode: Callable = ((lambda raw: _one_check_decode(raw, size)) if long_one
                                 else (lambda raw: decode_slave(raw, size)))
             got = self._carry(bus, "slave", wire, decode)
@@ -268,7 +275,8 @@ class MetroTrain:
         elif what == "cmd":
             cmd = Command.decode(data)
             sent = seg.cmd_sent
-            if sent is not None and cmd == replace(sent, seq=sent.seq & 0xFFFF):
+            if sent is not None and (cmd.mode, cmd.direction, cmd.traction, cmd.brake, cmd.seq) == \
+                    (sent.mode, sent.direction, sent.traction, sent.brake, sent.seq & 0xFFFF):
                 cmd = sent           # the sender's own count, unbounded: the wire's 16 bits are what it carried
             seg.cmd, seg.cmd_t = cmd, now
             if seg.sink_timer is not None:
