@@ -1,4 +1,5 @@
-"""python -m outline {check,trace,new}: consistency, traceability and new items of the test outline."""
+"""python -m outline {check,trace,new,campaign}: consistency, traceability, new items and generated fault
+campaigns of the test outline."""
 
 from __future__ import annotations
 
@@ -24,7 +25,7 @@ def main(argv: list[str] | None = None) -> int:
         "library and docs/requirements.md must agree.",
     )
     parser.add_argument("--root", default=str(REPO.root), help="repository root (default: %(default)s)")
-    sub = parser.add_subparsers(dest="command", required=True, metavar="{check,trace,new}")
+    sub = parser.add_subparsers(dest="command", required=True, metavar="{check,trace,new,campaign}")
 
     check = sub.add_parser(
         "check",
@@ -70,8 +71,24 @@ def main(argv: list[str] | None = None) -> int:
     new.add_argument("--req", help="requirement IDs it verifies, the primary first: CMD-02,PRO-01")
     new.add_argument("--profile", default="crh2", help="train profile (default: %(default)s)")
 
+    campaign = sub.add_parser(
+        "campaign",
+        help="write the fault-campaign features (F-NET-30/31) from the SUT's own fault space",
+        description="Reads the boards, ring spans and supplies through the driver and writes each campaign's "
+        "feature file: one scenario per single fault, its expectation the design's for that kind of fault "
+        "(outline/campaign.py). --check compares with the checked-in files instead (exit 1 if they differ).",
+    )
+    campaign.add_argument("--sut", default="reference", help="SUT backend to read the fault space from "
+                          "(default: %(default)s)")
+    campaign.add_argument("--check", action="store_true", help="compare, write nothing")
+
     args = parser.parse_args(argv)
     tree = Tree.at(args.root)
+    if args.command == "campaign":
+        from .campaign import run as campaign_run
+
+        sys.path.insert(0, str(tree.root))
+        return campaign_run(tree.root, args.sut, args.check)
     if args.command == "check":
         from .check import run
 

@@ -141,16 +141,27 @@ def _(sut: TrainDriver, t_action: int, car: int, step: str, path: int, bound: fl
                    brake_step=step)
 
 
+def _only_path_1(sut: TrainDriver, devices: list[str], since: int, notch: int) -> None:
+    assert devices, "no CI or BCU to check"
+    for device in devices:
+        takes = sut.trace.select(kind="cmd.in", source=device, since=since)
+        assert takes, f"{device} received nothing after {ms(since)}"
+        odd = [ev for ev in takes if ev["path"] != 1 or ev["traction"] != notch]
+        assert not odd, f"{device} left path 1 / notch {notch}: {analysis.describe(odd)}"
+
+
 @then(parsers.parse("{after:g} ms起{car:d}号车以外的每个CI和BCU经路径1收到牵引级位{notch:d}"))
 @then(parsers.parse("from {after:g} ms on every CI and BCU outside car {car:d} receives traction notch {notch:d} "
                     "over path 1"))
 def _(sut: TrainDriver, t_action: int, after: float, car: int, notch: int) -> None:
     others = [d for d in analysis.command_devices(sut) if not d.startswith(f"car{car}.")]
-    for device in others:
-        takes = sut.trace.select(kind="cmd.in", source=device, since=t_action + us(after))
-        assert takes, f"{device} received nothing after {ms(t_action)}"
-        odd = [ev for ev in takes if ev["path"] != 1 or ev["traction"] != notch]
-        assert not odd, f"{device} left path 1 / notch {notch}: {analysis.describe(odd)}"
+    _only_path_1(sut, others, t_action + us(after), notch)
+
+
+@then(parsers.parse("{after:g} ms起每个CI和BCU只经路径1收到牵引级位{notch:d}"))
+@then(parsers.parse("from {after:g} ms on every CI and BCU receives traction notch {notch:d} over path 1"))
+def _(sut: TrainDriver, t_action: int, after: float, notch: int) -> None:
+    _only_path_1(sut, analysis.command_devices(sut), t_action + us(after), notch)
 
 
 def _nothing_over(sut: TrainDriver, devices: list[str], since: int, path: int) -> None:
@@ -176,6 +187,11 @@ def _(sut: TrainDriver, t_action: int, car: int, path: int) -> None:
 def _(sut: TrainDriver, t_action: int) -> None:
     takes = [ev for ev in sut.trace.select(kind="cmd.in", since=t_action) if ev["path"] in (2, 3)]
     assert takes, "no command travelled over path 2 or 3"
+    _only_steps_a_b(takes)
+
+
+def _only_steps_a_b(takes: list) -> None:
+    """CMD-03/04: the digital outputs of paths 2 and 3 carry the A/B steps, never a notch or a step number."""
     odd = [ev for ev in takes if ev["traction"] is not None or ev["brake"] is not None
            or ev["traction_step"] not in ("-", "A", "B") or ev["brake_step"] not in ("-", "A", "B")]
     assert not odd, f"paths 2/3 carried more than the A/B steps: {analysis.describe(odd)}"
@@ -186,6 +202,24 @@ def _(sut: TrainDriver, t_action: int) -> None:
 def _(sut: TrainDriver, t_action: int, notch: int) -> None:
     odd = [ev for ev in sut.trace.select(kind="cmd.in", since=t_action, path=1) if ev["traction"] != notch]
     assert not odd, f"devices received other notches: {analysis.describe(odd)}"
+
+
+def _notches(text: str) -> set[int]:
+    return {int(n) for n in text.replace(" or ", ",").replace("或", ",").split(",")}
+
+
+@then(parsers.parse("没有CI或BCU在任何时刻收到{notches}级以外的牵引级位"), converters={"notches": _notches})
+@then(parsers.parse("no CI or BCU ever receives a traction notch other than {notches}"), converters={"notches": _notches})
+def _(sut: TrainDriver, notches: set[int]) -> None:
+    # Fail-safety over the whole trace, from power-up: a wrong notch for one cycle is a wrong command.
+    odd = [ev for ev in sut.trace.select(kind="cmd.in", path=1) if ev["traction"] not in notches]
+    assert not odd, f"devices received notches other than {sorted(notches)}: {analysis.describe(odd)}"
+
+
+@then("经路径2和3传送的命令从未包含A、B挡以外的级位")
+@then("no command over path 2 or 3 ever carried more than the traction and brake steps A and B")
+def _(sut: TrainDriver) -> None:
+    _only_steps_a_b([ev for ev in sut.trace.select(kind="cmd.in") if ev["path"] in (2, 3)])
 
 
 @then(parsers.parse("没有CI或BCU超过{bound:g} ms收不到命令"))

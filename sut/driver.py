@@ -314,6 +314,12 @@ class TrainDriver(abc.ABC):
     def devices(self, car: int) -> list[str]:
         raise self._unsupported("devices")
 
+    def supplies(self) -> list[str]:
+        """The power supplies `power_off` can switch off, e.g. 'car3.LCU' (the unit's own) and 'car3.LCU.RXC'
+        (a command board's own supply, CMD-01); with the boards and the ring's spans, the single faults a
+        campaign runs through (outline/campaign.py)."""
+        raise self._unsupported("supplies")
+
     def token_holder(self) -> list[str]:
         """Nodes holding a token now (one per connected segment in a healthy protocol)."""
         raise self._unsupported("token_holder")

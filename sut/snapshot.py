@@ -43,7 +43,7 @@ from sut.trace import Trace, TraceEvent
 # Driver calls that only observe (besides the properties now_us, powered and trace): they never change it.
 READS = frozenset({
     "counters", "input", "output", "reading", "vehicle_names", "rated_limits", "records", "ring_nodes",
-    "boards", "devices", "token_holder", "monitor", "status_table", "lamp", "block_store", "describe",
+    "boards", "devices", "supplies", "token_holder", "monitor", "status_table", "lamp", "block_store", "describe",
 })
 # Driver calls that act on the train: journaled, deferred where the cache knows them.
 INPUTS = frozenset({

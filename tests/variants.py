@@ -70,6 +70,12 @@ class DeadInputReleasesBrake(ReferenceTrain):
     BEHAVIOUR = {"txc_inverted_inputs": False}
 
 
+class RxcOnTheLcuSupply(ReferenceTrain):
+    """CMD-01: the RXC is fed from its LCU's supply, so losing that supply silences the car's paths 2 and 3
+    (F-NET-16 checks one LCU so; the single-fault campaign every one of them)."""
+    BEHAVIOUR = {"rxc_own_supply": False}
+
+
 class LampsFromOneTxc(ReferenceTrain):
     """RED-03: only system 1's TXC drives the cab lamps."""
     BEHAVIOUR = {"lamps_parallel": False}
@@ -315,6 +321,7 @@ FAULTY = [
     (DeadInputReleasesBrake, "FS-03", "F-NET-19"),
     (LampsFromOneTxc, "RED-03", "F-NET-18"),
     (CommandsThroughCpu3, "CMD-01", "F-NET-16"),
+    (RxcOnTheLcuSupply, "CMD-01", "F-NET-30"),
     (BlocksWithoutGrant, "PRO-06", "F-NET-15"),
     (CrowdedBlocks, "PRO-06", "F-NET-15"),
     (LateTokenInit, "PRO-03", "F-NET-12"),

@@ -25,7 +25,7 @@ METHODS = frozenset({
     "withstand_test", "insulation_resistance",
     "cut_line", "restore_line", "disturb_line", "tap_bus", "records", "pass_balise",
     "request_block_transfer", "tap_link",
-    "ring_nodes", "boards", "devices", "token_holder", "monitor", "watch_monitor", "status_table", "lamp",
+    "ring_nodes", "boards", "devices", "supplies", "token_holder", "monitor", "watch_monitor", "status_table", "lamp",
     "block_store", "describe",
 })
 

@@ -336,6 +336,9 @@ class ReferenceTrain(PickledState, TrainDriver):
     def ring_nodes(self) -> list[str]:
         return [n.name for n in self.train.ring.nodes]
 
+    def supplies(self) -> list[str]:
+        return list(self.train.supplies)
+
     def boards(self, unit: str) -> list[str]:
         node = self._node(unit)
         return [short for short in ("CPU3", "MDM8", "MDM9", "TXC", "RXC") if node.board(short) is not None]

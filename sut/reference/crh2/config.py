@@ -47,6 +47,7 @@ class Behaviour:
     selfdiag_commands_only: bool = True   # NET-04 no status data on the self-diagnostic line
     lamps_parallel: bool = True           # RED-03 both TXCs drive the cab lamps
     cmd_bypass_cpu3: bool = True          # CMD-01 commands do not pass through CPU3
+    rxc_own_supply: bool = True           # CMD-01 the RXC has its own supply, not the LCU's
     standby_transmits: bool = False       # RED-02 system 2 only monitors while system 1 is healthy
     block_grant_required: bool = True     # PRO-06 no block transfer before the grant
     ilk08_ignored: tuple[str, ...] = ()   # ILK-08 conditions a faulty variant forgets to check

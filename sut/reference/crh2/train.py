@@ -49,7 +49,9 @@ class Train:
             for car in range(first, last + 1):
                 self.supplies[f"car{car}.LCU"] = PowerSupply(f"car{car}.LCU")
                 self.supplies[f"car{car}.LCU.RXC"] = PowerSupply(f"car{car}.LCU.RXC")
-                lcu = Lcu(self, car, self.supplies[f"car{car}.LCU"], self.supplies[f"car{car}.LCU.RXC"])
+                own = cfg.behaviour.rxc_own_supply           # CMD-01; a faulty variant feeds it from the LCU's
+                lcu = Lcu(self, car, self.supplies[f"car{car}.LCU"],
+                          self.supplies[f"car{car}.LCU.RXC" if own else f"car{car}.LCU"])
                 self._add_loop_devices(lcu)
                 self.lcus.append(lcu)
                 set_nodes.append(lcu)

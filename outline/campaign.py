@@ -1,0 +1,225 @@
+"""Fault campaigns (issue 16): every single fault of a CRH2 train's boards, ring spans and power supplies, one
+scenario each, generated from what the SUT says it is made of.
+
+`python -m outline campaign` opens the SUT through its driver (the reference by default), reads the fault
+space from it (`ring_nodes`: the spans between neighbours; `boards`; `supplies`), and writes each campaign's
+feature file: one Scenario Outline whose Examples are the faults, grouped by what the design says the train
+does under them. The expectation of each group is the articles' (the requirement IDs on the Examples), not a
+recording of what the reference did, so a reference that behaves otherwise fails the campaign. Faults outside
+the campaign are listed in the feature with the reason. `--check` compares instead of writing (the project's
+tests run it): a campaign that no longer covers the SUT's fault space fails.
+
+The command goes out at the instant of the fault: the campaign checks the way into a degraded mode (takeover,
+fallback to path 2 or 3), not only the mode once settled.
+"""
+from __future__ import annotations
+
+import sys
+from dataclasses import dataclass
+from pathlib import Path
+
+NOTCH = 6
+STEP = "B"                     # notch 6 on the digital outputs of paths 2 and 3 (CMD-03/04)
+COMMAND_BOARDS = ("TXC", "RXC")    # boards with their own supply (CMD-01), named <unit>.<board>
+
+
+@dataclass(frozen=True)
+class Fault:
+    kind: str                  # span, board, supply
+    values: tuple[str, ...]    # the Examples row: (a, b) of a span, the board, the supply
+
+    @property
+    def target(self) -> str:
+        return "~".join(self.values)
+
+
+# Per kind of fault: the sentence the hand-written features use, its Examples columns, how a title names it.
+KINDS = {
+    "span": ('the ring link between "<a>" and "<b>" is cut', ("a", "b"), "The ring link <a>~<b> cut"),
+    "board": ('board "<board>" fails', ("board",), "Board <board> failed"),
+    "supply": ('the supply "<supply>" is switched off', ("supply",), "Supply <supply> off"),
+}
+
+
+@dataclass(frozen=True)
+class Group:
+    """Faults the design answers alike, and its answer in the sentences the hand-written features use
+    (`<car>` is the car the fault cuts off)."""
+    title: str
+    reqs: tuple[str, ...]
+    then: tuple[str, ...]
+
+
+# Bounds (ms) from the articles: a command leaves the TXC at most 10 ms after the desk changed (PRO-01's
+# interval), crosses the ring in at most 15 ms (PRO-01, collisions included) and reaches CI and BCU with the
+# next 10 ms HDLC poll (NET-09): 40 ms with a margin. A takeover adds system 2's 50 ms of silence (RED-02);
+# a fallback to path 3 the RXC's wait for the ring before it trusts the self-diagnostic line (CMD-04): the
+# hand-written features give both 100 ms.
+RIDE, TAKEOVER = 40, 100
+
+RIDES = Group("<fault>: every CI and BCU stays on path 1", ("NET-03", "CMD-01", "CMD-02"), (
+    f"every CI and BCU receives traction notch {NOTCH} over path 1 within {RIDE} ms",
+    f"from {RIDE} ms on every CI and BCU receives traction notch {NOTCH} over path 1"))
+TAKES_OVER = Group("<fault>, the commanding system lost: system 2 takes over", ("RED-01", "RED-02"), (
+    f"every CI and BCU receives traction notch {NOTCH} over path 1 within {TAKEOVER} ms",
+    f"from {TAKEOVER} ms on every CI and BCU receives traction notch {NOTCH} over path 1"))
+OFF_THE_RING = Group("<fault>, car <car> off the ring: path 3 for it, path 1 for the rest", ("CMD-04", "NET-03"), (
+    f'the CI and BCU of car <car> receive traction step "{STEP}" over path 3 within {TAKEOVER} ms',
+    f"from {RIDE} ms on every CI and BCU outside car <car> receives traction notch {NOTCH} over path 1"))
+NO_MDM9 = Group("<fault>, car <car> without its MDM9: path 2 for it, path 1 for the rest", ("CMD-03",), (
+    f'the CI and BCU of car <car> receive traction step "{STEP}" over path 2 within {RIDE} ms',
+    f"from {RIDE} ms on every CI and BCU outside car <car> receives traction notch {NOTCH} over path 1"))
+GROUPS = (RIDES, TAKES_OVER, OFF_THE_RING, NO_MDM9)
+
+
+def fault_space(sut) -> tuple[list[Fault], list[tuple[str, str]]]:
+    """The single faults of the train the driver describes, and those left out with the reason."""
+    nodes = sut.ring_nodes()
+    faults = [Fault("span", (a, b)) for a, b in zip(nodes, nodes[1:] + nodes[:1])]
+    faults += [Fault("board", (f"{node}.{board}",)) for node in nodes for board in sut.boards(node)]
+    left_out = []
+    for supply in sut.supplies():
+        if supply.endswith(".desk"):
+            left_out.append((supply, "the desk's digital inputs: switching them off changes the driver's command "
+                             "itself (CMD-05), no network fault"))
+        else:
+            faults.append(Fault("supply", (supply,)))
+    return faults, left_out
+
+
+def _dead_boards(sut, fault: Fault) -> set[str]:
+    """The boards a fault takes out: a unit's supply feeds its boards but the command boards (CMD-01)."""
+    if fault.kind == "board":
+        return {fault.target}
+    if fault.kind == "supply":
+        unit, _, board = fault.target.rpartition(".")
+        if board in COMMAND_BOARDS:
+            return {fault.target}
+        return {f"{fault.target}.{b}" for b in sut.boards(fault.target) if b not in COMMAND_BOARDS}
+    return set()
+
+
+def expectation(sut, fault: Fault, commanding: str) -> tuple[Group, int | None]:
+    """What the design does under `fault` while `commanding` (a CCU system) puts the commands on the ring,
+    and the car it cuts off (None if none)."""
+    dead = _dead_boards(sut, fault)
+    if dead & {f"{commanding}.MDM8", f"{commanding}.TXC"}:
+        return TAKES_OVER, None
+    for board in sorted(dead):
+        unit, _, kind = board.rpartition(".")
+        if unit.endswith(".LCU") and kind in ("MDM8", "MDM9"):
+            return (OFF_THE_RING if kind == "MDM8" else NO_MDM9), int(unit.split(".")[0][3:])
+    return RIDES, None    # spans (NET-03), CPU3s (CMD-01: commands bypass them), RXCs, standby and far-cab systems
+
+
+@dataclass(frozen=True)
+class Campaign:
+    item: str
+    path: str
+    title: str
+    sets: int
+    given: str
+
+
+CAMPAIGNS = (
+    Campaign("F-NET-30", "features/function/network-transmission-redundancy/F-NET-30.feature",
+             "Single-fault campaign, 8-car set", 1, "Given an 8-car CRH2 train set"),
+    Campaign("F-NET-31", "features/function/network-transmission-redundancy/F-NET-31.feature",
+             "Single-fault campaign, two coupled 8-car sets", 2, "Given two 8-car CRH2 train sets coupled together"),
+)
+COMMANDING = "car1.CCU.sys1"     # the key is in cab 1; system 1 commands after power-up (RED-01)
+
+
+def render(campaign: Campaign, sut) -> str:
+    faults, left_out = fault_space(sut)
+    rows: dict[Group, list[tuple[Fault, int | None]]] = {group: [] for group in GROUPS}
+    for fault in faults:
+        group, car = expectation(sut, fault, COMMANDING)
+        rows[group].append((fault, car))
+    reqs = sorted({r for group in GROUPS if rows[group] for r in group.reqs} | {"TST-04"})
+    lines = [
+        "# Generated by `python -m outline campaign` from the SUT's own description (ring_nodes, boards, supplies);",
+        "# edit outline/campaign.py, not this file. tests/test_campaign.py fails when the two differ.",
+        f"@item:{campaign.item} @profile:crh2 @req:TST-04",
+        f"Feature: {campaign.item} {campaign.title}",
+        f"  Requirements: {', '.join(r for r in reqs if r != 'TST-04')}, TST-04.",
+        f"  Every single fault of the train's boards, ring spans and power supplies ({len(faults)}), one scenario",
+        "  each: at the instant of the fault the driver moves the traction notch; the command reaches every CI",
+        "  and BCU by the path the design gives that fault, within its bound; no device ever takes a wrong",
+        "  notch, and none goes without a command for longer than a takeover takes.",
+        "  Not in the campaign:",
+        *[f"  - {name}: {why}" for name, why in left_out],
+        "",
+        "  Background:",
+        f"    {campaign.given}",
+        "    And the driver has inserted the key in cab 1",
+        "    And the direction switch of cab 1 is at forward",
+        "    And the train has been powered up for 1000 ms",
+    ]
+    for group in GROUPS:
+        for kind, (when, columns, named) in KINDS.items():
+            members = [(fault, car) for fault, car in rows[group] if fault.kind == kind]
+            if members:
+                lines += ["", *_outline(campaign, group, when, columns, named, members)]
+    return "\n".join(lines) + "\n"
+
+
+def _outline(campaign: Campaign, group: Group, when: str, columns: tuple[str, ...], named: str,
+             members: list[tuple[Fault, int | None]]) -> list[str]:
+    with_car = "<car>" in group.title
+    table = [[*columns, *(["car"] if with_car else [])]]
+    table += [[*fault.values, *([str(car)] if with_car else [])] for fault, car in members]
+    widths = [max(len(row[i]) for row in table) for i in range(len(table[0]))]
+    return [
+        f"  {' '.join('@req:' + r for r in group.reqs)}",
+        f"  Scenario Outline: {campaign.item} {group.title.replace('<fault>', named)}",
+        f"    When {when}",
+        f"    And the driver moves the traction notch of cab 1 to {NOTCH}",
+        "    And 300 ms pass",
+        f"    Then {group.then[0]}",
+        *[f"    And {then}" for then in group.then[1:]],
+        f"    And no CI or BCU goes without a command for more than {TAKEOVER} ms",
+        f"    And no CI or BCU ever receives a traction notch other than 0 or {NOTCH}",
+        "    And no command over path 2 or 3 ever carried more than the traction and brake steps A and B",
+        "",
+        "    Examples:",
+        *["      | " + " | ".join(cell.ljust(w) for cell, w in zip(row, widths)) + " |" for row in table],
+    ]
+
+
+def _open(spec: str, sets: int):
+    from sut.backends import open_backend
+
+    sut = open_backend(spec, "crh2")
+    sut.configure(sets=sets, cars_per_set=8)
+    sut.power_on()
+    return sut
+
+
+def run(root: Path, spec: str, check: bool) -> int:
+    stale = []
+    for campaign in CAMPAIGNS:
+        sut = _open(spec, campaign.sets)
+        try:
+            text = render(campaign, sut)
+        finally:
+            sut.shutdown()
+        path = root / campaign.path
+        if check:
+            if not path.exists() or path.read_text(encoding="utf-8") != text:
+                stale.append(campaign.path)
+        else:
+            path.write_text(text, encoding="utf-8")
+            print(f"{campaign.path}: {len(fault_space_of(text))} faults")
+    for path in stale:
+        print(f"{path}:1: the campaign differs from the SUT's fault space; run `python -m outline campaign`",
+              file=sys.stderr)
+    return 1 if stale else 0
+
+
+def fault_space_of(text: str) -> list[tuple[str, ...]]:
+    """The rows of a campaign feature's Examples (header rows left out): one per fault it runs through."""
+    headers = {(*columns, *extra) for _when, columns, _named in KINDS.values() for extra in ((), ("car",))}
+    rows = [tuple(cell.strip() for cell in line.strip().strip("|").split("|"))
+            for line in text.splitlines() if line.startswith("      | ")]
+    return [row for row in rows if row not in headers]
