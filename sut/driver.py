@@ -303,6 +303,13 @@ class TrainDriver(abc.ABC):
     @abc.abstractmethod
     def trace(self) -> Trace: ...
 
+    def _trace_view(self, events: list) -> Trace:
+        """One Trace per event list, so that its index of kinds and sources is built once, not per query."""
+        view = self.__dict__.get("_view")
+        if view is None or view._events is not events:
+            view = self._view = Trace(events)
+        return view
+
     def ring_nodes(self) -> list[str]:
         """Node names in ring order (node number = position + 1)."""
         raise self._unsupported("ring_nodes")

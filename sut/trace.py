@@ -10,6 +10,7 @@ import csv
 import fnmatch
 import io
 import json
+from bisect import bisect_left
 from typing import Any, Callable, Iterable, Iterator, Mapping, NamedTuple
 
 
@@ -43,10 +44,39 @@ def _source_matcher(pattern: str | None) -> Callable[[str], bool]:
 
 
 class Trace:
-    """A read-only, growing view of a SUT's events, in time order."""
+    """A read-only, growing view of a SUT's events, in time order.
+
+    A query for one kind is answered from an index of the events by kind and source, extended as the list
+    grows (a list only grows: new events are appended; bulk.py orders only what it just appended), instead
+    of a walk over every event: Then steps ask per device, and a 16-car trace holds tens of thousands of
+    events. A backend keeps one view per event list (TrainDriver._trace_view) so the index is built once."""
 
     def __init__(self, events: list[TraceEvent]):
         self._events = events
+        self._indexed = 0
+        self._by_kind: dict[str, dict[str, list[int]]] = {}
+
+    def __getstate__(self) -> dict:
+        return {"_events": self._events}           # the index is rebuilt where it is needed, not pickled
+
+    def __setstate__(self, state: dict) -> None:
+        self.__init__(state["_events"])
+
+    def _positions(self, kind: str, source: str | None) -> list[int]:
+        """Positions of the events of `kind` from the matching sources, in list order."""
+        events, by_kind = self._events, self._by_kind
+        for i in range(self._indexed, len(events)):
+            ev = events[i]
+            by_kind.setdefault(ev.kind, {}).setdefault(ev.source, []).append(i)
+        self._indexed = len(events)
+        sources = by_kind.get(kind)
+        if not sources:
+            return []
+        match_src = _source_matcher(source)
+        lists = [positions for src, positions in sources.items() if match_src(src)]
+        if len(lists) == 1:
+            return lists[0]
+        return sorted(i for positions in lists for i in positions)
 
     def __len__(self) -> int:
         return len(self._events)
@@ -61,6 +91,8 @@ class Trace:
                until: int | None = None, **where: Any) -> list[TraceEvent]:
         """Events matching all given criteria. `kind` may end in `.*`; `source` is exact, a dotted prefix
         or a glob; `since`/`until` are inclusive times in us; `where` compares fields for equality."""
+        if kind is not None and not kind.endswith("*") and type(self) is Trace:
+            return self._select_indexed(kind, source, since, until, where)
         match_src = _source_matcher(source)
         prefix = kind[:-1] if kind and kind.endswith("*") else None
         out = []
@@ -72,6 +104,21 @@ class Trace:
             if not match_src(ev.source):
                 continue
             if any(ev.fields.get(k) != v for k, v in where.items()):
+                continue
+            out.append(ev)
+        return out
+
+    def _select_indexed(self, kind: str, source: str | None, since: int | None, until: int | None,
+                        where: dict[str, Any]) -> list[TraceEvent]:
+        events = self._events
+        positions = self._positions(kind, source)
+        start = bisect_left(positions, since, key=lambda i: events[i].t) if since else 0
+        out = []
+        for i in positions[start:] if start else positions:
+            ev = events[i]
+            if until is not None and ev.t > until:
+                break
+            if where and any(ev.fields.get(k) != v for k, v in where.items()):
                 continue
             out.append(ev)
         return out

@@ -23,7 +23,7 @@ Feature: F-NET-31 Single-fault campaign, two coupled 8-car sets
   Scenario Outline: F-NET-31 The ring link <a>~<b> cut: every CI and BCU stays on path 1
     When the ring link between "<a>" and "<b>" is cut
     And the driver moves the traction notch of cab 1 to 6
-    And 300 ms pass
+    And 200 ms pass
     Then every CI and BCU receives traction notch 6 over path 1 within 40 ms
     And from 40 ms on every CI and BCU receives traction notch 6 over path 1
     And no CI or BCU goes without a command for more than 100 ms
@@ -61,7 +61,7 @@ Feature: F-NET-31 Single-fault campaign, two coupled 8-car sets
   Scenario Outline: F-NET-31 Board <board> failed: every CI and BCU stays on path 1
     When board "<board>" fails
     And the driver moves the traction notch of cab 1 to 6
-    And 300 ms pass
+    And 200 ms pass
     Then every CI and BCU receives traction notch 6 over path 1 within 40 ms
     And from 40 ms on every CI and BCU receives traction notch 6 over path 1
     And no CI or BCU goes without a command for more than 100 ms
@@ -129,7 +129,7 @@ Feature: F-NET-31 Single-fault campaign, two coupled 8-car sets
   Scenario Outline: F-NET-31 Supply <supply> off: every CI and BCU stays on path 1
     When the supply "<supply>" is switched off
     And the driver moves the traction notch of cab 1 to 6
-    And 300 ms pass
+    And 200 ms pass
     Then every CI and BCU receives traction notch 6 over path 1 within 40 ms
     And from 40 ms on every CI and BCU receives traction notch 6 over path 1
     And no CI or BCU goes without a command for more than 100 ms
@@ -173,7 +173,7 @@ Feature: F-NET-31 Single-fault campaign, two coupled 8-car sets
   Scenario Outline: F-NET-31 Board <board> failed, the commanding system lost: system 2 takes over
     When board "<board>" fails
     And the driver moves the traction notch of cab 1 to 6
-    And 300 ms pass
+    And 200 ms pass
     Then every CI and BCU receives traction notch 6 over path 1 within 100 ms
     And from 100 ms on every CI and BCU receives traction notch 6 over path 1
     And no CI or BCU goes without a command for more than 100 ms
@@ -189,7 +189,7 @@ Feature: F-NET-31 Single-fault campaign, two coupled 8-car sets
   Scenario Outline: F-NET-31 Supply <supply> off, the commanding system lost: system 2 takes over
     When the supply "<supply>" is switched off
     And the driver moves the traction notch of cab 1 to 6
-    And 300 ms pass
+    And 200 ms pass
     Then every CI and BCU receives traction notch 6 over path 1 within 100 ms
     And from 100 ms on every CI and BCU receives traction notch 6 over path 1
     And no CI or BCU goes without a command for more than 100 ms
@@ -205,7 +205,7 @@ Feature: F-NET-31 Single-fault campaign, two coupled 8-car sets
   Scenario Outline: F-NET-31 Board <board> failed, car <car> off the ring: path 3 for it, path 1 for the rest
     When board "<board>" fails
     And the driver moves the traction notch of cab 1 to 6
-    And 300 ms pass
+    And 200 ms pass
     Then the CI and BCU of car <car> receive traction step "B" over path 3 within 100 ms
     And from 40 ms on every CI and BCU outside car <car> receives traction notch 6 over path 1
     And no CI or BCU goes without a command for more than 100 ms
@@ -235,7 +235,7 @@ Feature: F-NET-31 Single-fault campaign, two coupled 8-car sets
   Scenario Outline: F-NET-31 Supply <supply> off, car <car> off the ring: path 3 for it, path 1 for the rest
     When the supply "<supply>" is switched off
     And the driver moves the traction notch of cab 1 to 6
-    And 300 ms pass
+    And 200 ms pass
     Then the CI and BCU of car <car> receive traction step "B" over path 3 within 100 ms
     And from 40 ms on every CI and BCU outside car <car> receives traction notch 6 over path 1
     And no CI or BCU goes without a command for more than 100 ms
@@ -265,7 +265,7 @@ Feature: F-NET-31 Single-fault campaign, two coupled 8-car sets
   Scenario Outline: F-NET-31 Board <board> failed, car <car> without its MDM9: path 2 for it, path 1 for the rest
     When board "<board>" fails
     And the driver moves the traction notch of cab 1 to 6
-    And 300 ms pass
+    And 200 ms pass
     Then the CI and BCU of car <car> receive traction step "B" over path 2 within 40 ms
     And from 40 ms on every CI and BCU outside car <car> receives traction notch 6 over path 1
     And no CI or BCU goes without a command for more than 100 ms

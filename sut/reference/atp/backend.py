@@ -163,7 +163,7 @@ class ReferenceAtp(PickledState, TrainDriver):
 
     @property
     def trace(self) -> Trace:
-        return Trace(self._events)
+        return self._trace_view(self._events)
 
     # -- inputs and outputs ----------------------------------------------------------------------
     def set_input(self, name: str, value: Any) -> None:

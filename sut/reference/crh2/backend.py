@@ -331,7 +331,7 @@ class ReferenceTrain(PickledState, TrainDriver):
     # -- observations --------------------------------------------------------------------------
     @property
     def trace(self) -> Trace:
-        return Trace(self._kept_trace if self._kept_trace is not None else self.train.events)
+        return self._trace_view(self._kept_trace if self._kept_trace is not None else self.train.events)
 
     def ring_nodes(self) -> list[str]:
         return [n.name for n in self.train.ring.nodes]

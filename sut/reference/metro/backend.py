@@ -65,7 +65,7 @@ class ReferenceMetro(PickledState, TrainDriver):
 
     @property
     def trace(self) -> Trace:
-        return Trace(self._kept_trace if self._kept_trace is not None else self._train.events)
+        return self._trace_view(self._kept_trace if self._kept_trace is not None else self._train.events)
 
     def _mark(self, source: str, kind: str, **fields: Any) -> None:
         self._train.emit(source, kind, **fields)
