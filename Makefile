@@ -38,7 +38,11 @@ MUTANTS ?= 200
 SEED ?= 1
 MUTATE_STAMP := $(VENV)/.mutate-installed
 
-.PHONY: help report test check trace clean distclean mutate
+SHARDS ?= 4
+SHARD ?= 1
+SHARD_RESULTS := reports/shards
+
+.PHONY: help report test check trace clean distclean mutate shard merge durations
 
 help: ## list the targets
 	@echo "Train network conformance suite: CRH2, metro TCN, ATP (PYTEST_ARGS=... and SUT=... pass through to pytest)"
@@ -68,6 +72,22 @@ test: $(VENV_STAMP) $(NODE_STAMP) $(CHROMIUM) ## the project's own tests, then t
 mutate: $(VENV_STAMP) $(MUTATE_STAMP) ## mutation testing of the references (MUTANTS=200 SEED=1): kill rate per reference, reports/mutation.md
 	$(PY) -m outline.mutation --mutants $(MUTANTS) --seed $(SEED) $(if $(filter auto,$(JOBS)),,--jobs $(JOBS))
 
+shard: $(VENV_STAMP) ## one shard of the conformance run (SHARDS=4 SHARD=1, balanced by .test_durations): allure results in reports/shards/<SHARD>
+	@rm -rf $(SHARD_RESULTS)/$(SHARD) && mkdir -p $(SHARD_RESULTS)/$(SHARD)
+	$(PY) -m pytest features $(XDIST) --splits $(SHARDS) --group $(SHARD) --splitting-algorithm least_duration --alluredir $(SHARD_RESULTS)/$(SHARD) \
+		$(SUT_ARG) $(PYTEST_ARGS)
+
+merge: $(VENV_STAMP) $(NODE_STAMP) ## one report from every shard's results (reports/shards/*, copied from the machines that ran them): reports/html/index.html
+	@test -n "$$(ls -d $(SHARD_RESULTS)/*/ 2>/dev/null)" || { echo "no shard results under $(SHARD_RESULTS)/"; exit 1; }
+	@rm -rf $(HTML)
+	npx --no-install allure generate $(SHARD_RESULTS)/*/ --output $(HTML) >/dev/null
+	@$(PY) -m outline.allure_html $(HTML)/index.html
+	@echo "report: $(HTML)/index.html ($$(ls -d $(SHARD_RESULTS)/*/ | wc -l) shards)"
+	@$(PY) -m outline.summary $(SHARD_RESULTS)/*/
+
+durations: $(VENV_STAMP) ## record each scenario's duration in .test_durations (one process), which make shard balances by
+	$(PY) -m pytest features -p no:xdist -q --store-durations --durations-path .test_durations $(SUT_ARG)
+
 check: $(VENV_STAMP) ## python -m outline check: registry, features, steps and requirements agree
 	$(PY) -m outline check
 
@@ -75,7 +95,7 @@ trace: $(VENV_STAMP) ## python -m outline trace: requirement <-> item <-> scenar
 	$(PY) -m outline trace $(if $(wildcard $(RESULTS)),--results $(RESULTS))
 
 clean: ## remove reports and caches (keeps .venv and node_modules)
-	rm -rf $(RESULTS) $(HTML) reports/history.jsonl reports/traceability.* reports/mutation.* reports/conformance-*.html mutants .pytest_cache .hypothesis
+	rm -rf $(RESULTS) $(HTML) $(SHARD_RESULTS) reports/history.jsonl reports/traceability.* reports/mutation.* reports/conformance-*.html mutants .pytest_cache .hypothesis
 	find . -name __pycache__ -type d -not -path './$(VENV)/*' -not -path './node_modules/*' -prune -exec rm -rf {} +
 
 distclean: clean ## also remove .venv and node_modules

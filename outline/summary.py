@@ -31,10 +31,11 @@ class Summary:
         return sum(self.counts.values())
 
 
-def load_results(results_dir: str | Path) -> list[dict]:
-    """Latest result per test (historyId), so a rerun into the same directory does not count twice."""
+def load_results(*results_dirs: str | Path) -> list[dict]:
+    """Latest result per test (historyId), so a rerun into the same directory does not count twice; several
+    directories (the shards of one run, make merge) are read as one."""
     latest: dict[str, dict] = {}
-    for path in sorted(Path(results_dir).glob("*-result.json")):
+    for path in sorted(p for d in results_dirs for p in Path(d).glob("*-result.json")):
         try:
             data = json.loads(path.read_text(encoding="utf-8"))
         except (OSError, ValueError):
@@ -107,12 +108,14 @@ def format_summary(summary: Summary) -> str:
 
 def main(argv: list[str] | None = None) -> int:
     parser = argparse.ArgumentParser(prog="python -m outline.summary", description=__doc__.splitlines()[0])
-    parser.add_argument("results", nargs="?", default="reports/allure-results", help="allure results directory")
+    parser.add_argument("results", nargs="*", default=["reports/allure-results"],
+                        help="allure results directories (several: the shards of one run)")
     args = parser.parse_args(argv)
-    if not Path(args.results).is_dir():
-        print(f"no allure results in {args.results}", file=sys.stderr)
+    missing = [d for d in args.results if not Path(d).is_dir()]
+    if missing:
+        print(f"no allure results in {', '.join(missing)}", file=sys.stderr)
         return 1
-    print(format_summary(summarize(load_results(args.results))))
+    print(format_summary(summarize(load_results(*args.results))))
     return 0
 
 
