@@ -39,12 +39,31 @@ def _unregistered(feature: Feature, rel: str, registered: set[str]) -> list[Prob
     )
 
 
-def feature_paths(features_dir: str | Path) -> list[str]:
-    """Every `*.feature` under features_dir (recursively), relative to it, sorted; raises CollectError."""
+def _asked_items() -> set[str]:
+    """The items the running pytest selects with --item (none outside pytest)."""
+    if not CONFIG_STACK:
+        return set()
+    given = CONFIG_STACK[-1].getoption("item", default=None) or []
+    return {i.strip() for value in given for i in value.split(",") if i.strip()}
+
+
+def _on_request(feature: Feature) -> str | None:
+    """The item of a feature tagged @on_request (a campaign of thousands of scenarios), else None."""
+    names = {tag.name for tag in feature.tags}
+    if "on_request" not in names:
+        return None
+    return next((name.partition(":")[2] for name in names if name.startswith("item:")), "")
+
+
+def feature_paths(features_dir: str | Path, asked: set[str] | None = None) -> list[str]:
+    """Every `*.feature` under features_dir (recursively), relative to it, sorted; raises CollectError.
+    A feature tagged @on_request is left out unless its item is asked for (`asked`; by default the running
+    pytest's --item): collecting its thousands of scenarios would cost every other run seconds."""
     features_dir = Path(features_dir).resolve()
     root = features_dir.parent
     problems: list[Problem] = []
     registered = _registered_markers()
+    asked, skipped = (_asked_items() if asked is None else asked), set()
     for path in feature_files(features_dir):
         rel = path.relative_to(root).as_posix()
         try:
@@ -55,7 +74,10 @@ def feature_paths(features_dir: str | Path) -> list[str]:
         problems += lint_feature(feature, rel)[0]
         if registered is not None:
             problems += _unregistered(feature, rel, registered)
+        item = _on_request(feature)
+        if item is not None and item not in asked:
+            skipped.add(path)
     if problems:
         # CollectError is shown as its message alone, without a traceback through this module.
         raise pytest.Collector.CollectError("\n".join(map(str, problems)))
-    return [path.relative_to(features_dir).as_posix() for path in feature_files(features_dir)]
+    return [path.relative_to(features_dir).as_posix() for path in feature_files(features_dir) if path not in skipped]

@@ -18,19 +18,11 @@ import sys
 from dataclasses import dataclass
 from pathlib import Path
 
+from . import double_campaign
+from .fault_model import Fault, TrainShape
+
 NOTCH = 6
 STEP = "B"                     # notch 6 on the digital outputs of paths 2 and 3 (CMD-03/04)
-COMMAND_BOARDS = ("TXC", "RXC")    # boards with their own supply (CMD-01), named <unit>.<board>
-
-
-@dataclass(frozen=True)
-class Fault:
-    kind: str                  # span, board, supply
-    values: tuple[str, ...]    # the Examples row: (a, b) of a span, the board, the supply
-
-    @property
-    def target(self) -> str:
-        return "~".join(self.values)
 
 
 # Per kind of fault: the sentence the hand-written features use, its Examples columns, how a title names it.
@@ -89,22 +81,10 @@ def fault_space(sut) -> tuple[list[Fault], list[tuple[str, str]]]:
     return faults, left_out
 
 
-def _dead_boards(sut, fault: Fault) -> set[str]:
-    """The boards a fault takes out: a unit's supply feeds its boards but the command boards (CMD-01)."""
-    if fault.kind == "board":
-        return {fault.target}
-    if fault.kind == "supply":
-        unit, _, board = fault.target.rpartition(".")
-        if board in COMMAND_BOARDS:
-            return {fault.target}
-        return {f"{fault.target}.{b}" for b in sut.boards(fault.target) if b not in COMMAND_BOARDS}
-    return set()
-
-
-def expectation(sut, fault: Fault, commanding: str) -> tuple[Group, int | None]:
+def expectation(shape: TrainShape, fault: Fault, commanding: str) -> tuple[Group, int | None]:
     """What the design does under `fault` while `commanding` (a CCU system) puts the commands on the ring,
     and the car it cuts off (None if none)."""
-    dead = _dead_boards(sut, fault)
+    dead = shape.dead_boards([fault])
     if dead & {f"{commanding}.MDM8", f"{commanding}.TXC"}:
         return TAKES_OVER, None
     for board in sorted(dead):
@@ -121,6 +101,7 @@ class Campaign:
     title: str
     sets: int
     given: str
+    pairs: bool = False        # every pair of single faults (outline/double_campaign.py), not each one
 
 
 CAMPAIGNS = (
@@ -128,6 +109,8 @@ CAMPAIGNS = (
              "Single-fault campaign, 8-car set", 1, "Given an 8-car CRH2 train set"),
     Campaign("F-NET-31", "features/function/network-transmission-redundancy/F-NET-31.feature",
              "Single-fault campaign, two coupled 8-car sets", 2, "Given two 8-car CRH2 train sets coupled together"),
+    Campaign("F-NET-32", "features/function/network-transmission-redundancy/F-NET-32.feature",
+             "Double-fault campaign, 8-car set", 1, "Given an 8-car CRH2 train set", pairs=True),
 )
 COMMANDING = "car1.CCU.sys1"     # the key is in cab 1; system 1 commands after power-up (RED-01)
 
@@ -135,8 +118,9 @@ COMMANDING = "car1.CCU.sys1"     # the key is in cab 1; system 1 commands after 
 def render(campaign: Campaign, sut) -> str:
     faults, left_out = fault_space(sut)
     rows: dict[Group, list[tuple[Fault, int | None]]] = {group: [] for group in GROUPS}
+    shape = TrainShape.of(sut)
     for fault in faults:
-        group, car = expectation(sut, fault, COMMANDING)
+        group, car = expectation(shape, fault, COMMANDING)
         rows[group].append((fault, car))
     reqs = sorted({r for group in GROUPS if rows[group] for r in group.reqs} | {"TST-04"})
     lines = [
@@ -203,7 +187,12 @@ def run(root: Path, spec: str, check: bool) -> int:
     for campaign in CAMPAIGNS:
         sut = _open(spec, campaign.sets)
         try:
-            text = render(campaign, sut)
+            if campaign.pairs:
+                faults, _left_out = fault_space(sut)
+                text = double_campaign.render(campaign.item, campaign.title, campaign.given, faults,
+                                              TrainShape.of(sut))
+            else:
+                text = render(campaign, sut)
         finally:
             sut.shutdown()
         path = root / campaign.path
@@ -212,7 +201,7 @@ def run(root: Path, spec: str, check: bool) -> int:
                 stale.append(campaign.path)
         else:
             path.write_text(text, encoding="utf-8")
-            print(f"{campaign.path}: {len(fault_space_of(text))} faults")
+            print(f"{campaign.path}: {len(fault_space_of(text))} {'pairs of faults' if campaign.pairs else 'faults'}")
     for path in stale:
         print(f"{path}:1: the campaign differs from the SUT's fault space; run `python -m outline campaign`",
               file=sys.stderr)
@@ -221,7 +210,6 @@ def run(root: Path, spec: str, check: bool) -> int:
 
 def fault_space_of(text: str) -> list[tuple[str, ...]]:
     """The rows of a campaign feature's Examples (header rows left out): one per fault it runs through."""
-    headers = {(*columns, *extra) for _when, columns, _named in KINDS.values() for extra in ((), ("car",))}
     rows = [tuple(cell.strip() for cell in line.strip().strip("|").split("|"))
             for line in text.splitlines() if line.startswith("      | ")]
-    return [row for row in rows if row not in headers]
+    return [row for row in rows if "." in row[0]]          # a header names columns; a fault names a unit

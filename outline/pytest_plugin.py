@@ -28,6 +28,7 @@ MARKERS = (
     "profile(name): train/SUT profile the scenario needs (from @profile:<name>)",
     "tentative: checks a project decision where the sources are ambiguous",
     "pending: written but not yet runnable; skipped with reason 'pending'",
+    "on_request: a feature bound only when its item is asked for with --item (the double-fault campaign)",
     "allure_label: allure label marker",
     "allure_link: allure link marker",
 )
@@ -72,8 +73,8 @@ def pytest_bdd_apply_tag(tag: str, function):
         pytest.mark.pending(function)
         pytest.mark.skip(reason="pending")(function)
         return True
-    if value == "tentative":
-        pytest.mark.tentative(function)
+    if value in ("tentative", "on_request"):
+        getattr(pytest.mark, value)(function)
         return True
     return None  # pytest-bdd's default: getattr(pytest.mark, tag); --strict-markers rejects unregistered ones
 

@@ -222,11 +222,55 @@ def _(sut: TrainDriver) -> None:
     _only_steps_a_b([ev for ev in sut.trace.select(kind="cmd.in") if ev["path"] in (2, 3)])
 
 
+def _paths(text: str) -> list[int | None]:
+    """"1,1,3,-,2,1,1,1": per car in order, the path its CI and BCU take a command by ("-": none)."""
+    return [None if p.strip() == "-" else int(p) for p in text.split(",")]
+
+
+def _by_car(sut: TrainDriver, paths: list[int | None]) -> dict[int, int | None]:
+    cars = analysis.cars(sut)
+    assert len(paths) == len(cars), f"{len(paths)} paths for the {len(cars)} cars {cars}"
+    return dict(zip(cars, paths))
+
+
+@then(parsers.parse('各车的CI和BCU在{bound:g} ms内按路径{paths}收到牵引级位{notch:d}或牵引级位"{step}"'),
+      converters={"paths": _paths})
+@then(parsers.parse('car by car the CI and BCU receive traction notch {notch:d} or traction step "{step}" by the '
+                    "paths {paths} within {bound:g} ms"), converters={"paths": _paths})
+def _(sut: TrainDriver, t_action: int, notch: int, step: str, paths: list, bound: float) -> None:
+    for car, path in _by_car(sut, paths).items():
+        devices = analysis.command_devices(sut, car)
+        if path == 1:
+            analysis.expect_taken(sut, devices, t_action, bound, f"notch {notch} over path 1", path=1, traction=notch)
+        elif path is not None:
+            analysis.expect_taken(sut, devices, t_action, bound, f"traction step {step} over path {path}",
+                                  path=path, traction_step=step)
+            # Its MDM9 is dead or has no fresh ring command: a path 1 command now would contradict the step.
+            _nothing_over(sut, devices, t_action + us(bound), 1)
+        else:        # the design leaves the car no path: the new command must not reach it by any
+            got = [ev for d in devices for ev in sut.trace.select(kind="cmd.in", source=d, since=t_action)
+                   if ev["traction"] == notch or ev["traction_step"] == step]
+            assert not got, f"car {car} has no path left, yet took the command: {analysis.describe(got)}"
+
+
+@then(parsers.parse("路径{paths}中有路径的车的CI和BCU都不会超过{bound:g} ms收不到命令"), converters={"paths": _paths})
+@then(parsers.parse("no CI or BCU of a car with a path in {paths} goes without a command for more than {bound:g} ms"),
+      converters={"paths": _paths})
+def _(sut: TrainDriver, t_action: int, paths: list, bound: float) -> None:
+    served = [d for car, path in _by_car(sut, paths).items() if path is not None
+              for d in analysis.command_devices(sut, car)]
+    _no_gap(sut, served, t_action, bound)
+
+
 @then(parsers.parse("没有CI或BCU超过{bound:g} ms收不到命令"))
 @then(parsers.parse("no CI or BCU goes without a command for more than {bound:g} ms"))
 def _(sut: TrainDriver, t_action: int, bound: float) -> None:
-    for device in analysis.command_devices(sut):
-        times = [t_action] + [ev.t for ev in sut.trace.select(kind="cmd.in", source=device, since=t_action)]
+    _no_gap(sut, analysis.command_devices(sut), t_action, bound)
+
+
+def _no_gap(sut: TrainDriver, devices: list[str], since: int, bound: float) -> None:
+    for device in devices:
+        times = [since] + [ev.t for ev in sut.trace.select(kind="cmd.in", source=device, since=since)]
         times.append(sut.now_us)
         worst = max(analysis.intervals(times))
         assert worst <= us(bound), f"{device} went {ms(worst)} without a command (limit {bound} ms)"

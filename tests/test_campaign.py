@@ -8,7 +8,8 @@ from pathlib import Path
 import pytest
 
 from outline import campaign
-from outline.campaign import NO_MDM9, OFF_THE_RING, RIDES, TAKES_OVER, Fault
+from outline.campaign import NO_MDM9, OFF_THE_RING, RIDES, TAKES_OVER
+from outline.fault_model import Fault, TrainShape
 from sut.backends import open_backend
 from tests.test_faulty_variants import ROOT
 
@@ -67,4 +68,58 @@ def test_a_campaign_that_misses_a_fault_is_reported_with_its_file(tmp_path: Path
     ("board", ("car5.LCU.RXC",), RIDES, None),
 ])
 def test_each_fault_gets_the_designs_answer(eight_cars, kind, target, group, car) -> None:
-    assert campaign.expectation(eight_cars, Fault(kind, target), campaign.COMMANDING) == (group, car)
+    assert campaign.expectation(TrainShape.of(eight_cars), Fault(kind, target), campaign.COMMANDING) == (group, car)
+
+
+def test_the_single_fault_answers_are_the_fault_models(eight_cars) -> None:
+    """The campaign's groups, read car by car, are what outline/fault_model.py gives for each single fault."""
+    shape = TrainShape.of(eight_cars)
+    faults, _left_out = campaign.fault_space(eight_cars)
+    for fault in faults:
+        group, car = campaign.expectation(shape, fault, campaign.COMMANDING)
+        off = {OFF_THE_RING: 3, NO_MDM9: 2}.get(group)
+        want = {c: (off if c == car else 1) for c in shape.cars}
+        assert shape.paths([fault]) == want, fault
+
+
+# -- the fault model (outline/fault_model.py) on double faults, against the articles read by hand -------------
+def _paths(shape: TrainShape, *faults: Fault) -> str:
+    return "".join("-" if p is None else str(p) for _car, p in sorted(shape.paths(faults).items()))
+
+
+def _span(a: str, b: str) -> Fault:
+    return Fault("span", (a, b))
+
+
+def _board(name: str) -> Fault:
+    return Fault("board", (name,))
+
+
+def test_the_fault_model_answers_double_faults_as_the_articles_do(eight_cars) -> None:
+    shape = TrainShape.of(eight_cars)
+    # NET-03 and CMD-04: two cuts split the ring; the segment without the commanding CCU falls back to path 3.
+    assert _paths(shape, _span("car3.LCU", "car4.LCU"), _span("car6.LCU", "car7.LCU")) == "11133311"
+    # RED-02: system 1 cut off from system 2 on both sides: each commands the segment it is in, on path 1.
+    assert _paths(shape, _span("car1.CCU.sys1", "car1.CCU.sys2"), _span("car5.LCU", "car6.LCU")) == "11111111"
+    # Both modems of the cab: nothing enters the ring, system 1's TXC still drives the self-diagnostic line.
+    assert _paths(shape, _board("car1.CCU.sys1.MDM8"), _board("car1.CCU.sys2.MDM8")) == "33333333"
+    # DECISIONS.md: a standby deaf to the ring does not take over, so with system 1's TXC dead nothing commands.
+    assert _paths(shape, _board("car1.CCU.sys1.TXC"), _board("car1.CCU.sys2.MDM8")) == "--------"
+    # CMD-03 and CMD-01: a car without its MDM9 and its RXC has no path left; the others ride on.
+    assert _paths(shape, _board("car5.LCU.MDM9"), Fault("supply", ("car5.LCU.RXC",))) == "1111-111"
+    # A dead MDM8 and a cut: car 3's LCU is off the ring, and car 2, between the cut and car 3, hears nobody.
+    assert _paths(shape, _board("car3.LCU.MDM8"), _span("car1.LCU", "car2.LCU")) == "13311111"
+
+
+def test_the_double_fault_campaign_is_bound_only_when_asked_for() -> None:
+    import subprocess
+    import sys
+
+    def collected(*args: str) -> str:
+        run = subprocess.run([sys.executable, "-m", "pytest", "features", "-q", "-p", "no:xdist",
+                              "-p", "no:cacheprovider", "--collect-only", *args],
+                             cwd=ROOT, capture_output=True, text=True, timeout=300)
+        return run.stdout.strip().splitlines()[-1]
+
+    assert "test_fnet32" not in collected()
+    assert collected("--item", "F-NET-32").startswith("3160/")

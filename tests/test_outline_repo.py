@@ -27,7 +27,10 @@ def test_every_feature_file_is_bound():
     from outline.binding import feature_paths
     from outline.registry import load_registry
 
-    bound = {f"features/{p}" for p in feature_paths(REPO.features)}
-    listed = {path for item in load_registry(REPO.registry).items.values()
-              for path in (item.feature, *item.translations)}
+    registry = load_registry(REPO.registry)
+    listed = {path for item in registry.items.values() for path in (item.feature, *item.translations)}
+    bound = {f"features/{p}" for p in feature_paths(REPO.features, asked=set(registry.items))}
     assert bound == listed
+    # Unasked, the @on_request campaign is left out, and only it.
+    by_default = {f"features/{p}" for p in feature_paths(REPO.features, asked=set())}
+    assert listed - by_default == {registry.items["F-NET-32"].feature}

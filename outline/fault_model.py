@@ -1,0 +1,102 @@
+"""What the CRH2 design does under a set of faults: by which path each car's CI and BCU get the driver's command.
+
+The campaigns' expectations (outline/campaign.py, outline/double_campaign.py) come from here, and this is the
+articles' design, not the reference's code:
+- the ring (NET-03): a node takes part while its MDM8 lives (its unit's supply on); a span carries frames while
+  it is not cut and both its nodes take part; broadcasts go both ways, so a node hears every node it is joined
+  to through such spans;
+- the commanding cab's systems (RED-01/02): system 1 commands while its TXC lives; system 2 takes over when it
+  hears nothing from system 1 on the ring, if its TXC lives and it hears the ring at all (sut/reference/
+  DECISIONS.md "Redundancy": a standby deaf to the ring would otherwise take over blindly). Commands enter
+  the ring where a commanding system's MDM8 lives, and the self-diagnostic line from a commanding TXC;
+- a car (CMD-01..04): path 1 when its LCU hears a commanding system on the ring and its MDM9 lives; path 2
+  when it hears one but its MDM9 is dead and its RXC lives; else path 3 when its RXC lives and a commanding
+  TXC drives the self-diagnostic line; else nothing reaches it. TXC and RXC have their own supplies (CMD-01).
+"""
+from __future__ import annotations
+
+from dataclasses import dataclass
+
+COMMAND_BOARDS = ("TXC", "RXC")    # boards with their own supply (CMD-01), named <unit>.<board>
+
+
+@dataclass(frozen=True)
+class Fault:
+    kind: str                  # span, board, supply
+    values: tuple[str, ...]    # (a, b) of a span, the board, the supply
+
+    @property
+    def target(self) -> str:
+        return "~".join(self.values)
+
+
+class TrainShape:
+    """What the driver says a CRH2 train is made of: ring nodes in order, their boards, the LCU cars."""
+
+    def __init__(self, nodes: list[str], boards: dict[str, list[str]], supplies: list[str], cab: int = 1):
+        self.nodes = nodes
+        self.boards = boards
+        self.supplies = supplies
+        self.cars = sorted(int(n.split(".")[0][3:]) for n in nodes if n.endswith(".LCU"))
+        self.systems = (f"car{cab}.CCU.sys1", f"car{cab}.CCU.sys2")     # the commanding cab's CCU
+
+    @classmethod
+    def of(cls, sut) -> "TrainShape":
+        nodes = sut.ring_nodes()
+        return cls(nodes, {n: sut.boards(n) for n in nodes}, sut.supplies())
+
+    def dead_boards(self, faults: tuple[Fault, ...] | list[Fault]) -> set[str]:
+        """The boards the faults take out: a unit's supply feeds its boards but the command boards."""
+        dead: set[str] = set()
+        for fault in faults:
+            if fault.kind == "board":
+                dead.add(fault.values[0])
+            elif fault.kind == "supply":
+                supply = fault.values[0]
+                if supply.rpartition(".")[2] in COMMAND_BOARDS:
+                    dead.add(supply)
+                elif supply in self.boards:
+                    dead |= {f"{supply}.{b}" for b in self.boards[supply] if b not in COMMAND_BOARDS}
+        return dead
+
+    def paths(self, faults: tuple[Fault, ...] | list[Fault]) -> dict[int, int | None]:
+        """Car -> the path its CI and BCU get the command by (1, 2, 3), None if the design leaves it none."""
+        dead = self.dead_boards(faults)
+        cut = {frozenset(f.values) for f in faults if f.kind == "span"}
+        nodes = self.nodes
+        on = {n: f"{n}.MDM8" not in dead for n in nodes}
+
+        def joined(a: str, b: str) -> bool:
+            return frozenset((a, b)) not in cut and on[a] and on[b]
+
+        def heard_from(start: str) -> set[str]:
+            heard, i0 = {start}, nodes.index(start)
+            for step in (1, -1):
+                i = i0
+                while (j := (i + step) % len(nodes)) != i0 and joined(nodes[i], nodes[j]):
+                    heard.add(nodes[j])
+                    i = j
+            return heard
+
+        sys1, sys2 = self.systems
+        txc1, txc2 = f"{sys1}.TXC" not in dead, f"{sys2}.TXC" not in dead
+        on_ring1 = txc1 and on[sys1]
+        i2 = nodes.index(sys2)
+        hears_ring2 = on[sys2] and (joined(sys2, nodes[i2 - 1]) or joined(sys2, nodes[(i2 + 1) % len(nodes)]))
+        takes_over = txc2 and hears_ring2 and not (on_ring1 and sys2 in heard_from(sys1))
+        entering = [s for s, ok in ((sys1, on_ring1), (sys2, takes_over and on[sys2])) if ok]
+        heard = set().union(*(heard_from(s) for s in entering))
+        self_diagnostic = txc1 or takes_over
+        out: dict[int, int | None] = {}
+        for car in self.cars:
+            lcu = f"car{car}.LCU"
+            rxc = f"{lcu}.RXC" not in dead
+            if lcu in heard and f"{lcu}.MDM9" not in dead:
+                out[car] = 1
+            elif lcu in heard and rxc:
+                out[car] = 2
+            elif rxc and self_diagnostic:
+                out[car] = 3
+            else:
+                out[car] = None
+        return out
