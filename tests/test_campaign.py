@@ -11,6 +11,7 @@ from outline import campaign
 from outline.campaign import NO_MDM9, OFF_THE_RING, RIDES, TAKES_OVER
 from outline.fault_model import Fault, TrainShape
 from sut.backends import open_backend
+from tests.variants import DOUBLE_ONLY
 from tests.test_faulty_variants import ROOT
 
 
@@ -123,3 +124,22 @@ def test_the_double_fault_campaign_is_bound_only_when_asked_for() -> None:
 
     assert "test_fnet32" not in collected()
     assert collected("--item", "F-NET-32").startswith("3160/")
+
+
+# -- faulty variants that only a double fault exposes (tests/variants.py DOUBLE_ONLY) -------------------------
+@pytest.mark.cost(15)
+@pytest.mark.parametrize("variant", DOUBLE_ONLY, ids=lambda v: v.__name__)
+def test_a_double_fault_only_variant_passes_the_single_fault_campaigns_and_fails_the_double(variant) -> None:
+    import subprocess
+    import sys
+
+    def run(items: str, *args: str) -> subprocess.CompletedProcess:
+        return subprocess.run([sys.executable, "-m", "pytest", "features", "-q", "-p", "no:xdist", "-p",
+                               "no:cacheprovider", f"--item={items}", f"--sut=tests.variants:{variant.__name__}",
+                               *args], cwd=ROOT, capture_output=True, text=True, timeout=600)
+
+    single = run("F-NET-30,F-NET-31")
+    assert single.returncode == 0, f"a single fault exposed it:\n{single.stdout[-2000:]}"
+    double = run("F-NET-32", "-x")          # the first rejecting pair is enough
+    assert double.returncode == 1 and "FAILED features/test_outline.py::test_fnet32" in double.stdout, \
+        double.stdout[-2000:]

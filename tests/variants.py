@@ -76,6 +76,25 @@ class RxcOnTheLcuSupply(ReferenceTrain):
     BEHAVIOUR = {"rxc_own_supply": False}
 
 
+# -- faulty only under double faults: an LCU whose MDM8 lives but hears no commanding CCU (a split ring) -------
+class StaleCommandsWhileTheRingIsHeard(ReferenceTrain):
+    """FS-02: an LCU whose MDM8 lives keeps handing CI and BCU its last ring command however old, as if a
+    live modem meant a live command: it talks stale on path 1 while its car should be on path 3."""
+    BEHAVIOUR = {"ring_commands_expire": False}
+
+
+class FullNotchesOnPath3WithALiveModem(ReferenceTrain):
+    """CMD-04: the RXC drives full notches on path 3 when its LCU's MDM8 lives (taking the ring's silence for a
+    moment's gap): more than the A/B steps on the backup path."""
+    BEHAVIOUR = {"path3_steps_only": False}
+
+
+class RxcRepeatsTheRing(ReferenceTrain):
+    """CMD-04: on a silent ring, an RXC whose MDM8 lives answers every self-diagnostic command with the last
+    ring command again (over path 2) instead of taking the line's."""
+    BEHAVIOUR = {"rxc_trusts_selfdiag": False}
+
+
 class LampsFromOneTxc(ReferenceTrain):
     """RED-03: only system 1's TXC drives the cab lamps."""
     BEHAVIOUR = {"lamps_parallel": False}
@@ -375,6 +394,10 @@ class RuggedBoards(ReferenceTrain):
     """Rated beyond the standards: 20 ms hold-up, -40 .. +85 degC, a 150 ms restart."""
     ENVIRONMENT = {"hold_up_us": 20 * MS, "temp_lo_c": -40.0, "temp_hi_c": 85.0, "restart_us": 150 * MS}
 
+
+# Faulty under double faults only (issue 16): the single-fault campaigns pass them, the double-fault one
+# (F-NET-32, run on request) must reject them: tests/test_campaign.py.
+DOUBLE_ONLY = [StaleCommandsWhileTheRingIsHeard, FullNotchesOnPath3WithALiveModem, RxcRepeatsTheRing]
 
 IN_BAND = [HoldCountedToSend, FasterNodes, CommandsEvery12ms, EarlierFallback, PipeTripAt585, DoorBandsNarrow,
            RuggedBoards]

@@ -48,6 +48,10 @@ class Behaviour:
     lamps_parallel: bool = True           # RED-03 both TXCs drive the cab lamps
     cmd_bypass_cpu3: bool = True          # CMD-01 commands do not pass through CPU3
     rxc_own_supply: bool = True           # CMD-01 the RXC has its own supply, not the LCU's
+    # Three that only a ring split shows (an LCU whose MDM8 lives but hears no commanding CCU):
+    ring_commands_expire: bool = True     # FS-02 a ring command goes stale (50 ms), heard ring or not
+    path3_steps_only: bool = True         # CMD-04 path 3 carries A/B steps, MDM8 alive or not
+    rxc_trusts_selfdiag: bool = True      # CMD-04 a silent ring hands the RXC to the self-diagnostic line
     standby_transmits: bool = False       # RED-02 system 2 only monitors while system 1 is healthy
     block_grant_required: bool = True     # PRO-06 no block transfer before the grant
     ilk08_ignored: tuple[str, ...] = ()   # ILK-08 conditions a faulty variant forgets to check

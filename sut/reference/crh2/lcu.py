@@ -30,6 +30,7 @@ class Rxc:
         self.group2 = Board(f"{self.name}.group2", supply)
         self.failsafe = False
         self.last_ring_us = 0           # power-up counts as "just heard": no fallback in the first 50 ms
+        self.last_ring: dict | None = None
         self.source = "idle"
 
     def _set_source(self, source: str) -> None:
@@ -52,6 +53,8 @@ class Rxc:
         if not self._checked():
             return
         self.last_ring_us = self.train.kernel.now
+        if not self.train.cfg.behaviour.rxc_trusts_selfdiag:
+            self.last_ring = fields                      # faulty variants only (from_selfdiag)
         if mdm9_ok:
             self._set_source("idle")
         else:
@@ -62,11 +65,17 @@ class Rxc:
         if not self._checked():
             return
         if self.train.kernel.now - self.last_ring_us >= self.train.cfg.timing.rxc_fallback_us:
+            if (not self.train.cfg.behaviour.rxc_trusts_selfdiag and self.lcu.mdm8.alive
+                    and self.last_ring is not None):
+                self._drive(self.last_ring, path=2)      # faulty variants only: the last ring command again
+                return
             self._set_source("selfdiag")
             self._drive(fields, path=3)
 
     def _drive(self, fields: dict, path: int) -> None:
-        steps_only = self.train.cfg.behaviour.do_steps_only
+        behaviour = self.train.cfg.behaviour
+        steps_only = behaviour.do_steps_only and (behaviour.path3_steps_only or path != 3
+                                                  or not self.lcu.mdm8.alive)
         for device in self.lcu.command_devices:
             if steps_only:
                 device.take(path, traction=None, brake=None, traction_step=to_steps(fields["traction"], "traction"),
@@ -129,7 +138,10 @@ class Lcu(RingNode):
 
     def fresh_command(self) -> dict | None:
         """The last ring command, if it is still fresh enough to act on."""
-        if self.latest is None or self.kernel.now - self.latest_us >= self.train.cfg.timing.command_stale_us:
+        if self.latest is None:
+            return None
+        if self.kernel.now - self.latest_us >= self.train.cfg.timing.command_stale_us and (
+                self.train.cfg.behaviour.ring_commands_expire or not self.mdm8.alive):
             return None
         return self.latest
 
