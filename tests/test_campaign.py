@@ -127,9 +127,10 @@ def test_the_double_fault_campaign_is_bound_only_when_asked_for() -> None:
 
 
 # -- faulty variants that only a double fault exposes (tests/variants.py DOUBLE_ONLY) -------------------------
-@pytest.mark.cost(15)
+@pytest.mark.cost(8)
 @pytest.mark.parametrize("variant", DOUBLE_ONLY, ids=lambda v: v.__name__)
-def test_a_double_fault_only_variant_passes_the_single_fault_campaigns_and_fails_the_double(variant) -> None:
+def test_a_double_fault_only_variant_passes_the_single_fault_campaign_and_fails_the_double(variant) -> None:
+    """Both on the 8-car set: every single fault (F-NET-30) passes, some pair of them (F-NET-32) rejects."""
     import subprocess
     import sys
 
@@ -138,7 +139,7 @@ def test_a_double_fault_only_variant_passes_the_single_fault_campaigns_and_fails
                                "no:cacheprovider", f"--item={items}", f"--sut=tests.variants:{variant.__name__}",
                                *args], cwd=ROOT, capture_output=True, text=True, timeout=600)
 
-    single = run("F-NET-30,F-NET-31")
+    single = run("F-NET-30")
     assert single.returncode == 0, f"a single fault exposed it:\n{single.stdout[-2000:]}"
     double = run("F-NET-32", "-x")          # the first rejecting pair is enough
     assert double.returncode == 1 and "FAILED features/test_outline.py::test_fnet32" in double.stdout, \
