@@ -42,7 +42,7 @@ SHARDS ?= 4
 SHARD ?= 1
 SHARD_RESULTS := reports/shards
 
-CAMPAIGN_ITEMS := F-NET-30,F-NET-31,F-NET-32
+CAMPAIGN_ITEMS := F-NET-30,F-NET-31,F-NET-32,F-NET-33
 
 .PHONY: help report test check trace clean distclean mutate shard merge durations campaign
 
@@ -74,7 +74,7 @@ test: $(VENV_STAMP) $(NODE_STAMP) $(CHROMIUM) ## the project's own tests, then t
 mutate: $(VENV_STAMP) $(MUTATE_STAMP) ## mutation testing of the references (MUTANTS=200 SEED=1): kill rate per reference, reports/mutation.md
 	$(PY) -m outline.mutation --mutants $(MUTANTS) --seed $(SEED) $(if $(filter auto,$(JOBS)),,--jobs $(JOBS))
 
-campaign: ## the fault campaigns in full (single faults on 8 and 16 cars, every double fault on 8), then the report as make report
+campaign: ## the fault campaigns in full (every single and every double fault, 8 and 16 cars), then the report as make report
 	@$(MAKE) --no-print-directory report PYTEST_ARGS="--item $(CAMPAIGN_ITEMS) $(PYTEST_ARGS)"
 
 shard: $(VENV_STAMP) ## one shard of the conformance run (SHARDS=4 SHARD=1, balanced by .test_durations): allure results in reports/shards/<SHARD>

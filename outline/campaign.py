@@ -101,7 +101,7 @@ class Campaign:
     title: str
     sets: int
     given: str
-    pairs: bool = False        # every pair of single faults (outline/double_campaign.py), not each one
+    pairs: str = ""            # the single-fault campaign whose faults it pairs (outline/double_campaign.py)
 
 
 CAMPAIGNS = (
@@ -110,7 +110,10 @@ CAMPAIGNS = (
     Campaign("F-NET-31", "features/function/network-transmission-redundancy/F-NET-31.feature",
              "Single-fault campaign, two coupled 8-car sets", 2, "Given two 8-car CRH2 train sets coupled together"),
     Campaign("F-NET-32", "features/function/network-transmission-redundancy/F-NET-32.feature",
-             "Double-fault campaign, 8-car set", 1, "Given an 8-car CRH2 train set", pairs=True),
+             "Double-fault campaign, 8-car set", 1, "Given an 8-car CRH2 train set", pairs="F-NET-30"),
+    Campaign("F-NET-33", "features/function/network-transmission-redundancy/F-NET-33.feature",
+             "Double-fault campaign, two coupled 8-car sets", 2, "Given two 8-car CRH2 train sets coupled together",
+             pairs="F-NET-31"),
 )
 COMMANDING = "car1.CCU.sys1"     # the key is in cab 1; system 1 commands after power-up (RED-01)
 
@@ -190,7 +193,7 @@ def run(root: Path, spec: str, check: bool) -> int:
             if campaign.pairs:
                 faults, _left_out = fault_space(sut)
                 text = double_campaign.render(campaign.item, campaign.title, campaign.given, faults,
-                                              TrainShape.of(sut))
+                                              TrainShape.of(sut), campaign.pairs)
             else:
                 text = render(campaign, sut)
         finally:

@@ -25,7 +25,7 @@ def paths_cell(paths: dict[int, int | None]) -> str:
     return ",".join("-" if p is None else str(p) for _car, p in sorted(paths.items()))
 
 
-def render(item: str, title: str, given: str, faults: list[Fault], shape: TrainShape) -> str:
+def render(item: str, title: str, given: str, faults: list[Fault], shape: TrainShape, singles: str) -> str:
     outlines: dict[tuple[str, str], list[tuple[Fault, Fault]]] = {}
     for pair in combinations(faults, 2):
         first, second = sorted(pair, key=lambda f: KIND_ORDER.index(f.kind))
@@ -36,7 +36,7 @@ def render(item: str, title: str, given: str, faults: list[Fault], shape: TrainS
         f"@item:{item} @profile:crh2 @req:TST-04 @on_request",
         f"Feature: {item} {title}",
         "  Requirements: NET-03, CMD-01, CMD-02, CMD-03, CMD-04, RED-01, RED-02, TST-04.",
-        f"  Every pair of the {len(faults)} single faults of F-NET-30 ({sum(map(len, outlines.values()))} pairs),"
+        f"  Every pair of the {len(faults)} single faults of {singles} ({sum(map(len, outlines.values()))} pairs),"
         " one scenario each, run",
         "  on request (`--item " + item + "`, `make campaign`). At the instant of the faults the driver moves the",
         "  traction notch; column `paths` gives, car 1 first, the path by which that car's CI and BCU must then take",
