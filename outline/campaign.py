@@ -1,12 +1,13 @@
 """Fault campaigns (issue 16): every single fault of a CRH2 train's boards, ring spans and power supplies, one
-scenario each, generated from what the SUT says it is made of.
+scenario each, generated from what the SUT says it is made of (and every pair of them: outline/double_campaign.py).
 
 `python -m outline campaign` opens the SUT through its driver (the reference by default), reads the fault
 space from it (`ring_nodes`: the spans between neighbours; `boards`; `supplies`), and writes each campaign's
-feature file: one Scenario Outline whose Examples are the faults, grouped by what the design says the train
-does under them. The expectation of each group is the articles' (the requirement IDs on the Examples), not a
-recording of what the reference did, so a reference that behaves otherwise fails the campaign. Faults outside
-the campaign are listed in the feature with the reason. `--check` compares instead of writing (the project's
+feature file: Scenario Outlines whose Examples are the faults, grouped by what the design says the train
+does under them. The expectation of each group is the articles' (the requirement IDs on its outline; the
+groups equal outline/fault_model.py: tests/test_campaign.py), not a recording of what the reference did, so a
+reference that behaves otherwise fails the campaign. Faults outside the campaign are listed in the feature
+with the reason. `--check` compares instead of writing (the project's
 tests run it): a campaign that no longer covers the SUT's fault space fails.
 
 The command goes out at the instant of the fault: the campaign checks the way into a degraded mode (takeover,

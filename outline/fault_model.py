@@ -25,10 +25,6 @@ class Fault:
     kind: str                  # span, board, supply
     values: tuple[str, ...]    # (a, b) of a span, the board, the supply
 
-    @property
-    def target(self) -> str:
-        return "~".join(self.values)
-
 
 class TrainShape:
     """What the driver says a CRH2 train is made of: ring nodes in order, their boards, the LCU cars."""

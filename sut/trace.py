@@ -98,6 +98,7 @@ class Trace:
                until: int | None = None, **where: Any) -> list[TraceEvent]:
         """Events matching all given criteria. `kind` may end in `.*`; `source` is exact, a dotted prefix
         or a glob; `since`/`until` are inclusive times in us; `where` compares fields for equality."""
+        # A subclass may stand for another driver's events (sut/snapshot.py's journal view): it walks.
         if kind is not None and not kind.endswith("*") and type(self) is Trace:
             return self._select_indexed(kind, source, since, until, where)
         match_src = _source_matcher(source)
