@@ -18,6 +18,10 @@ import os
 
 import pytest
 
+from outline.campaign import CAMPAIGNS
+
+CAMPAIGN_ITEMS = {campaign.item for campaign in CAMPAIGNS}
+
 _PLAN = pytest.StashKey[dict[str, dict[str, set[str]]]]()
 _REJECTED = pytest.StashKey[dict[str, set[str]]]()      # variant name -> {"item", "req"} already failed
 
@@ -51,7 +55,10 @@ def pytest_collection_modifyitems(config: pytest.Config, items: list[pytest.Item
     for item in items:
         name = _variant(item)
         (keep if name is not None and _why(item, plan.get(name, {})) else drop).append(item)
-    keep.sort(key=lambda item: "item" not in _why(item, plan[_variant(item)]))    # stable: own items first
+    # Stable: a variant's own item first, then the scenarios its requirement selects, the generated campaigns'
+    # rows last: a targeted scenario usually rejects it first, and the sweep is then skipped.
+    keep.sort(key=lambda item: ("item" not in _why(item, plan[_variant(item)]),
+                                bool(_tags(item, "item") & CAMPAIGN_ITEMS)))
     if drop:
         config.hook.pytest_deselected(items=drop)
         items[:] = keep
