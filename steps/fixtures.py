@@ -34,6 +34,9 @@ def pytest_addoption(parser: pytest.Parser) -> None:
     group.addoption("--whole-trace", choices=("failed", "all"), default="failed",
                     help="attach the whole SUT trace (gzipped CSV) to the report for failed scenarios only "
                          "(default) or for all; the timing diagram and key events are always attached")
+    group.addoption("--evidence", choices=("failed", "all"), default="all",
+                    help="attach key events and the timing diagram to every scenario (default) or to failed "
+                         "ones only (make campaign: 16,120 rows would make a report of gigabytes)")
     group.addoption("--no-snapshots", action="store_true", default=False,
                     help="simulate every scenario from power-up, never from a copy of a state another "
                          "scenario reached (sut/snapshot.py); verdicts and traces are the same either way")
@@ -205,7 +208,8 @@ def sut(sut_class: type[TrainDriver], request: pytest.FixtureRequest):
     failed = any(r is not None and r.failed for r in outcome)
     whole = failed or request.config.getoption("--whole-trace") == "all"
     try:
-        report.attach_run(driver, request, whole_trace=whole, bounds=tuple(request.node.stash.get(_BOUNDS, [])))
+        report.attach_run(driver, request, whole_trace=whole, bounds=tuple(request.node.stash.get(_BOUNDS, [])),
+                          evidence=failed or request.config.getoption("--evidence") == "all")
         trace_dir = request.config.getoption("--trace-dir")
         if trace_dir:
             _write_trace(Path(trace_dir), request.node.nodeid, driver)

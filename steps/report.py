@@ -36,10 +36,15 @@ def recording(config: pytest.Config) -> bool:
 
 
 def attach_run(driver: TrainDriver, request: pytest.FixtureRequest, whole_trace: bool = True,
-               bounds: tuple[Bound, ...] = ()) -> None:
+               bounds: tuple[Bound, ...] = (), evidence: bool = True) -> None:
+    """The scenario's evidence (key events, timing diagram, with whole_trace the trace) and the SUT's
+    environment; without `evidence` the environment alone (make campaign: thousands of passing rows)."""
     # Building the diagram and the CSVs is a sixth of a plain run's time (bench/suite_bench.py): skip it
     # when nobody records them.
     if not driver.powered or not recording(request.config):
+        return
+    if not evidence:
+        _write_environment(driver, request.config)
         return
     trace = driver.trace
     key = Trace([ev for ev in trace if _is_key(ev)])

@@ -57,3 +57,30 @@ def test_a_run_of_three_profiles_keeps_each_profiles_environment_apart(tmp_path:
         assert len(parts) == len(set(parts)), f"{key} repeats a value: {value}"
     assert {"[run] command", "[run] commit", "[run] date", "[run] host"} <= env.keys()
     assert env["[crh2] cars per set"] == "8" and env["[metro-tcn] cars"].startswith("6 "), env
+
+
+def test_evidence_for_failed_scenarios_only_keeps_the_environment(tmp_path: Path):
+    """--evidence failed (a campaign's thousands of passing rows): no attachment on a passing scenario, a
+    failing one keeps its evidence, and the run's environment is written all the same."""
+    import json
+    import subprocess
+    import sys
+
+    from tests.test_faulty_variants import ROOT
+
+    def run(results: Path, *args: str) -> dict[str, list]:
+        subprocess.run([sys.executable, "-m", "pytest", "features", "-q", "-p", "no:cacheprovider", "-p",
+                        "no:xdist", "--item=F-NET-30", "-k", "car3", f"--alluredir={results}", *args],
+                       cwd=ROOT, capture_output=True, text=True, timeout=600)
+        by_status: dict[str, list] = {}           # status -> attachments per result
+        for path in results.glob("*-result.json"):
+            result = json.loads(path.read_text())
+            by_status.setdefault(result["status"], []).append(len(result.get("attachments", [])))
+        return by_status
+
+    passing = run(tmp_path / "passing", "--evidence", "failed")
+    assert set(passing) == {"passed"} and not any(passing["passed"]), passing
+    assert read_environment(tmp_path / "passing")["[crh2] cars per set"] == "8"
+    failing = run(tmp_path / "failing", "--evidence", "failed", "--sut", "tests.variants:NoSelfDiagnosticFallback")
+    assert failing.get("failed") and all(failing["failed"]), failing
+    assert all(run(tmp_path / "all")["passed"])
