@@ -21,6 +21,12 @@ NOTCH, STEP, BOUND = 6, "B", 100      # the takeover and path 3 bound of the sin
 WINDOW = 2 * BOUND
 
 
+def _numbered(kind: str, n: str) -> tuple[str, tuple[str, ...], str]:
+    """A kind's sentence, columns and title phrase, its placeholders numbered n ("" when the kinds differ)."""
+    when, columns, named = SENTENCES[kind]
+    return when.format(n=n), tuple(c.format(n=n) for c in columns), named.format(n=n)
+
+
 def paths_cell(paths: dict[int, int | None]) -> str:
     return ",".join("-" if p is None else str(p) for _car, p in sorted(paths.items()))
 
@@ -51,12 +57,9 @@ def render(item: str, title: str, given: str, faults: list[Fault], shape: TrainS
         "    And the train has been powered up for 1000 ms",
     ]
     for (kind1, kind2), pairs in outlines.items():
-        same = kind1 == kind2
-        n1, n2 = ("1", "2") if same else ("", "")
-        when1, cols1, named1 = (part.format(n=n1) if isinstance(part, str) else tuple(c.format(n=n1) for c in part)
-                                for part in SENTENCES[kind1])
-        when2, cols2, named2 = (part.format(n=n2) if isinstance(part, str) else tuple(c.format(n=n2) for c in part)
-                                for part in SENTENCES[kind2])
+        n1, n2 = ("1", "2") if kind1 == kind2 else ("", "")
+        when1, cols1, named1 = _numbered(kind1, n1)
+        when2, cols2, named2 = _numbered(kind2, n2)
         table = [[*cols1, *cols2, "paths"]]
         table += [[*a.values, *b.values, paths_cell(shape.paths((a, b)))] for a, b in pairs]
         widths = [max(len(row[i]) for row in table) for i in range(len(table[0]))]
