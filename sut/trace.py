@@ -55,7 +55,7 @@ class Trace:
     def __init__(self, events: list[TraceEvent]):
         self._events = events
         self._indexed = 0
-        self._by_kind: dict[str, dict[str, array]] = {}      # positions as machine ints: 8 bytes, not 36
+        self._by_kind: dict[str, dict[str | None, array]] = {}      # positions as machine ints: 8 bytes, not 36
 
     def __getstate__(self) -> dict:
         return {"_events": self._events}           # the index is rebuilt where it is needed, not pickled
@@ -70,7 +70,8 @@ class Trace:
             ev = events[i]
             sources = by_kind.get(ev.kind)
             if sources is None:
-                sources = by_kind[ev.kind] = {}
+                sources = by_kind[ev.kind] = {None: array("q")}      # None: every source, for queries without one
+            sources[None].append(i)
             positions = sources.get(ev.source)
             if positions is None:
                 positions = sources[ev.source] = array("q")
@@ -79,10 +80,14 @@ class Trace:
         sources = by_kind.get(kind)
         if not sources:
             return []
+        if source is None:
+            return sources[None]
         match_src = _source_matcher(source)
-        lists = [positions for src, positions in sources.items() if match_src(src)]
+        lists = [positions for src, positions in sources.items() if src is not None and match_src(src)]
         if len(lists) == 1:
             return lists[0]
+        if len(lists) == len(sources) - 1:
+            return sources[None]
         return sorted(i for positions in lists for i in positions)
 
     def __len__(self) -> int:

@@ -20,7 +20,7 @@ class Walk(Trace):
 events = st.lists(st.tuples(st.integers(0, 3), st.sampled_from(SOURCES), st.sampled_from(KINDS),
                             st.sampled_from([1, 2, 3])), max_size=120)
 queries = st.lists(st.tuples(st.sampled_from(KINDS + ["cmd.*", "nothing"]),
-                             st.sampled_from([None, "car1", "car1.CI", "car1*", "car?.BCU", "car10.CI", "car"]),
+                             st.sampled_from([None, "car1", "car1.CI", "car1*", "car?.BCU", "car10.CI", "car", "*"]),
                              st.one_of(st.none(), st.integers(0, 200)), st.one_of(st.none(), st.integers(0, 200)),
                              st.sampled_from([{}, {"path": 1}, {"path": 3}])), min_size=1, max_size=6)
 
