@@ -9,23 +9,8 @@ from __future__ import annotations
 
 from itertools import combinations
 
+from .campaign_text import INVARIANTS, KIND_ORDER, NOTCH, STEP, TAKEOVER, WINDOW, background, examples, numbered
 from .fault_model import Fault, TrainShape
-
-KIND_ORDER = ("span", "board", "supply")
-SENTENCES = {       # the hand-written features' sentences; {n} numbers the columns when both faults are alike
-    "span": ('the ring link between "<a{n}>" and "<b{n}>" is cut', ("a{n}", "b{n}"), "the ring link <a{n}>~<b{n}> cut"),
-    "board": ('board "<board{n}>" fails', ("board{n}",), "board <board{n}> failed"),
-    "supply": ('the supply "<supply{n}>" is switched off', ("supply{n}",), "supply <supply{n}> off"),
-}
-NOTCH, STEP, BOUND = 6, "B", 100      # the takeover and path 3 bound of the single-fault campaign
-WINDOW = 2 * BOUND
-
-
-def _numbered(kind: str, n: str) -> tuple[str, tuple[str, ...], str]:
-    """A kind's sentence, columns and title phrase, its placeholders numbered n ("" when the kinds differ)."""
-    when, columns, named = SENTENCES[kind]
-    return when.format(n=n), tuple(c.format(n=n) for c in columns), named.format(n=n)
-
 
 def paths_cell(paths: dict[int, int | None]) -> str:
     return ",".join("-" if p is None else str(p) for _car, p in sorted(paths.items()))
@@ -50,19 +35,14 @@ def render(item: str, title: str, given: str, faults: list[Fault], shape: TrainS
         "  as outline/fault_model.py derives it from the articles and DECISIONS.md's takeover rule (a standby",
         "  system deaf to the ring does not take over). Whatever the path, no device ever takes a wrong notch.",
         "",
-        "  Background:",
-        f"    {given}",
-        "    And the driver has inserted the key in cab 1",
-        "    And the direction switch of cab 1 is at forward",
-        "    And the train has been powered up for 1000 ms",
+        *background(given),
     ]
     for (kind1, kind2), pairs in outlines.items():
         n1, n2 = ("1", "2") if kind1 == kind2 else ("", "")
-        when1, cols1, named1 = _numbered(kind1, n1)
-        when2, cols2, named2 = _numbered(kind2, n2)
+        when1, cols1, named1 = numbered(kind1, n1)
+        when2, cols2, named2 = numbered(kind2, n2)
         table = [[*cols1, *cols2, "paths"]]
         table += [[*a.values, *b.values, paths_cell(shape.paths((a, b)))] for a, b in pairs]
-        widths = [max(len(row[i]) for row in table) for i in range(len(table[0]))]
         lines += [
             "",
             "  @req:NET-03 @req:CMD-01 @req:CMD-02 @req:CMD-03 @req:CMD-04 @req:RED-01 @req:RED-02",
@@ -72,12 +52,10 @@ def render(item: str, title: str, given: str, faults: list[Fault], shape: TrainS
             f"    And the driver moves the traction notch of cab 1 to {NOTCH}",
             f"    And {WINDOW} ms pass",
             f'    Then car by car the CI and BCU receive traction notch {NOTCH} or traction step "{STEP}" by the '
-            f"paths <paths> within {BOUND} ms",
-            f"    And no CI or BCU of a car with a path in <paths> goes without a command for more than {BOUND} ms",
-            f"    And no CI or BCU ever receives a traction notch other than 0 or {NOTCH}",
-            "    And no command over path 2 or 3 ever carried more than the traction and brake steps A and B",
+            f"paths <paths> within {TAKEOVER} ms",
+            f"    And no CI or BCU of a car with a path in <paths> goes without a command for more than {TAKEOVER} ms",
+            *INVARIANTS,
             "",
-            "    Examples:",
-            *["      | " + " | ".join(cell.ljust(w) for cell, w in zip(row, widths)) + " |" for row in table],
+            *examples(table),
         ]
     return "\n".join(lines) + "\n"

@@ -26,6 +26,11 @@ class Fault:
     values: tuple[str, ...]    # (a, b) of a span, the board, the supply
 
 
+def car_of(unit: str) -> int:
+    """'car12.LCU' -> 12."""
+    return int(unit.split(".")[0][3:])
+
+
 class TrainShape:
     """What the driver says a CRH2 train is made of: ring nodes in order, their boards, the LCU cars."""
 
@@ -33,7 +38,7 @@ class TrainShape:
         self.nodes = nodes
         self.boards = boards
         self.supplies = supplies
-        self.cars = sorted(int(n.split(".")[0][3:]) for n in nodes if n.endswith(".LCU"))
+        self.cars = sorted(car_of(n) for n in nodes if n.endswith(".LCU"))
         self.systems = (f"car{cab}.CCU.sys1", f"car{cab}.CCU.sys2")     # the commanding cab's CCU
 
     @classmethod

@@ -200,8 +200,12 @@ def _only_steps_a_b(takes: list) -> None:
 @then(parsers.parse("没有CI或BCU收到{notch:d}级以外的牵引级位"))
 @then(parsers.parse("no CI or BCU receives a traction notch other than {notch:d}"))
 def _(sut: TrainDriver, t_action: int, notch: int) -> None:
-    odd = [ev for ev in sut.trace.select(kind="cmd.in", since=t_action, path=1) if ev["traction"] != notch]
-    assert not odd, f"devices received other notches: {analysis.describe(odd)}"
+    _no_notch_but(sut, {notch}, since=t_action)
+
+
+def _no_notch_but(sut: TrainDriver, allowed: set[int], since: int | None = None) -> None:
+    odd = [ev for ev in sut.trace.select(kind="cmd.in", since=since, path=1) if ev["traction"] not in allowed]
+    assert not odd, f"devices received notches other than {sorted(allowed)}: {analysis.describe(odd)}"
 
 
 def _notches(text: str) -> set[int]:
@@ -212,8 +216,7 @@ def _notches(text: str) -> set[int]:
 @then(parsers.parse("no CI or BCU ever receives a traction notch other than {notches}"), converters={"notches": _notches})
 def _(sut: TrainDriver, notches: set[int]) -> None:
     # Fail-safety over the whole trace, from power-up: a wrong notch for one cycle is a wrong command.
-    odd = [ev for ev in sut.trace.select(kind="cmd.in", path=1) if ev["traction"] not in notches]
-    assert not odd, f"devices received notches other than {sorted(notches)}: {analysis.describe(odd)}"
+    _no_notch_but(sut, notches)
 
 
 @then("经路径2和3传送的命令从未包含A、B挡以外的级位")

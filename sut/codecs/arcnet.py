@@ -23,8 +23,7 @@ def _table(poly_reflected: int) -> list[int]:
     return table
 
 
-_ARC = _table(0xA001)     # x^16+x^15+x^2+1 reflected
-ARC_TABLE = tuple(_ARC)
+ARC_TABLE = _ARC = tuple(_table(0xA001))     # x^16+x^15+x^2+1 reflected (frames.py's zero runs read it too)
 _X25 = _table(0x8408)     # x^16+x^12+x^5+1 reflected (HDLC FCS)
 
 

@@ -1,0 +1,55 @@
+"""What the single- and double-fault campaigns (outline/campaign.py, outline/double_campaign.py) write alike:
+the command and its bounds, the sentences a fault is told in, the Background, the invariants every scenario
+checks, and an aligned Examples table."""
+from __future__ import annotations
+
+NOTCH = 6
+STEP = "B"                     # notch 6 on the digital outputs of paths 2 and 3 (CMD-03/04)
+
+# Bounds (ms) from the articles: a command leaves the TXC at most 10 ms after the desk changed (PRO-01's
+# interval), crosses the ring in at most 15 ms (PRO-01, collisions included) and reaches CI and BCU with the
+# next 10 ms HDLC poll (NET-09): 40 ms with a margin. A takeover adds system 2's 50 ms of silence (RED-02);
+# a fallback to path 3 the RXC's wait for the ring before it trusts the self-diagnostic line (CMD-04): the
+# hand-written features give both 100 ms.
+RIDE, TAKEOVER = 40, 100
+# What is watched after the fault: the slowest delivery (a takeover, path 3) and as long again on the new path.
+WINDOW = 2 * TAKEOVER
+
+KIND_ORDER = ("span", "board", "supply")
+# Per kind of fault: the hand-written features' sentence, its Examples columns, how a title names it; {n}
+# numbers the placeholders where a scenario has two faults of one kind.
+SENTENCES = {
+    "span": ('the ring link between "<a{n}>" and "<b{n}>" is cut', ("a{n}", "b{n}"), "the ring link <a{n}>~<b{n}> cut"),
+    "board": ('board "<board{n}>" fails', ("board{n}",), "board <board{n}> failed"),
+    "supply": ('the supply "<supply{n}>" is switched off', ("supply{n}",), "supply <supply{n}> off"),
+}
+
+
+def numbered(kind: str, n: str = "") -> tuple[str, tuple[str, ...], str]:
+    """A kind's sentence, columns and title phrase, its placeholders numbered n ("" for one fault of a kind)."""
+    when, columns, named = SENTENCES[kind]
+    return when.format(n=n), tuple(c.format(n=n) for c in columns), named.format(n=n)
+
+
+def background(given: str) -> list[str]:
+    return [
+        "  Background:",
+        f"    {given}",
+        "    And the driver has inserted the key in cab 1",
+        "    And the direction switch of cab 1 is at forward",
+        "    And the train has been powered up for 1000 ms",
+    ]
+
+
+# Fail-safety over the whole trace, whatever path a car is on.
+INVARIANTS = [
+    f"    And no CI or BCU ever receives a traction notch other than 0 or {NOTCH}",
+    "    And no command over path 2 or 3 ever carried more than the traction and brake steps A and B",
+]
+
+
+def examples(table: list[list[str]]) -> list[str]:
+    """An Examples block, the header row first, its columns aligned."""
+    widths = [max(len(row[i]) for row in table) for i in range(len(table[0]))]
+    return ["    Examples:",
+            *["      | " + " | ".join(cell.ljust(w) for cell, w in zip(row, widths)) + " |" for row in table]]
