@@ -30,6 +30,10 @@ def _is_key(ev) -> bool:
     return not (ev.kind == "display.change" and isinstance(ev.get("value"), (int, float)))
 
 
+def _maybe_key(kind: str) -> bool:
+    return kind not in PERIODIC_KINDS
+
+
 def recording(config: pytest.Config) -> bool:
     """Whether this run writes Allure results (--alluredir): without them every attachment is dropped."""
     return bool(getattr(config.option, "allure_report_dir", None))
@@ -47,7 +51,7 @@ def attach_run(driver: TrainDriver, request: pytest.FixtureRequest, whole_trace:
         _write_environment(driver, request.config)
         return
     trace = driver.trace
-    key = Trace([ev for ev in trace if _is_key(ev)])
+    key = Trace([ev for ev in trace.of_kinds(_maybe_key) if _is_key(ev)])
     allure.attach(key.to_csv(), name=f"key events ({len(key)} of {len(trace)}, t in ms)",
                   attachment_type=allure.attachment_type.CSV)
     if whole_trace:

@@ -297,6 +297,10 @@ class _JournalTrace(Trace):
         read = ("trace.select", kind, source, since, until, tuple(sorted(where.items())))
         return self._owner._observe(read, lambda driver: driver.trace.select(kind, source, since, until, **where))
 
+    def of_kinds(self, wanted, since=None, until=None) -> list:
+        # `wanted` is a function, no key to answer by: the driver's own (indexed) trace answers
+        return self._owner._observe(None, lambda driver: driver.trace.of_kinds(wanted, since, until))
+
     def first(self, **criteria: Any):
         read = ("trace.first", tuple(sorted(criteria.items())))
         return self._owner._observe(read, lambda driver: driver.trace.first(**criteria))

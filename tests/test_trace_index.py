@@ -52,3 +52,23 @@ def test_a_pickled_view_leaves_its_index_behind_and_still_answers():
     again = pickle.loads(pickle.dumps(view))          # a snapshot of a backend holds its view
     assert (again._indexed, again._by_kind) == (0, {})
     assert again.select("cmd.in") == view.select("cmd.in")
+
+
+kind_sets = st.sets(st.sampled_from(KINDS + ["nothing"]), max_size=4)
+
+
+@settings(max_examples=300, deadline=None, suppress_health_check=[HealthCheck.too_slow])
+@given(first=events, more=events, wanted=st.lists(st.tuples(kind_sets, st.one_of(st.none(), st.integers(0, 200)),
+                                                           st.one_of(st.none(), st.integers(0, 200))),
+                                                 min_size=1, max_size=4))
+def test_events_of_several_kinds_come_from_the_index_as_the_walk_gives_them(first, more, wanted):
+    timed = _timed(first + more)
+    grown: list[TraceEvent] = timed[:len(first)]
+    indexed, walk = Trace(grown), Walk(grown)
+    for step in (0, 1):
+        for kinds, since, until in wanted:
+            expected = [ev for ev in grown if ev.kind in kinds and (since is None or ev.t >= since)
+                        and (until is None or ev.t <= until)]
+            assert indexed.of_kinds(kinds.__contains__, since, until) == expected
+            assert walk.of_kinds(kinds.__contains__, since, until) == expected
+        grown.extend(timed[len(first):])
