@@ -42,7 +42,7 @@ SHARDS ?= 4
 SHARD ?= 1
 SHARD_RESULTS := reports/shards
 
-CAMPAIGN_ITEMS := F-NET-30,F-NET-31,F-NET-32,F-NET-33
+CAMPAIGN_ITEMS := F-NET-30,F-NET-31,F-NET-32,F-NET-33,F-NET-34
 
 .PHONY: help report test check trace clean distclean mutate shard merge durations campaign
 

@@ -73,10 +73,11 @@ def main(argv: list[str] | None = None) -> int:
 
     campaign = sub.add_parser(
         "campaign",
-        help="write the fault-campaign features (F-NET-30/31) from the SUT's own fault space",
-        description="Reads the boards, ring spans and supplies through the driver and writes each campaign's "
-        "feature file: one scenario per single fault, its expectation the design's for that kind of fault "
-        "(outline/campaign.py). --check compares with the checked-in files instead (exit 1 if they differ).",
+        help="write the fault-campaign features (F-NET-30..34) from the SUT's own fault space",
+        description="Reads the boards, ring spans and supplies (the metro train's units, boards, modules, "
+        "devices and bus lines) through the driver and writes each campaign's feature file: one scenario per "
+        "single fault (or pair), its expectation the design's for that kind of fault (outline/campaign.py, "
+        "outline/metro_campaign.py). --check compares with the checked-in files instead (exit 1 if they differ).",
     )
     campaign.add_argument("--sut", default="reference", help="SUT backend to read the fault space from "
                           "(default: %(default)s)")

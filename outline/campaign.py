@@ -1,5 +1,6 @@
 """Fault campaigns (issue 16): every single fault of a CRH2 train's boards, ring spans and power supplies, one
-scenario each, generated from what the SUT says it is made of (and every pair of them: outline/double_campaign.py).
+scenario each, generated from what the SUT says it is made of (and every pair of them: outline/double_campaign.py;
+the metro train's single faults, F-NET-34: outline/metro_campaign.py).
 
 `python -m outline campaign` opens the SUT through its driver (the reference by default), reads the fault
 space from it (`ring_nodes`: the spans between neighbours; `boards`; `supplies`), and writes each campaign's
@@ -19,7 +20,7 @@ import sys
 from dataclasses import dataclass
 from pathlib import Path
 
-from . import double_campaign
+from . import double_campaign, metro_campaign
 from .campaign_text import INVARIANTS, KIND_ORDER, NOTCH, RIDE, STEP, TAKEOVER, WINDOW, background, examples, numbered
 from .fault_model import Fault, TrainShape, car_of
 
@@ -173,17 +174,28 @@ def run(root: Path, spec: str, check: bool) -> int:
                                           campaign.pairs)
         else:
             text = render(campaign, faults, left_out, shape)
-        path = root / campaign.path
-        if check:
-            if not path.exists() or path.read_text(encoding="utf-8") != text:
-                stale.append(campaign.path)
-        else:
-            path.write_text(text, encoding="utf-8")
-            print(f"{campaign.path}: {len(fault_space_of(text))} {'pairs of faults' if campaign.pairs else 'faults'}")
+        count = f"{len(fault_space_of(text))} {'pairs of faults' if campaign.pairs else 'faults'}"
+        _write_or_check(root, campaign.path, text, check, stale, count)
+    metro = metro_campaign.generate(spec)           # F-NET-34: the metro train's single faults
+    if metro is None:
+        print(f"{metro_campaign.PATH}: {spec} has no metro-tcn train; left as it is", file=sys.stderr)
+    else:
+        path, text = metro
+        _write_or_check(root, path, text, check, stale, f"{len(metro_campaign.rows_of(text))} faults")
     for path in stale:
         print(f"{path}:1: the campaign differs from the SUT's fault space; run `python -m outline campaign`",
               file=sys.stderr)
     return 1 if stale else 0
+
+
+def _write_or_check(root: Path, relative: str, text: str, check: bool, stale: list[str], count: str) -> None:
+    path = root / relative
+    if check:
+        if not path.exists() or path.read_text(encoding="utf-8") != text:
+            stale.append(relative)
+    else:
+        path.write_text(text, encoding="utf-8")
+        print(f"{relative}: {count}")
 
 
 def fault_space_of(text: str) -> list[tuple[str, ...]]:

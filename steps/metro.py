@@ -279,6 +279,50 @@ def _(sut: TrainDriver, t_action: int) -> None:
     assert not changes, f"traction or brake changed after {ms(t_action)}: {describe(changes)}"
 
 
+# Fail-safety over the whole trace (the metro single-fault campaign, F-NET-34): what a VVVF or BECU applies is
+# read from its `pd.change` events; before its first one a device applies nothing.
+def _changes(sut: TrainDriver, kind: str, since: int | None = None, until: int | None = None) -> list:
+    return [ev for device in _sinks(sut, kind)
+            for ev in sut.trace.select(kind="pd.change", source=device, since=since, until=until)]
+
+
+@then(parsers.parse("没有VVVF在任何时刻施加{a:g}或{b:g} %以外的牵引"))
+@then(parsers.parse("no VVVF ever applies a traction other than {a:g} or {b:g} %"))
+def _(sut: TrainDriver, a: float, b: float) -> None:
+    # From power-up: a wrong or stale traction for one cycle is a wrong command.
+    wrong = [ev for ev in _changes(sut, "VVVF") if ev["value"] not in (a, b)]
+    assert not wrong, f"VVVF traction other than {a:g} or {b:g} %: {describe(wrong)}"
+
+
+@then("没有VVVF在任何时刻于BECU制动时施加牵引")
+@then("no VVVF ever pulls while a BECU brakes")
+def _(sut: TrainDriver) -> None:
+    # Instant by instant (a unit changes its VVVFs and BECUs at one instant, one after the other): traction
+    # against an applied brake anywhere in the train is never commanded (DECISIONS.md, TCN-09: 0 % traction
+    # and the brake go together).
+    applied: dict[str, float] = {}
+    events = sorted(_changes(sut, "VVVF") + _changes(sut, "BECU"), key=lambda ev: ev.t)
+    for i, ev in enumerate(events):
+        applied[ev.source] = ev["value"]
+        if i + 1 < len(events) and events[i + 1].t == ev.t:
+            continue
+        pulling = sorted(d for d, v in applied.items() if v and d.endswith(".VVVF"))
+        braking = sorted(d for d, v in applied.items() if v and d.endswith(".BECU"))
+        assert not (pulling and braking), f"{ms(ev.t)}: {pulling} pull while {braking} brake"
+
+
+@then("自故障起没有BECU施加制动")
+@then("no BECU applies a brake from the fault on")
+def _(sut: TrainDriver, t_action: int) -> None:
+    # The train runs on (RED-05 "without restriction", RED-06 "without loss"): what each BECU applied at the
+    # fault and every change since are 0.
+    for device in _sinks(sut, "BECU"):
+        before = sut.trace.select(kind="pd.change", source=device, until=t_action)
+        after = sut.trace.select(kind="pd.change", source=device, since=t_action)
+        braked = [ev for ev in before[-1:] + after if ev["value"]]
+        assert not braked, f"{device} braked from {ms(t_action)} on: {describe(braked)}"
+
+
 @then("列车已停车")
 @then("the train has come to a stop")
 def _(sut: TrainDriver) -> None:

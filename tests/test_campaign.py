@@ -7,7 +7,7 @@ from pathlib import Path
 
 import pytest
 
-from outline import campaign
+from outline import campaign, metro_campaign
 from outline.campaign import NO_MDM9, OFF_THE_RING, RIDES, TAKES_OVER
 from outline.fault_model import Fault, TrainShape
 from sut.backends import open_backend
@@ -42,16 +42,16 @@ def test_every_span_board_and_supply_is_a_scenario_and_the_desks_are_listed_as_l
 
 
 def test_a_campaign_that_misses_a_fault_is_reported_with_its_file(tmp_path: Path, capsys) -> None:
-    for one in campaign.CAMPAIGNS:
-        (tmp_path / one.path).parent.mkdir(parents=True, exist_ok=True)
-        shutil.copy(ROOT / one.path, tmp_path / one.path)
+    for one in [*(c.path for c in campaign.CAMPAIGNS), metro_campaign.PATH]:
+        (tmp_path / one).parent.mkdir(parents=True, exist_ok=True)
+        shutil.copy(ROOT / one, tmp_path / one)
     path = tmp_path / campaign.CAMPAIGNS[0].path
     lines = path.read_text(encoding="utf-8").splitlines(keepends=True)
     path.write_text("".join(line for line in lines if "car5.LCU.MDM9" not in line), encoding="utf-8")
     assert campaign.run(tmp_path, "reference", check=True) == 1
     err = capsys.readouterr().err
     assert f"{campaign.CAMPAIGNS[0].path}:1: the campaign differs from the SUT's fault space" in err
-    assert campaign.CAMPAIGNS[1].path not in err
+    assert campaign.CAMPAIGNS[1].path not in err and metro_campaign.PATH not in err
 
 
 @pytest.mark.parametrize("kind, target, group, car", [

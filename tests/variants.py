@@ -10,6 +10,8 @@ from __future__ import annotations
 from sut.reference.crh2.backend import ReferenceTrain
 from sut.reference.atp.backend import ReferenceAtp
 from sut.reference.metro.backend import ReferenceMetro
+from sut.reference.metro.ports import DI_KEY, Command
+from sut.reference.metro.tcds import MetroTrain
 
 MS = 1000
 
@@ -518,6 +520,42 @@ class StatusPolledWithReservedCode(ReferenceMetro):
     BEHAVIOUR = {"status_poll_f_code": 10}
 
 
+class _BackupStartsFromTheCcuCommand(MetroTrain):
+    """The train of BackupVcuHoldsTheCcuCommand: a subclass, so the reference's code is not edited."""
+
+    def __init__(self, cfg) -> None:
+        super().__init__(cfg)
+        self.held: dict[int, tuple] = {}     # unit -> (the cab's inputs at takeover, the CCU's last command or None)
+
+    def _command(self, seg, master):
+        last = seg.cmd_sent                  # what the failed CCU last put on the port
+        cmd = super()._command(seg, master)
+        inputs = seg.io_data[seg.io_used][0] if seg.io_used else None
+        if master.kind != "VCU" or cmd is None or inputs is None or not inputs.input(DI_KEY):
+            self.held.pop(seg.unit, None)
+            return cmd
+        seen = (inputs.di, inputs.ai)
+        if seg.unit not in self.held:
+            start = (last.mode, last.direction, last.traction, last.brake) if last is not None else None
+            self.held[seg.unit] = (seen, start)
+        at_takeover, start = self.held[seg.unit]
+        if start is None or seen != at_takeover:
+            self.held[seg.unit] = (seen, None)          # the inputs moved: from now on computed from them
+            return cmd
+        return Command(*start, cmd.seq)
+
+
+class BackupVcuHoldsTheCcuCommand(ReferenceMetro):
+    """RED-05: the VCU that takes over a failed keyed-cab CCU starts from the train command the CCU last sent
+    and computes a new one only when the cab's inputs change after it took over. The hand-written items move
+    the controller long after the takeover (the VCU follows) or not at all (the held command is right); a
+    controller moved at the instant of the failure is never followed: only the campaign (F-NET-34) sees it."""
+
+    def __init__(self) -> None:
+        super().__init__()
+        self._train = _BackupStartsFromTheCcuCommand(self._train.cfg)
+
+
 class BriskMetro(ReferenceMetro):
     """In band: a 20 ms WTB cycle, quicker takeovers, I/O and command ports every 4 ms, longer sink and
     gateway supervision."""
@@ -546,6 +584,7 @@ FAULTY += [
     (EmergencyOperationAtSpeed, "TCN-09", "F-NET-25"),
     (StatusPolledWithReservedCode, "TCN-05", "F-NET-24"),
     (StatusPolledAtOneAddress, "TCN-05", "F-NET-24"),
+    (BackupVcuHoldsTheCcuCommand, "RED-05", "F-NET-34"),
     (PacketsFromNodeOne, "NET-10", "F-NET-26"),
     (MainCircuitResetsItself, "ILK-06", "F-VSD-02"),
     (BrakeForceTripClearsItself, "ILK-03", "F-ILK-03"),
