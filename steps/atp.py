@@ -130,6 +130,13 @@ def _(sut: TrainDriver, name: str) -> int:
     return sut.now_us
 
 
+@when(parsers.parse('ATP输入"{name}"被复位'), target_fixture="t_action")
+@when(parsers.parse('the ATP input "{name}" is cleared'), target_fixture="t_action")
+def _(sut: TrainDriver, name: str) -> int:
+    sut.set_input(name, False)
+    return sut.now_us
+
+
 # -- balises --------------------------------------------------------------------------------------------
 def _balise(sut: TrainDriver, group: str, *packets: dict) -> int:
     sut.pass_balise(group, list(packets))

@@ -216,6 +216,22 @@ def _(sut: TrainDriver, t_action: int, bus: str) -> None:
     assert not lost, f"{len(lost)} of {len(polls)} messages on {bus} lost: {describe(lost)}"
 
 
+@then(parsers.parse('"{bus}"上有报文丢失'))
+@then(parsers.parse('a message on "{bus}" is lost'))
+def _(sut: TrainDriver, t_action: int, bus: str) -> None:
+    # The analyser's view of a frame that got through on neither line: the message is lost, not answered.
+    polls = _polls(sut, bus, t_action)
+    assert any(p["lost"] for p in polls), f"no message on {bus} lost since {ms(t_action)} ({len(polls)} polls)"
+
+
+@then(parsers.parse('"{bus}"上自{after:g} ms起没有丢失任何报文'))
+@then(parsers.parse('no message on "{bus}" is lost from {after:g} ms on'))
+def _(sut: TrainDriver, t_action: int, bus: str, after: float) -> None:
+    polls = _polls(sut, bus, t_action + us(after))
+    lost = [p for p in polls if p["lost"]]
+    assert polls and not lost, f"{len(lost)} of {len(polls)} messages on {bus} lost {after:g} ms on: {describe(lost)}"
+
+
 @then(parsers.parse('"{bus}"上的接收端采用线路{line:w}'))
 @then(parsers.parse('the receivers on "{bus}" take line {line:w}'))
 def _(sut: TrainDriver, t_action: int, bus: str, line: str) -> None:
@@ -464,3 +480,13 @@ def _(sut: TrainDriver, t_action: int, bus: str, bound: float) -> None:
 def _(sut: TrainDriver, cab: int, node: str) -> None:
     shown = sut.monitor(cab)
     assert shown.get("WTB master") == node, f"the cab {cab} display shows WTB master {shown.get('WTB master')!r}"
+
+
+@then(parsers.parse("{cab:d}号司机室的DU黑屏"))
+@then(parsers.parse("the cab {cab:d} display is dark"))
+def _(sut: TrainDriver, cab: int) -> None:
+    # A dead DU shows nothing: no mode, no WTB master, no event (read with get: a driver need not list
+    # what a dark screen does not show).
+    shown = sut.monitor(cab)
+    lit = {k: shown.get(k) for k in ("mode", "WTB master") if shown.get(k) is not None}
+    assert shown.get("blank") and not shown.get("faults") and not lit, f"the cab {cab} display shows {shown}"

@@ -34,3 +34,11 @@ Feature: F-DSP-05 Metro display units: the train's state in both cabs, through a
       | cab |
       | 1   |
       | 6   |
+
+  @req:TCN-08
+  Scenario: F-DSP-05 A failed display unit goes dark; the other cab's display still shows the train
+    When "car1.DU" fails
+    And 100 ms pass
+    Then the cab 1 display is dark
+    And the cab 6 display shows the mode "normal"
+    And the cab 6 display shows "car1.CCU" as WTB master

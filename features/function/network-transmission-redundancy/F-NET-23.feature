@@ -44,6 +44,13 @@ Feature: F-NET-23 Dual lines A and B on the WTB and on each MVB
     And no VVVF or BECU changes what it applies
 
   @req:RED-06
+  Scenario: F-NET-23 Frames disturbed on both lines lose their messages; the bus carries on
+    When the next 2 frames on both lines of "unit2.MVB" are disturbed
+    And 100 ms pass
+    Then a message on "unit2.MVB" is lost
+    And no message on "unit2.MVB" is lost from 10 ms on
+
+  @req:RED-06
   Scenario: F-NET-23 Restored line A is diagnosed healthy again
     When line A of "WTB" is cut
     And 300 ms pass

@@ -36,6 +36,10 @@ Feature: F-NET-25 Train network failure: brake to a stop, then hard-wired emerge
     Then every VVVF applies 60 % traction within 50 ms
     And every BECU applies 0 % brake
     And the cab 6 display shows the mode "emergency operation"
+    When the driver moves the master controller of cab 1 to 40 % brake
+    And 100 ms pass
+    Then every BECU applies 40 % brake within 50 ms
+    And every VVVF applies 0 % traction
     When the driver turns the emergency-operation switch off
     And 100 ms pass
     Then every BECU applies 100 % brake within 50 ms

@@ -35,6 +35,17 @@ Feature: F-ATP-07 CFSK track-circuit decoding: health, 3-comparison confirmation
     Then the safety computer gets the CFSK fault and no decoded result
     And the DMI shows "CFSK fault"
 
+  @req:ATP-01
+  Scenario: F-ATP-07 A repaired CFSK decodes the track circuit again
+    Given the signal generator sends 1700 Hz with code L
+    When 1000 ms pass
+    And "CFSK" fails
+    And 1000 ms pass
+    And "CFSK" is repaired
+    And the signal generator switches to 2300 Hz with code U
+    And 1000 ms pass
+    Then the CFSK reports 2300 Hz with code U together, after 3 agreeing comparisons
+
   @req:ATP-04
   Scenario: F-ATP-07 An up-line balise switches the CFSK to the up-line carriers
     Given the signal generator sends 2000 Hz with code L

@@ -59,3 +59,5 @@ Feature: F-ATP-11 Precise stopping, modes CS, SL and AM, and the ATO, door and p
     Then the ATP is in mode CS
     When the ATP input "sleep" is set
     Then the ATP is in mode SL
+    When the ATP input "sleep" is cleared
+    Then the ATP is in mode SB
