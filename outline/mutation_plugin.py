@@ -9,6 +9,13 @@ the mutant, and stops at the first failure (-x); it keeps only the exit code.
   (tests/test_kernel.py), so its mutants also meet those tests, after the scenarios. mutmut collects all of
   them (pyproject.toml); this leaves each mutant only its own judges.
 - What killed it: the failing test, one line per mutant, in the file named by $CRH2_MUTATION_KILLS.
+- Snapshots only where they cannot hide a scenario: mutmut learns who reaches what in one run of every test
+  (MUTANT_UNDER_TEST=stats), and a scenario restored from a stored state never calls the functions that built
+  it, so that run simulates every scenario in full (--no-snapshots). A mutant's own run (a fresh pytest
+  session in a forked child, so a fresh cache) keeps them: every scenario it restores was built earlier in
+  that same child, under the same mutant, by a scenario sharing its Background, which reaches the same
+  functions and is in the mutant's list too; verdicts with and without snapshots are the same
+  (tests/test_snapshot.py). A survivor of a busy function runs hundreds of scenarios: this halves them.
 """
 from __future__ import annotations
 
@@ -18,6 +25,12 @@ import pytest
 
 
 ENGINE = ("sut.reference.kernel.", "sut.reference.bulk.")
+MAPPING_RUN = "stats"            # mutmut's MUTANT_UNDER_TEST while it learns which tests reach which function
+
+
+def pytest_configure(config: pytest.Config) -> None:
+    if os.environ.get("MUTANT_UNDER_TEST") == MAPPING_RUN and hasattr(config.option, "no_snapshots"):
+        config.option.no_snapshots = True
 
 
 def judges(mutant: str, nodeids: list[str]) -> list[str]:

@@ -65,7 +65,8 @@ def test_mutmut_mutates_the_references_and_runs_the_features_with_the_kill_recor
     assert mutmut["source_paths"] == ["sut/reference/"]
     assert mutmut["pytest_add_cli_args_test_selection"] == ["features/", "tests/test_bulk.py", "tests/test_kernel.py"]
     assert "outline.mutation_plugin" in mutmut["pytest_add_cli_args"]
-    assert "--no-snapshots" in mutmut["pytest_add_cli_args"]      # else restored scenarios hide who reaches what
+    # snapshots off only while mutmut maps who reaches what (the plugin's pytest_configure), on for each mutant
+    assert "--no-snapshots" not in mutmut["pytest_add_cli_args"]
     assert {"steps/", "features/", "outline/", "conftest.py"} <= set(mutmut["also_copy"])
     assert config["project"]["optional-dependencies"]["mutate"] == ["mutmut==3.8.1"]
 
@@ -141,3 +142,33 @@ def test_a_train_reference_is_judged_by_the_scenarios_alone_the_engine_also_by_i
     assert judges("sut.reference.bulk.x_slope__mutmut_53", ids) == \
         ["features/test_outline.py::test_fnet01_a", "features/test_outline.py::test_filk06_b",
          "tests/test_bulk.py::test_both_ways", "tests/test_kernel.py::test_k"]
+
+
+@pytest.mark.parametrize(("under_test", "snapshots"), [("stats", False), ("", True),
+                                                       ("sut.reference.crh2.ring.xǁRingǁ_start__mutmut_4", True)])
+def test_snapshots_are_off_only_while_mutmut_maps_scenarios_to_functions(under_test: str, snapshots: bool,
+                                                                         monkeypatch: pytest.MonkeyPatch) -> None:
+    # A scenario restored from a stored state never calls the functions that built it: in the mapping run
+    # that would hide who reaches what; in a mutant's own run (a fresh session) every stored state was built
+    # under that mutant, so the verdicts are those of a run without snapshots.
+    from types import SimpleNamespace
+
+    from outline import mutation_plugin
+    monkeypatch.setenv("MUTANT_UNDER_TEST", under_test)
+    config = SimpleNamespace(option=SimpleNamespace(no_snapshots=False))
+    mutation_plugin.pytest_configure(config)
+    assert config.option.no_snapshots is not snapshots
+
+
+def test_a_mutant_of_a_backend_s_self_description_is_passed_over_and_counted(monkeypatch: pytest.MonkeyPatch) -> None:
+    names = ["sut.reference.metro.backend.xǁReferenceMetroǁdescribe__mutmut_3",
+             "sut.reference.metro.config.xǁMetroConfigǁdescribe__mutmut_23",
+             "sut.reference.metro.backend.xǁReferenceMetroǁmonitor__mutmut_2"]
+    monkeypatch.setattr(mutation, "describe", lambda name: Mutant(name, "metro", "sut/reference/metro/backend.py",
+                                                                  1, "a", "b"))
+    monkeypatch.setattr(mutation, "equivalents", lambda: [])
+    monkeypatch.setattr(mutation, "in_usage_error", lambda path, line: False)
+    left_out: dict[str, int] = {}
+    chosen = mutation.sample(names, 3, seed=1, left_out=left_out)
+    assert [m.name for m in chosen] == [names[2]]
+    assert left_out == {"self-description": 2}
