@@ -340,6 +340,8 @@ def test_the_metro_advances_in_bulk_with_the_same_state_and_trace(jumps: list[in
         metro.fail("car3.VVVF")                       # reported after three unanswered status polls
         run(5 * S)
         metro.repair("car3.VVVF")
+        metro.disturb_line("WTB", "B", 600)           # frames to disturb: a countdown across periods
+        run(4 * S)
         metro.cut_line("unit1.MVB", "A")              # line switch, fault record over the WTB to both CCUs
         run(4 * S + 333)
         metro.fail("car1.CCU")                        # MVB and WTB masters taken over by rank
@@ -410,3 +412,30 @@ def test_a_read_given_the_last_one_stops_at_the_first_difference_and_is_whole_ot
     with pytest.raises(bulk.Changing):
         bulk.snapshot(train, alike)
     assert bulk.snapshot(train).shape != alike.shape     # what the early stop saw, a whole read sees too
+
+
+def test_a_damaged_frame_in_flight_when_the_state_is_read_is_simulated_past(monkeypatch: pytest.MonkeyPatch) -> None:
+    # A damaged frame in flight is no steady traffic: reading the state then fails (NotSteady) and the
+    # soak simulates a period frame by frame before it reads again. Status data damaged on one span for
+    # a while puts such frames in flight at many of the reads.
+    refused: list[int] = []
+    read = bulk.snapshot
+
+    def reading(train, *args):
+        try:
+            return read(train, *args)
+        except bulk.NotSteady:
+            refused.append(train.kernel.now)
+            raise
+
+    def script(train: ReferenceTrain, run) -> None:
+        train.corrupt_frames("car3.LCU", "car4.LCU", "status", 300)
+        run(20 * S)
+
+    exact, fast = both_ways(script)
+    monkeypatch.setattr(bulk, "snapshot", reading)
+    again = powered()
+    script(again, lambda us: again.soak(us))
+    assert refused, "no read of the state met a damaged frame in flight"
+    assert_same(exact, fast)
+    assert again.trace[:] == fast.trace[:]

@@ -12,6 +12,7 @@ from __future__ import annotations
 from typing import TYPE_CHECKING
 
 from sut.reference.crh2.frames import KIND_NAMES
+from sut.reference.crh2.ring import ENDLESS
 
 if TYPE_CHECKING:
     from sut.reference.crh2.boards import PowerSupply
@@ -23,8 +24,7 @@ if TYPE_CHECKING:
 TRAIN_SUPPLY = "train 110V"
 WHOLE_TRAIN = "train"
 # Damaging "every frame for a while" rides on the span's per-sender corruption counts (the same place
-# corrupt_frames writes): a count no run can use up.
-ENDLESS = 1 << 40
+# corrupt_frames writes): a count no run can use up (ring.ENDLESS).
 BROKEN_MOHM = 0.5
 
 

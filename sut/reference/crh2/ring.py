@@ -21,6 +21,9 @@ if TYPE_CHECKING:
     from sut.reference.crh2.context import TrainContext
 
 R, L = "R", "L"     # R: increasing node number, L: decreasing
+# A span damaged by interference (environment.py) damages every frame for as long as the burst lasts: its
+# count of frames to damage starts this high, never runs out meanwhile, and the burst's end takes it off.
+ENDLESS = 1 << 40
 OPPOSITE = {R: L, L: R}
 
 
@@ -61,6 +64,12 @@ class Span:
     @property
     def name(self) -> str:
         return f"{self.a.name}~{self.b.name}"
+
+    def bulk_steady(self) -> bool:
+        """bulk.py: frames still to damage (corrupt_frames) are a countdown that stops at zero, which no
+        straight line through the periods shows: simulated until it ran out. An interference burst's
+        endless count only goes down the whole time, and its end is a timer bulk.py does not jump."""
+        return all(left == 0 or left > ENDLESS // 2 for left in self.corrupt.values())
 
     @property
     def usable(self) -> bool:

@@ -28,6 +28,11 @@ class Line:
     bad_run: int = 0           # consecutive frames this line did not bring intact
     reported: bool = False     # the diagnosing unit has reported this line faulty
 
+    def bulk_steady(self) -> bool:
+        # bulk.py: frames still to disturb are a countdown that stops at zero, which no straight line
+        # through the periods shows: simulated until it ran out.
+        return self.disturb == 0
+
 
 class Carried(NamedTuple):
     """What one frame became on the bus: data for the receivers, or None if no line brought it intact.
