@@ -439,3 +439,24 @@ def test_a_damaged_frame_in_flight_when_the_state_is_read_is_simulated_past(monk
     assert refused, "no read of the state met a damaged frame in flight"
     assert_same(exact, fast)
     assert again.trace[:] == fast.trace[:]
+
+
+def test_a_soak_s_trace_outside_its_skips_is_the_frame_by_frame_trace() -> None:
+    # A soak owes no trace over what it skipped, but everything it does show (the samples, replayed or
+    # simulated, and the stretches between) must be what frame by frame shows at those instants: nothing
+    # more, nothing less, in time order.
+    def script(train: ReferenceTrain, run) -> None:
+        run(2 * MIN)
+
+    exact, fast = both_ways(script, sample_every_us=30 * S)
+    assert_same(exact, fast)
+    gaps = skipped(fast)
+    report, = fast.trace.select(kind="bulk.report")
+    assert gaps and report["replayed_us"] > 0, f"the soak skipped or replayed nothing: {report}"
+
+    def shown(ev) -> bool:
+        return not any(frm < ev.t <= to for frm, to in gaps)
+
+    seen = [ev for ev in fast.trace if ev.kind not in ("time.skip", "bulk.report")]
+    assert [ev.t for ev in seen] == sorted(ev.t for ev in seen), "the soak's trace is out of time order"
+    assert seen == [ev for ev in exact.trace if shown(ev)]
