@@ -6,8 +6,10 @@ the mutant, and stops at the first failure (-x); it keeps only the exit code.
 - What may judge it: a train reference (crh2, metro, atp) is judged by the conformance scenarios alone. The
   simulation engine they share (kernel.py, bulk.py) is no train: its specification is that a bulk advance
   gives the same state and trace as frame by frame (tests/test_bulk.py) and the kernel's own contract
-  (tests/test_kernel.py), so its mutants also meet those tests, after the scenarios. mutmut collects all of
-  them (pyproject.toml); this leaves each mutant only its own judges.
+  (tests/test_kernel.py), so its mutants also meet those tests, and first: they compare bulk with frame by
+  frame directly, where a scenario notices a bulk mistake only in its one long advance, after hundreds of
+  short ones (an engine mutant took minutes to reach it). mutmut collects all of them (pyproject.toml); this
+  leaves each mutant only its own judges.
 - What killed it: the failing test, one line per mutant, in the file named by $CRH2_MUTATION_KILLS.
 - Snapshots only where they cannot hide a scenario: mutmut learns who reaches what in one run of every test
   (MUTANT_UNDER_TEST=stats), and a scenario restored from a stored state never calls the functions that built
@@ -34,9 +36,11 @@ def pytest_configure(config: pytest.Config) -> None:
 
 
 def judges(mutant: str, nodeids: list[str]) -> list[str]:
-    """The tests that may judge `mutant`, scenarios first."""
+    """The tests that may judge `mutant`: the scenarios; for the engine its own tests first, then those."""
     scenarios = [n for n in nodeids if n.startswith("features/")]
-    return scenarios + ([n for n in nodeids if not n.startswith("features/")] if mutant.startswith(ENGINE) else [])
+    if mutant.startswith(ENGINE):
+        return [n for n in nodeids if not n.startswith("features/")] + scenarios
+    return scenarios
 
 
 @pytest.hookimpl(trylast=True)

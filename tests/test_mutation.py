@@ -140,8 +140,8 @@ def test_a_train_reference_is_judged_by_the_scenarios_alone_the_engine_also_by_i
     assert judges("sut.reference.crh2.ring.xǁRingǁ_start__mutmut_4", ids) == \
         ["features/test_outline.py::test_fnet01_a", "features/test_outline.py::test_filk06_b"]
     assert judges("sut.reference.bulk.x_slope__mutmut_53", ids) == \
-        ["features/test_outline.py::test_fnet01_a", "features/test_outline.py::test_filk06_b",
-         "tests/test_bulk.py::test_both_ways", "tests/test_kernel.py::test_k"]
+        ["tests/test_bulk.py::test_both_ways", "tests/test_kernel.py::test_k",
+         "features/test_outline.py::test_fnet01_a", "features/test_outline.py::test_filk06_b"]
 
 
 @pytest.mark.parametrize(("under_test", "snapshots"), [("stats", False), ("", True),
