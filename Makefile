@@ -71,8 +71,8 @@ test: $(VENV_STAMP) $(NODE_STAMP) $(CHROMIUM) ## the project's own tests, then t
 	echo "make test: tests exit $$t, conformance run exit $$f"; \
 	[ $$t -eq 0 ] && [ $$f -eq 0 ]
 
-mutate: $(VENV_STAMP) $(MUTATE_STAMP) ## mutation testing of the references (MUTANTS=200 SEED=1): kill rate per reference, reports/mutation.md
-	$(PY) -m outline.mutation --mutants $(MUTANTS) --seed $(SEED) $(if $(filter auto,$(JOBS)),,--jobs $(JOBS))
+mutate: $(VENV_STAMP) $(MUTATE_STAMP) ## mutation testing of the references (MUTANTS=200 SEED=1, RESUME=1 keeps the last run's kills): kill rate per reference, reports/mutation.md
+	$(PY) -m outline.mutation --mutants $(MUTANTS) --seed $(SEED) $(if $(filter auto,$(JOBS)),,--jobs $(JOBS)) $(if $(RESUME),--resume)
 
 # No Allure report: 16,120 rows make one of ~400 MB even with evidence for failures only (3160 rows: 82 MB).
 # A campaign's report: make report PYTEST_ARGS="--item F-NET-32 --evidence failed".

@@ -188,14 +188,28 @@ def sample(names: list[str], count: int, seed: int, left_out: dict[str, int] | N
     return chosen
 
 
-def run(mutants: list[Mutant], jobs: int) -> None:
-    """Phase 3: mutmut runs the sample; statuses from its records, the killing scenario from the plugin."""
-    from mutmut.stats import status_by_exit_code
-    KILLS.unlink(missing_ok=True)
-    _mutmut("run", "--max-children", str(jobs), *[m.name for m in mutants], env={"CRH2_MUTATION_KILLS": str(KILLS)})
+def _codes() -> dict[str, int | None]:
     codes: dict[str, int | None] = {}
     for meta in MUTANTS_DIR.rglob("*.py.meta"):
         codes.update(json.loads(meta.read_text(encoding="utf-8"))["exit_code_by_key"])
+    return codes
+
+
+def run(mutants: list[Mutant], jobs: int, resume: bool = False) -> None:
+    """Phase 3: mutmut runs the sample; statuses from its records, the killing scenario from the plugin.
+    With `resume`, a mutant the last run already rejected keeps its verdict (and its killer) and only the
+    rest run: survivors again (scenarios may have been added since), and those never checked."""
+    from mutmut.stats import status_by_exit_code
+    todo = mutants
+    if resume:
+        codes = _codes()
+        todo = [m for m in mutants if status_by_exit_code[codes.get(m.name)] not in DETECTED]
+    else:
+        KILLS.unlink(missing_ok=True)
+    print(f"mutmut: running {len(todo)} of the {len(mutants)} drawn mutants", flush=True)
+    if todo:
+        _mutmut("run", "--max-children", str(jobs), *[m.name for m in todo], env={"CRH2_MUTATION_KILLS": str(KILLS)})
+    codes = _codes()
     killers = dict(line.split("\t", 1) for line in KILLS.read_text(encoding="utf-8").splitlines()) \
         if KILLS.exists() else {}
     for mutant in mutants:
@@ -264,6 +278,8 @@ def main(argv: list[str] | None = None) -> int:
     parser.add_argument("--mutants", type=int, default=200, help="how many mutants to sample (default 200)")
     parser.add_argument("--seed", type=int, default=1, help="seed of the sample (default 1)")
     parser.add_argument("--jobs", type=int, default=os.cpu_count() or 2, help="mutants tested at once")
+    parser.add_argument("--resume", action="store_true",
+                        help="keep the verdicts of drawn mutants the last run rejected; run the others")
     parser.add_argument("--out", type=Path, default=ROOT / "reports", help="where mutation.md/.json go")
     parser.add_argument("--to-allure", type=Path, metavar="RESULTS",
                         help="run nothing: add the last run (--out/mutation.json) to this Allure results folder")
@@ -280,7 +296,7 @@ def main(argv: list[str] | None = None) -> int:
     passed_over = ", ".join(f"{n} {why}" for why, n in sorted(left_out.items())) or "none"
     print(f"mutmut: {len(names)} mutants of the references; testing {len(mutants)} (seed {args.seed}; "
           f"passed over while drawing: {passed_over}) ...", flush=True)
-    run(mutants, args.jobs)
+    run(mutants, args.jobs, resume=args.resume)
     text = table(mutants, args.seed, left_out)
     args.out.mkdir(parents=True, exist_ok=True)
     (args.out / "mutation.md").write_text(text, encoding="utf-8")

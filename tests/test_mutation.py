@@ -172,3 +172,21 @@ def test_a_mutant_of_a_backend_s_self_description_is_passed_over_and_counted(mon
     chosen = mutation.sample(names, 3, seed=1, left_out=left_out)
     assert [m.name for m in chosen] == [names[2]]
     assert left_out == {"self-description": 2}
+
+
+def test_a_resumed_run_keeps_the_kills_and_runs_survivors_and_the_unchecked_again(tmp_path: Path,
+                                                                                  monkeypatch: pytest.MonkeyPatch) -> None:
+    drawn = [Mutant(f"sut.reference.atp.vdx.x_f__mutmut_{n}", "atp", "sut/reference/atp/vdx.py", 1, "a", "b")
+             for n in (1, 2, 3, 4)]
+    before = {drawn[0].name: 1, drawn[1].name: 0, drawn[2].name: None, drawn[3].name: 36}   # killed, survived, -, timeout
+    after = {**before, drawn[1].name: 1, drawn[2].name: 0}
+    ran: list[tuple[str, ...]] = []
+    kills = tmp_path / "kills.tsv"
+    kills.write_text(f"{drawn[0].name}\tfeatures/test_outline.py::test_fatp01_a\n", encoding="utf-8")
+    monkeypatch.setattr(mutation, "KILLS", kills)
+    monkeypatch.setattr(mutation, "_codes", lambda: after if ran else before)
+    monkeypatch.setattr(mutation, "_mutmut", lambda *args, env=None: ran.append(args))
+    mutation.run(drawn, 2, resume=True)
+    assert ran == [("run", "--max-children", "2", drawn[1].name, drawn[2].name)]
+    assert [m.status for m in drawn] == ["killed", "killed", "survived", "timeout"]
+    assert drawn[0].killed_by == "test_fatp01_a"          # the last run's killer kept
