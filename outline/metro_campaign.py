@@ -84,8 +84,10 @@ def _pulls(bound: int) -> str:
 MASTERS_STAY = (_wtb(WTB_RANKS[0], WTB_CYCLE), _mvb(ACTIVE_CCU, MVB1, MVB_PERIOD), _mvb(OTHER_CCU, MVB2, MVB_PERIOD))
 STAY_REQS = ("RED-04", "TCN-04", "TCN-08")     # WTB master by rank; each CCU masters its MVB; the command reaches
 
-LINE = Group("<fault>: the other line carries everything, the train pulls", ("RED-06", *STAY_REQS),
-             (_pulls(DELIVERY), 'no message on "<bus>" is lost', *MASTERS_STAY))
+# RED-06: the line fault is diagnosed and recorded (F-NET-23's text); RED-05: in both CCU memories, once each.
+RECORDED = tuple(f'"{ccu}" holds the record "<bus> line <line>: fault" exactly once' for ccu in (ACTIVE_CCU, OTHER_CCU))
+LINE = Group("<fault>: the other line carries everything, the train pulls", ("RED-06", "RED-05", *STAY_REQS),
+             (_pulls(DELIVERY), 'no message on "<bus>" is lost', *MASTERS_STAY, *RECORDED))
 STANDBY = Group("<fault>, a standby lost: the masters stay, the train pulls", ("RED-05", *STAY_REQS),
                 (_pulls(DELIVERY), *MASTERS_STAY))
 ASIDE = Group("<fault>, off the command's way: the masters stay, the train pulls", STAY_REQS,

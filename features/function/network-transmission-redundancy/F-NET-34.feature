@@ -22,7 +22,7 @@ Feature: F-NET-34 Single-fault campaign, metro 6-car train
     And the direction switch of cab 1 is at forward
     And the train has been powered up for 1000 ms
 
-  @req:RED-06 @req:RED-04 @req:TCN-04 @req:TCN-08
+  @req:RED-06 @req:RED-05 @req:RED-04 @req:TCN-04 @req:TCN-08
   Scenario Outline: F-NET-34 Line <line> of "<bus>" cut: the other line carries everything, the train pulls
     When line <line> of "<bus>" is cut
     And the driver moves the master controller of cab 1 to 60 % traction
@@ -32,6 +32,8 @@ Feature: F-NET-34 Single-fault campaign, metro 6-car train
     And "car1.CCU" is the WTB master within 25 ms and stays so
     And "car1.CCU" is the master of "unit1.MVB" within 1 ms and stays so
     And "car6.CCU" is the master of "unit2.MVB" within 1 ms and stays so
+    And "car1.CCU" holds the record "<bus> line <line>: fault" exactly once
+    And "car6.CCU" holds the record "<bus> line <line>: fault" exactly once
     And no VVVF ever applies a traction other than 0 or 60 %
     And no VVVF ever pulls while a BECU brakes
     And no BECU applies a brake from the fault on
