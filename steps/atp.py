@@ -381,6 +381,19 @@ def _(sut: TrainDriver, t_action: int, a: float, b: float, tol: float) -> None:
     assert b <= off[0]["at_m"] <= b + tol, f"passing ended at {off[0]['at_m']} m, section to {b} m"
 
 
+@then("ATP正在输出过分相命令")
+@then("the ATP is commanding neutral-section passing")
+def _(sut: TrainDriver) -> None:
+    # The command line to the train itself, not its log: what the vehicle acts on.
+    assert sut.output("neutral section") == "passing", f"the ATP's neutral-section output is {sut.output('neutral section')!r}"
+
+
+@then("ATP未输出过分相命令")
+@then("the ATP is not commanding neutral-section passing")
+def _(sut: TrainDriver) -> None:
+    assert sut.output("neutral section") == "none", f"the ATP's neutral-section output is {sut.output('neutral section')!r}"
+
+
 @then(parsers.parse('丢失应答器组"{group}"时的链接反应为{reaction}'), converters={"reaction": zh.atp_reaction})
 @then(parsers.parse('the linking reaction to the missing group "{group}" is {reaction}'))
 def _(sut: TrainDriver, t_action: int, group: str, reaction: str) -> None:

@@ -248,6 +248,33 @@ def _(sut: TrainDriver, t_action: int, line: str, bus: str) -> None:
         f"no discarded frame from line {line} of {bus}"
 
 
+@then(parsers.parse('线路{line:w}上受干扰的{n:d}帧都被"{bus}"丢弃'))
+@then(parsers.parse('all {n:d} disturbed frames from line {line:w} of "{bus}" are discarded'))
+def _(sut: TrainDriver, t_action: int, n: int, line: str, bus: str) -> None:
+    # Each frame the stimulus disturbed fails its check on that line: at least that many discards (a rig
+    # may log one per receiver).
+    discards = [d for d in sut.trace.select(kind="frame.discard", source=bus, since=t_action)
+                if d["error"].startswith(f"line {line}")]
+    assert len(discards) >= n, f"{len(discards)} frames from line {line} of {bus} discarded, {n} disturbed"
+
+
+@then(parsers.parse('"{bus}"自{after:g} ms起不再丢弃线路{line:w}上的帧'))
+@then(parsers.parse('no frame from line {line:w} of "{bus}" is discarded from {after:g} ms on'))
+def _(sut: TrainDriver, t_action: int, line: str, bus: str, after: float) -> None:
+    # A disturbance of some frames is over once they passed: the line carries intact frames again.
+    discards = [d for d in sut.trace.select(kind="frame.discard", source=bus, since=t_action + us(after))
+                if d["error"].startswith(f"line {line}")]
+    assert not discards, f"line {line} of {bus} still loses frames {after:g} ms on: {describe(discards[:5])}"
+
+
+@then("WTB主站的每次轮询都得到应答")
+@then("every WTB poll is answered")
+def _(sut: TrainDriver, t_action: int) -> None:
+    polls = _polls(sut, "WTB", t_action)
+    silent = [p for p in polls if not p["answered"]]
+    assert polls and not silent, f"{len(silent)} of {len(polls)} WTB polls unanswered: {describe(silent[:5])}"
+
+
 # -- traction and brake at the VVVF and BECU -----------------------------------------------------------
 @then(parsers.parse("每个VVVF施加{pct:g} %牵引"))
 @then(parsers.parse("every VVVF applies {pct:g} % traction"))

@@ -25,6 +25,7 @@ Feature: F-NET-21 Metro train network: WTB between the units, one MVB in each, t
     When 1000 ms pass
     Then "car1.CCU" is the WTB master within 25 ms and stays so
     And the WTB master polls every node at least every 25 ms
+    And every WTB poll is answered
     And no WTB master frame comes from "car6.CCU", "car4.VCU", "car5.VCU"
 
   @req:TCN-01 @req:TCN-03 @req:TCN-04

@@ -40,6 +40,8 @@ Feature: F-NET-23 Dual lines A and B on the WTB and on each MVB
     When the next 3 frames on line A of "unit2.MVB" are disturbed
     And 100 ms pass
     Then frames from line A of "unit2.MVB" that fail their check are discarded
+    And all 3 disturbed frames from line A of "unit2.MVB" are discarded
+    And no frame from line A of "unit2.MVB" is discarded from 10 ms on
     And no message on "unit2.MVB" is lost
     And no VVVF or BECU changes what it applies
 

@@ -17,6 +17,14 @@ Feature: F-ATP-12 Neutral sections from ETCS-68, ETCS-46 parsed, and the missing
     Then the ATP commands neutral-section passing from 1000 m to 1030 m, to within 1 m
 
   @req:ATP-11
+  Scenario: F-ATP-12 Inside the neutral section the ATP's output commands passing, after it no longer
+    Given the train has passed balise group "5-1-1-1" announcing a neutral section from 1000 m, 30 m long (ETCS-68)
+    When the train runs from 900 m to 1015 m at 72 km/h
+    Then the ATP is commanding neutral-section passing
+    When the train runs from 1015 m to 1100 m at 72 km/h
+    Then the ATP is not commanding neutral-section passing
+
+  @req:ATP-11
   Scenario: F-ATP-12 An ETCS-46 packet is read without error
     When the train passes balise group "5-1-1-2" with an ETCS-46 packet
     And 100 ms pass
