@@ -165,6 +165,15 @@ def _(sut: TrainDriver, t_action: int, device: str, milliamps: int) -> None:
     assert loops == {f"{milliamps}mA"}, f"{device} is on a {', '.join(sorted(loops))} loop, not {milliamps} mA"
 
 
+@then(parsers.parse('"{device}"接在20 mA或30 mA电流环上'))
+@then(parsers.parse('"{device}" is on a 20 mA or a 30 mA current loop'))
+def _(sut: TrainDriver, t_action: int, device: str) -> None:
+    # NET-09 names the two loops and leaves which one a simple device uses open.
+    loops = {ev.get("loop") for ev in sut.trace.select(kind="loop.*", source=device, since=t_action)}
+    assert loops, f"nothing went over {device}'s current loop"
+    assert loops <= {"20mA", "30mA"}, f"{device} is on {loops}, not a 20 mA or 30 mA loop"
+
+
 def _one_way(sut: TrainDriver, since: int, device: str, kind: str, lo: float, hi: float) -> None:
     events = sut.trace.select(kind="loop.*", source=device, since=since)
     assert events, f"nothing went over {device}'s current loop"

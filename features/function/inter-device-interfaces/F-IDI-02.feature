@@ -38,3 +38,5 @@ Feature: F-IDI-02 Current-loop devices polled at their own periods, simple devic
     And "car1.DD" only sends to its LCU, every 99 to 101 ms
     And "car8.DD" only sends to its LCU, every 99 to 101 ms
     And car 4 has no DD
+    And "car1.DD" is on a 20 mA or a 30 mA current loop
+    And "car3.SDD" is on a 20 mA or a 30 mA current loop
