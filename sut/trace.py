@@ -141,7 +141,7 @@ class Trace:
         """Events whose kind `wanted` accepts, within [since, until] (us, inclusive), in list order: what a
         walk over every event keeping those kinds gives, read from the index (a report picks a handful of
         kinds out of a trace that is mostly periodic frames)."""
-        if type(self) is not Trace:                         # another driver's events (snapshot journal): walk
+        if type(self) is not Trace:                         # a subclass may stand for another's events: walk
             return [ev for ev in self._since(since) if (until is None or ev.t <= until) and wanted(ev.kind)]
         events = self._events
         self._positions("", None)                           # the index up to date
