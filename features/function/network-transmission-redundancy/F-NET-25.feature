@@ -40,6 +40,19 @@ Feature: F-NET-25 Train network failure: brake to a stop, then hard-wired emerge
     And 100 ms pass
     Then every BECU applies 40 % brake within 50 ms
     And every VVVF applies 0 % traction
+    When the driver moves the master controller of cab 1 to 60 % traction
+    And the driver sets the direction switch of cab 1 to neutral
+    And 100 ms pass
+    Then every VVVF applies 0 % traction within 50 ms
+    When the driver removes the key from cab 1
+    And 100 ms pass
+    Then every BECU applies 100 % brake within 50 ms
+    And every VVVF applies 0 % traction
+    When the driver inserts the key in cab 1
+    And the driver sets the direction switch of cab 1 to forward
+    And 100 ms pass
+    Then every VVVF applies 60 % traction within 50 ms
+    And every BECU applies 0 % brake
     When the driver turns the emergency-operation switch off
     And 100 ms pass
     Then every BECU applies 100 % brake within 50 ms

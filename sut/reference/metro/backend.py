@@ -76,17 +76,22 @@ class ReferenceMetro(PickledState, TrainDriver):
             raise OutOfRange("cab", cab, "1 or 6 (the cab cars of a metro train)")
         return self._train.desk[cab]
 
+    # Every desk input refreshes what the drives apply, as traction and brake do: in emergency operation the
+    # desk acts through hard wires (TCN-09), so a key taken out or a direction switch at neutral acts at once.
     def insert_key(self, cab: int) -> None:
         self._desk(cab)["key"] = True
         self._mark(f"car{cab}.desk", "desk.key", inserted=True)
+        self._train.refresh_outputs()
 
     def remove_key(self, cab: int) -> None:
         self._desk(cab)["key"] = False
         self._mark(f"car{cab}.desk", "desk.key", inserted=False)
+        self._train.refresh_outputs()
 
     def set_direction(self, cab: int, direction: str) -> None:
         self._desk(cab)["direction"] = self.check_direction(direction)
         self._mark(f"car{cab}.desk", "desk.direction", value=direction)
+        self._train.refresh_outputs()
 
     def set_traction(self, cab: int, notch: int) -> None:
         """Master controller traction demand in % (0-100)."""
