@@ -21,7 +21,8 @@ from dataclasses import dataclass
 from pathlib import Path
 
 from . import double_campaign, metro_campaign
-from .campaign_text import INVARIANTS, KIND_ORDER, NOTCH, RIDE, STEP, TAKEOVER, WINDOW, background, examples, numbered
+from .campaign_text import (INVARIANTS, KIND_ORDER, NOTCH, RIDE, STEP, TAKEOVER, WINDOW, background, examples,
+                            numbered, powered)
 from .fault_model import Fault, TrainShape, car_of
 
 @dataclass(frozen=True)
@@ -149,25 +150,13 @@ def _outline(campaign: Campaign, group: Group, kind: str, members: list[tuple[Fa
     ]
 
 
-def _open(spec: str, sets: int):
-    from sut.backends import open_backend
-
-    sut = open_backend(spec, "crh2")
-    sut.configure(sets=sets, cars_per_set=8)
-    sut.power_on()
-    return sut
-
-
 def run(root: Path, spec: str, check: bool) -> int:
     stale = []
     described: dict[int, tuple] = {}          # sets -> (faults, left out, shape): one train per composition
     for campaign in CAMPAIGNS:
         if campaign.sets not in described:
-            sut = _open(spec, campaign.sets)
-            try:
+            with powered(spec, "crh2", campaign.sets, 8) as sut:
                 described[campaign.sets] = (*fault_space(sut), TrainShape.of(sut))
-            finally:
-                sut.shutdown()
         faults, left_out, shape = described[campaign.sets]
         if campaign.pairs:
             text = double_campaign.render(campaign.item, campaign.title, campaign.given, faults, shape,

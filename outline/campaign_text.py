@@ -3,6 +3,9 @@ the command and its bounds, the sentences a fault is told in, the Background, th
 checks, and an aligned Examples table."""
 from __future__ import annotations
 
+from contextlib import contextmanager
+from typing import Iterator
+
 NOTCH = 6
 STEP = "B"                     # notch 6 on the digital outputs of paths 2 and 3 (CMD-03/04)
 
@@ -53,3 +56,18 @@ def examples(table: list[list[str]]) -> list[str]:
     widths = [max(len(row[i]) for row in table) for i in range(len(table[0]))]
     return ["    Examples:",
             *["      | " + " | ".join(cell.ljust(w) for cell, w in zip(row, widths)) + " |" for row in table]]
+
+
+@contextmanager
+def powered(spec: str, profile: str, sets: int, cars_per_set: int) -> Iterator:
+    """The SUT `spec` opened on `profile`, composed and powered up, for reading its fault space; shut down
+    afterwards."""
+    from sut.backends import open_backend
+
+    sut = open_backend(spec, profile)
+    try:
+        sut.configure(sets=sets, cars_per_set=cars_per_set)
+        sut.power_on()
+        yield sut
+    finally:
+        sut.shutdown()

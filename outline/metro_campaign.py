@@ -14,7 +14,8 @@ from __future__ import annotations
 import sys
 from dataclasses import dataclass
 
-from .campaign_text import background, examples
+from .campaign_text import background, examples, powered
+from .fault_model import Fault  # kind: line, unit, board, module, device; values: (bus, line) or the name
 
 ITEM = "F-NET-34"
 PATH = "features/function/network-transmission-redundancy/F-NET-34.feature"
@@ -47,16 +48,6 @@ WINDOW = 1000
 
 
 @dataclass(frozen=True)
-class Fault:
-    kind: str                  # line, unit, board, module, device
-    values: tuple[str, ...]    # (bus, line) of a line; the name of the rest
-
-    @property
-    def name(self) -> str:
-        return f"{self.values[0]} line {self.values[1]}" if self.kind == "line" else self.values[0]
-
-
-@dataclass(frozen=True)
 class Group:
     """Faults the design answers alike, and its answer in the hand-written metro features' sentences."""
     title: str                 # <fault>: the fault as a title names it
@@ -67,6 +58,11 @@ class Group:
 @dataclass(frozen=True)
 class LeftOut:
     reason: str
+
+
+def named(fault: Fault) -> str:
+    """How the feature's list of faults left out names one: a line by its bus, the rest by their name."""
+    return f"{fault.values[0]} line {fault.values[1]}" if fault.kind == "line" else fault.values[0]
 
 
 def _wtb(node: str, bound: int) -> str:
@@ -213,7 +209,7 @@ def render(faults: list[Fault]) -> str:
         f"{MVB_PERIOD} ms (F-NET-21);",
         f"  after a takeover the command still has its delivery to go. Each scenario watches {WINDOW} ms.",
         "  Not in the campaign:",
-        *[f"  - {', '.join(f.name for f, a in left_out if a is why)}: {why.reason}"
+        *[f"  - {', '.join(named(f) for f, a in left_out if a is why)}: {why.reason}"
           for why in dict.fromkeys(answer for _, answer in left_out)],
         "",
         *background(GIVEN),
@@ -261,14 +257,9 @@ def rows_of(text: str) -> list[dict[str, str]]:
 
 def generate(spec: str) -> tuple[str, str] | None:
     """(path, text) of F-NET-34 from the SUT `spec`'s metro train; None if it has no metro-tcn profile."""
-    from sut.backends import open_backend, resolve
+    from sut.backends import resolve
 
     if "metro-tcn" not in resolve(spec).PROFILES:
         return None
-    sut = open_backend(spec, "metro-tcn")
-    try:
-        sut.configure(sets=1, cars_per_set=6)
-        sut.power_on()
+    with powered(spec, "metro-tcn", 1, 6) as sut:
         return PATH, render(fault_space(sut))
-    finally:
-        sut.shutdown()

@@ -10,18 +10,15 @@ import pytest
 from outline import campaign, metro_campaign
 from outline.campaign import NO_MDM9, OFF_THE_RING, RIDES, TAKES_OVER
 from outline.fault_model import Fault, TrainShape
-from sut.backends import open_backend
+from outline.campaign_text import powered
 from tests.variants import DOUBLE_ONLY
 from tests.test_faulty_variants import ROOT
 
 
 @pytest.fixture(scope="module")
 def eight_cars():
-    sut = open_backend("reference", "crh2")
-    sut.configure(sets=1, cars_per_set=8)
-    sut.power_on()
-    yield sut
-    sut.shutdown()
+    with powered("reference", "crh2", 1, 8) as sut:
+        yield sut
 
 
 def test_the_checked_in_campaigns_are_the_sut_fault_space(capsys) -> None:

@@ -7,18 +7,15 @@ import pytest
 from outline import metro_campaign as mc
 from outline.metro_campaign import (ACTIVE_LOST, ASIDE, DEAD_BRAKE, DEAD_DRIVE, DEAF_CCU, LINE, MODULE_2, MODULE_IDLE,
                                     OTHER_LOST, STANDBY, Fault)
-from sut.backends import open_backend
+from outline.campaign_text import powered
 from tests.test_faulty_variants import ROOT
 
 
 
 @pytest.fixture(scope="module")
 def metro():
-    sut = open_backend("reference", "metro-tcn")
-    sut.configure(sets=1, cars_per_set=6)
-    sut.power_on()
-    yield sut
-    sut.shutdown()
+    with powered("reference", "metro-tcn", 1, 6) as sut:
+        yield sut
 
 
 @pytest.fixture(scope="module")
