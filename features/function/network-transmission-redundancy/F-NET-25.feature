@@ -12,10 +12,10 @@ Feature: F-NET-25 Train network failure: brake to a stop, then hard-wired emerge
     And the direction switch of cab 1 is at forward
     And the master controller of cab 1 demands 60 % traction
     And the train runs at 30 km/h
-    And the train has been powered up for 1000 ms
 
   @req:TCN-09
   Scenario: F-NET-25 Both MVB lines of unit 1 cut: every VVVF of the unit stops pulling, every BECU brakes
+    Given the train has been powered up for 1000 ms
     When line A of "unit1.MVB" is cut
     And line B of "unit1.MVB" is cut
     And 1000 ms pass
@@ -24,6 +24,7 @@ Feature: F-NET-25 Train network failure: brake to a stop, then hard-wired emerge
 
   @req:TCN-09
   Scenario: F-NET-25 Unit 1 lost entirely: the train brakes to a stop, then runs in emergency operation
+    Given the train has been powered up for 1000 ms
     When "car1.CCU", "car2.VCU", "car3.VCU" fail together
     And 12 s pass
     Then every VVVF applies 0 % traction
@@ -61,6 +62,7 @@ Feature: F-NET-25 Train network failure: brake to a stop, then hard-wired emerge
 
   @req:TCN-09
   Scenario: F-NET-25 Emergency operation is not taken at speed
+    Given the train has been powered up for 1000 ms
     When "car1.CCU", "car2.VCU", "car3.VCU" fail together
     And 1000 ms pass
     And the driver turns the emergency-operation switch on
@@ -71,7 +73,18 @@ Feature: F-NET-25 Train network failure: brake to a stop, then hard-wired emerge
 
   @req:TCN-09
   Scenario: F-NET-25 A healthy network does not brake
+    Given the train has been powered up for 1000 ms
     When 3 s pass
     Then every VVVF applies 60 % traction
     And every BECU applies 0 % brake
+    And the cab 1 display shows the mode "normal"
+
+  @req:TCN-09
+  Scenario: F-NET-25 A WTB dead from power-up: the unit without the key never hears a train command and brakes
+    Given line A of "WTB" is cut
+    And line B of "WTB" is cut
+    And the train has been powered up for 1000 ms
+    When 500 ms pass
+    Then the cab 6 display shows the mode "train network failure"
+    And "car6.CCU" holds a record "train network failure: braking to a stop"
     And the cab 1 display shows the mode "normal"

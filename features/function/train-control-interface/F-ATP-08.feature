@@ -1,6 +1,6 @@
 @item:F-ATP-08 @profile:atp @req:TST-04
 Feature: F-ATP-08 Carrier consistency against the balise's track circuits, at both ends of the receiver range
-  Requirements: ATP-02 (primary), TST-04.
+  Requirements: ATP-02 (primary), ATP-10, TST-04.
   The project's formula (the article's is an image): the CFSK receiver was somewhere in
   Dmin = (front - uncertainty) - D_Sen - v*dt .. Dmax = (front + uncertainty) - D_Sen when it decoded; every
   track circuit of the balise's CTCS-1 packet overlapping that range gives an allowed carrier. A received
@@ -41,6 +41,17 @@ Feature: F-ATP-08 Carrier consistency against the balise's track circuits, at bo
       | 36  |
       | 72  |
       | 120 |
+
+  @req:ATP-02 @req:ATP-10
+  Scenario: F-ATP-08 Under automatic operation (AM) the carrier is checked as under full supervision
+    Given the signal generator sends 1700 Hz with code L
+    And the train is at 960 m running at 72 km/h
+    And the train has passed balise group "2-1-1-1" describing track circuits 0-1000 m 1700 Hz, 1000-2000 m 2300 Hz and an end of authority at 3000 m
+    When the ATP input "ATO start" is set
+    Then the ATP is in mode AM
+    When 6 s pass
+    Then the ATP declares the carrier inconsistent as the rear of the receiver range passes 1000 m at 72 km/h
+    And the ATP commands max service brake
 
   @req:ATP-02
   Scenario: F-ATP-08 The carrier of the section the train is in is consistent

@@ -1,9 +1,10 @@
 @item:F-ATP-13 @profile:atp @req:TST-04
 Feature: F-ATP-13 The ATP's brake reaches the train: traction suppressed, brake commanded (ILK-08)
-  Requirements: ATP-02 (primary), ATP-11, VDX-01, ILK-08, TST-04.
+  Requirements: ATP-02 (primary), ATP-11, VDX-01, ILK-08, CMD-02, CMD-05, TST-04.
   The ATP fitted to a CRH2 train set: its maximum service brake reaches the train as an ATP brake, which
   suppresses traction and raises the brake command to full service (ILK-08); its emergency brake opens the
-  train's emergency-brake loop through the VDX.
+  train's emergency-brake loop through the VDX. Without an ATP brake, the driver's own brake handle reaches
+  the train as on a set without ATP.
 
   Background:
     Given a CTCS-2 200C on-board ATP fitted to an 8-car CRH2 train set
@@ -19,6 +20,12 @@ Feature: F-ATP-13 The ATP's brake reaches the train: traction suppressed, brake 
     When 500 ms pass
     Then every CI receives traction notch 3 within 500 ms
     And the "emergency brake" is released
+
+  @req:CMD-05 @req:CMD-02
+  Scenario: F-ATP-13 Without an ATP brake the driver's own brake handle reaches the train
+    When the driver moves the brake handle of cab 1 to step 4
+    And 500 ms pass
+    Then every BCU receives brake step 4 over path 1 within 100 ms
 
   @req:ATP-11 @req:ILK-08
   Scenario: F-ATP-13 A balise information error: maximum service brake, no traction on the train
