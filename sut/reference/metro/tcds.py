@@ -299,18 +299,15 @@ class MetroTrain:
         """The cab's inputs as the unit's master reads them: module 1 while its life signal is set, else
         module 2 (RED-07)."""
         b, t = self.cfg.behaviour, self.cfg.timing
-        fresh_us = 3 * t.io_period_us
-        chosen = None
-        for module in seg.ios:
+        oldest = self.kernel.now - 3 * t.io_period_us
+
+        def alive(module: IoModule) -> bool:
             port, at = seg.io_data.get(module.name, (None, -1))
-            if port is None or self.kernel.now - at > fresh_us:
-                continue
-            if module.name.endswith("IO2") and not b.use_io_module_2:
-                continue
-            if port.life == 0 and b.io_life_signal_checked:
-                continue
-            chosen = module.name
-            break
+            return port is not None and at >= oldest and (b.use_io_module_2 or not module.name.endswith("IO2")) \
+                and (port.life != 0 or not b.io_life_signal_checked)
+
+        # The first alive in rank order (a first-match search: a module passed over does not end it).
+        chosen = next((module.name for module in seg.ios if alive(module)), None)
         if chosen != seg.io_used and seg.ios:
             before, seg.io_used = seg.io_used, chosen
             self.emit(master.name, "io.select", module=chosen)
