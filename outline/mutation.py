@@ -16,7 +16,8 @@ Phases:
    stops, finding no mutant by that name.
 2. A seeded sample, the same share from each part (crh2, metro, atp, and the shared kernel/bulk), leaving out
    the mutants marked equivalent in sut/reference/EQUIVALENT_MUTANTS.txt, those inside a `raise` of the
-   driver's usage errors (USAGE_ERRORS below) and those of a backend's self-description (SELF_DESCRIPTION);
+   driver's usage errors (USAGE_ERRORS below) and those of a backend's self-description (SELF_DESCRIPTION,
+   BACKEND_PASSED_OVER);
    how many were passed over is printed and kept.
 3. `mutmut run <sample>`; outline/mutation_plugin.py notes which scenario failed for each mutant.
 4. The table: file:line, the change, killed by which scenario or survived; a kill rate per part
@@ -55,6 +56,11 @@ USAGE_ERRORS = frozenset({"SutError", "UnknownName", "OutOfRange", "NotPoweredUp
 # report's environment names the run against (tests/test_allure_env.py), not train behaviour: no article
 # specifies it and no scenario reads it, so its mutants are passed over too, and counted.
 SELF_DESCRIPTION = "describe"
+# Two more of the driver interface that no article specifies and no scenario reads, on a backend only: the
+# names of its vehicle inputs and outputs, listed for a user (`vehicle_names`), and an input read back as the
+# rig last set it (`input`: the stimulus's echo, not the train's answer; a model's own `input`, such as the
+# metro I/O port's, is behaviour and stays in).
+BACKEND_PASSED_OVER = {"vehicle_names": "self-description", "input": "stimulus read-back"}
 
 
 @dataclass
@@ -176,8 +182,11 @@ def sample(names: list[str], count: int, seed: int, left_out: dict[str, int] | N
                 break
             mutant = describe(name)
             function = NAME.match(name)["function"]
-            if function.rsplit("ǁ", 1)[-1].removeprefix("x_") == SELF_DESCRIPTION:
-                left_out["self-description"] = left_out.get("self-description", 0) + 1
+            method = function.rsplit("ǁ", 1)[-1].removeprefix("x_")
+            backend_only = BACKEND_PASSED_OVER.get(method) if mutant.path.endswith("/backend.py") else None
+            if method == SELF_DESCRIPTION or backend_only:
+                reason = backend_only or "self-description"
+                left_out[reason] = left_out.get(reason, 0) + 1
             elif (mutant.path, mutant.before, mutant.after) in marked:
                 left_out["marked equivalent"] = left_out.get("marked equivalent", 0) + 1
             elif in_usage_error(mutant.path, mutant.line):

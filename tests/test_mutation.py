@@ -174,6 +174,21 @@ def test_a_mutant_of_a_backend_s_self_description_is_passed_over_and_counted(mon
     assert left_out == {"self-description": 2}
 
 
+def test_a_backend_s_name_list_and_input_read_back_are_passed_over_but_a_model_s_input_is_not(
+        monkeypatch: pytest.MonkeyPatch) -> None:
+    names = ["sut.reference.metro.backend.xǁReferenceMetroǁinput__mutmut_1",
+             "sut.reference.crh2.backend.xǁReferenceTrainǁvehicle_names__mutmut_2",
+             "sut.reference.metro.ports.xǁIoPortǁinput__mutmut_1"]
+    monkeypatch.setattr(mutation, "describe", lambda name: Mutant(
+        name, "metro", mutation.NAME.match(name)["module"].replace(".", "/") + ".py", 1, "a", "b"))
+    monkeypatch.setattr(mutation, "equivalents", lambda: [])
+    monkeypatch.setattr(mutation, "in_usage_error", lambda path, line: False)
+    left_out: dict[str, int] = {}
+    chosen = mutation.sample(names, 10, seed=1, left_out=left_out)     # more than there are: every one seen
+    assert [m.name for m in chosen] == [names[2]]
+    assert left_out == {"stimulus read-back": 1, "self-description": 1}
+
+
 def test_a_resumed_run_keeps_the_kills_and_runs_survivors_and_the_unchecked_again(tmp_path: Path,
                                                                                   monkeypatch: pytest.MonkeyPatch) -> None:
     drawn = [Mutant(f"sut.reference.atp.vdx.x_f__mutmut_{n}", "atp", "sut/reference/atp/vdx.py", 1, "a", "b")
