@@ -21,8 +21,8 @@ from dataclasses import dataclass
 from pathlib import Path
 
 from . import double_campaign, metro_campaign
-from .campaign_text import (INVARIANTS, KIND_ORDER, NOTCH, RIDE, STEP, TAKEOVER, WINDOW, background, examples,
-                            numbered, powered)
+from .campaign_text import (INVARIANTS, KIND_ORDER, NOTCH, RIDE, STEP, TAKEOVER, WINDOW, background, example_rows,
+                            examples, numbered, powered)
 from .fault_model import Fault, TrainShape, car_of
 
 @dataclass(frozen=True)
@@ -163,14 +163,14 @@ def run(root: Path, spec: str, check: bool) -> int:
                                           campaign.pairs)
         else:
             text = render(campaign, faults, left_out, shape)
-        count = f"{len(fault_space_of(text))} {'pairs of faults' if campaign.pairs else 'faults'}"
+        count = f"{len(example_rows(text))} {'pairs of faults' if campaign.pairs else 'faults'}"
         _write_or_check(root, campaign.path, text, check, stale, count)
     metro = metro_campaign.generate(spec)           # F-NET-34: the metro train's single faults
     if metro is None:
         print(f"{metro_campaign.PATH}: {spec} has no metro-tcn train; left as it is", file=sys.stderr)
     else:
         path, text = metro
-        _write_or_check(root, path, text, check, stale, f"{len(metro_campaign.rows_of(text))} faults")
+        _write_or_check(root, path, text, check, stale, f"{len(example_rows(text))} faults")
     for path in stale:
         print(f"{path}:1: the campaign differs from the SUT's fault space; run `python -m outline campaign`",
               file=sys.stderr)
@@ -186,9 +186,3 @@ def _write_or_check(root: Path, relative: str, text: str, check: bool, stale: li
         path.write_text(text, encoding="utf-8")
         print(f"{relative}: {count}")
 
-
-def fault_space_of(text: str) -> list[tuple[str, ...]]:
-    """The rows of a campaign feature's Examples (header rows left out): one per fault it runs through."""
-    rows = [tuple(cell.strip() for cell in line.strip().strip("|").split("|"))
-            for line in text.splitlines() if line.startswith("      | ")]
-    return [row for row in rows if "." in row[0]]          # a header names columns; a fault names a unit

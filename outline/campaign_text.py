@@ -58,6 +58,25 @@ def examples(table: list[list[str]]) -> list[str]:
             *["      | " + " | ".join(cell.ljust(w) for cell, w in zip(row, widths)) + " |" for row in table]]
 
 
+def example_rows(text: str) -> list[dict[str, str]]:
+    """The Examples rows of a campaign feature, each as {column: value}: one per fault (or pair) it runs
+    through. The inverse of `examples`, for the campaigns' --check counts and the project's tests."""
+    rows, header = [], None
+    for line in text.splitlines():
+        stripped = line.strip()
+        if stripped.startswith("Examples:"):
+            header = []
+        elif header is not None and stripped.startswith("|"):
+            cells = [cell.strip() for cell in stripped.strip("|").split("|")]
+            if header:
+                rows.append(dict(zip(header, cells)))
+            else:
+                header = cells
+        elif stripped:
+            header = None
+    return rows
+
+
 @contextmanager
 def powered(spec: str, profile: str, sets: int, cars_per_set: int) -> Iterator:
     """The SUT `spec` opened on `profile`, composed and powered up, for reading its fault space; shut down

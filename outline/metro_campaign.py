@@ -237,24 +237,6 @@ def _outline(group: Group, kind: str, members: list[Fault]) -> list[str]:
     ]
 
 
-def rows_of(text: str) -> list[dict[str, str]]:
-    """The Examples rows of a campaign feature, each as {column: value}: one per fault it runs through."""
-    rows, header = [], None
-    for line in text.splitlines():
-        stripped = line.strip()
-        if stripped.startswith("Examples:"):
-            header = []
-        elif header is not None and stripped.startswith("|"):
-            cells = [cell.strip() for cell in stripped.strip("|").split("|")]
-            if header:
-                rows.append(dict(zip(header, cells)))
-            else:
-                header = cells
-        elif stripped:
-            header = None
-    return rows
-
-
 def generate(spec: str) -> tuple[str, str] | None:
     """(path, text) of F-NET-34 from the SUT `spec`'s metro train; None if it has no metro-tcn profile."""
     from sut.backends import resolve

@@ -7,7 +7,7 @@ import pytest
 from outline import metro_campaign as mc
 from outline.metro_campaign import (ACTIVE_LOST, ASIDE, DEAD_BRAKE, DEAD_DRIVE, DEAF_CCU, LINE, MODULE_2, MODULE_IDLE,
                                     OTHER_LOST, STANDBY, Fault)
-from outline.campaign_text import powered
+from outline.campaign_text import example_rows, powered
 from tests.test_faulty_variants import ROOT
 
 
@@ -33,7 +33,7 @@ def test_every_fault_the_driver_names_is_a_row_or_left_out_with_a_reason(metro, 
     names = {name for car in range(1, 7) for name in metro.devices(car)}
     names |= {f"{unit}.{board}" for unit in names if unit.endswith((".CCU", ".VCU")) for board in metro.boards(unit)}
     lines = {(bus, line) for bus in ("WTB", "unit1.MVB", "unit2.MVB") for line in "AB"}
-    rows = mc.rows_of(text)
+    rows = example_rows(text)
     run_lines = {(row["bus"], row["line"]) for row in rows if "bus" in row}
     run_names = [value for row in rows if "bus" not in row for value in row.values()]
     listed = [name.strip() for line in text.splitlines() if line.startswith("  - ")
