@@ -210,10 +210,15 @@ def _(sut: TrainDriver, t_action: int, cars: str, node: str, bus: str) -> None:
 @then(parsers.parse('"{bus}"上没有丢失任何报文'))
 @then(parsers.parse('no message on "{bus}" is lost'))
 def _(sut: TrainDriver, t_action: int, bus: str) -> None:
-    polls = _polls(sut, bus, t_action)
-    assert len(polls) >= 10, f"only {len(polls)} messages on {bus} since {ms(t_action)}"
+    _none_lost(sut, bus, t_action, at_least=10)
+
+
+def _none_lost(sut: TrainDriver, bus: str, since: int, at_least: int) -> None:
+    """At least `at_least` messages on `bus` from `since` on, none of them lost."""
+    polls = _polls(sut, bus, since)
+    assert len(polls) >= at_least, f"only {len(polls)} messages on {bus} since {ms(since)}"
     lost = [p for p in polls if p["lost"]]
-    assert not lost, f"{len(lost)} of {len(polls)} messages on {bus} lost: {describe(lost)}"
+    assert not lost, f"{len(lost)} of {len(polls)} messages on {bus} lost since {ms(since)}: {describe(lost)}"
 
 
 @then(parsers.parse('"{bus}"上有报文丢失'))
@@ -227,9 +232,7 @@ def _(sut: TrainDriver, t_action: int, bus: str) -> None:
 @then(parsers.parse('"{bus}"上自{after:g} ms起没有丢失任何报文'))
 @then(parsers.parse('no message on "{bus}" is lost from {after:g} ms on'))
 def _(sut: TrainDriver, t_action: int, bus: str, after: float) -> None:
-    polls = _polls(sut, bus, t_action + us(after))
-    lost = [p for p in polls if p["lost"]]
-    assert polls and not lost, f"{len(lost)} of {len(polls)} messages on {bus} lost {after:g} ms on: {describe(lost)}"
+    _none_lost(sut, bus, t_action + us(after), at_least=1)
 
 
 @then(parsers.parse('"{bus}"上的接收端采用线路{line:w}'))
