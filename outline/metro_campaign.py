@@ -121,9 +121,6 @@ DEAD_DRIVE = LeftOut("the VVVF itself: no answer of the network makes a dead dri
                      "not say what the train does with one drive out")
 DEAD_BRAKE = LeftOut("the BECU itself: whether a brake unit out cuts traction is the brake system's answer, "
                      "not the network's, and the articles do not say")
-DEAF_CCU = LeftOut("a CCU that lives with its WTB gateway dead: RED-04/05 replace a failed CCU by its VCU, but "
-                   "the articles do not say whether a gateway alone failing hands the unit's MVB and command "
-                   "over (open: sut/reference/DECISIONS.md has no rule)")
 
 
 def expectation(fault: Fault) -> Group | LeftOut:
@@ -149,11 +146,11 @@ def expectation(fault: Fault) -> Group | LeftOut:
         return STANDBY                   # RED-04/05: a VCU masters nothing while the CCUs live, the WTB goes on
     elif what == "CCU":
         unit = f"{car}.{what}"
-        if board == GATEWAY:
-            return DEAF_CCU
         if board in ASIDE_BOARDS:
             return ASIDE                 # the CCU still computes, masters and relays: nothing changes hands
-        if not board or board in VITAL:  # the CCU dead: RED-05 its VCU takes the MVB, RED-04 the WTB if car 1's
+        # The CCU dead, or cut off from the train by its gateway (DECISIONS.md "Gateway failure"): RED-05 its
+        # VCU takes the MVB and the control, RED-04 the WTB if it is car 1's.
+        if not board or board in VITAL or board == GATEWAY:
             if unit in (ACTIVE_CCU, OTHER_CCU):
                 return ACTIVE_LOST if unit == ACTIVE_CCU else OTHER_LOST
     raise ValueError(f"the design has no rule for {fault.kind} {name!r}: add one to outline/metro_campaign.py")

@@ -12,6 +12,7 @@ from sut.reference.atp.backend import ReferenceAtp
 from sut.reference.metro.backend import ReferenceMetro
 from sut.reference.metro.ports import DI_KEY, Command
 from sut.reference.metro.tcds import MetroTrain
+from sut.reference.metro.units import ControlUnit
 
 MS = 1000
 
@@ -556,6 +557,25 @@ class BackupVcuHoldsTheCcuCommand(ReferenceMetro):
         self._train = _BackupStartsFromTheCcuCommand(self._train.cfg)
 
 
+class _KeepsTheMvbWithoutAGateway(ControlUnit):
+    """A CCU or VCU that masters its unit's MVB while it lives, gateway or not."""
+
+    @property
+    def masters_mvb(self) -> bool:
+        return self.alive
+
+
+class GatewaylessCcuKeepsItsMvb(ReferenceMetro):
+    """RED-05 (DECISIONS.md "Gateway failure"): a CCU whose gateway failed keeps mastering its unit's MVB,
+    so the unit is cut off from the train's command; in the other unit the command stops and the train
+    brakes. No hand-written item fails a gateway alone for long: only the campaign (F-NET-34) sees it."""
+
+    def __init__(self) -> None:
+        super().__init__()
+        for node in self._train.nodes.values():
+            node.__class__ = _KeepsTheMvbWithoutAGateway
+
+
 class BriskMetro(ReferenceMetro):
     """In band: a 20 ms WTB cycle, quicker takeovers, I/O and command ports every 4 ms, longer sink and
     gateway supervision."""
@@ -585,6 +605,7 @@ FAULTY += [
     (StatusPolledWithReservedCode, "TCN-05", "F-NET-24"),
     (StatusPolledAtOneAddress, "TCN-05", "F-NET-24"),
     (BackupVcuHoldsTheCcuCommand, "RED-05", "F-NET-34"),
+    (GatewaylessCcuKeepsItsMvb, "RED-05", "F-NET-34"),
     (PacketsFromNodeOne, "NET-10", "F-NET-26"),
     (MainCircuitResetsItself, "ILK-06", "F-VSD-02"),
     (BrakeForceTripClearsItself, "ILK-03", "F-ILK-03"),

@@ -3,7 +3,7 @@
 @item:F-NET-34 @profile:metro-tcn @req:TST-04
 Feature: F-NET-34 Single-fault campaign, metro 6-car train
   Requirements: RED-04, RED-05, RED-06, RED-07, TCN-04, TCN-08, TST-04.
-  Every single fault of the train's bus lines, units, boards, I/O modules and devices (60; 48 run, one
+  Every single fault of the train's bus lines, units, boards, I/O modules and devices (60; 50 run, one
   scenario each): at the instant of the fault the driver moves the master controller of cab 1 to 60 %
   traction; every VVVF must apply it within the bound of the design's answer to that fault, and the
   masters that answer names must hold the buses. Over the whole trace no VVVF applies another traction
@@ -12,7 +12,6 @@ Feature: F-NET-34 Single-fault campaign, metro 6-car train
   a WTB fallback 250 ms (F-NET-22), the WTB cycle 25 ms and the MVB period 1 ms (F-NET-21);
   after a takeover the command still has its delivery to go. Each scenario watches 1000 ms.
   Not in the campaign:
-  - car1.CCU.VGWS, car6.CCU.VGWS: a CCU that lives with its WTB gateway dead: RED-04/05 replace a failed CCU by its VCU, but the articles do not say whether a gateway alone failing hands the unit's MVB and command over (open: sut/reference/DECISIONS.md has no rule)
   - car1.BECU, car2.BECU, car3.BECU, car4.BECU, car5.BECU, car6.BECU: the BECU itself: whether a brake unit out cuts traction is the brake system's answer, not the network's, and the articles do not say
   - car2.VVVF, car3.VVVF, car4.VVVF, car5.VVVF: the VVVF itself: no answer of the network makes a dead drive pull, and the articles do not say what the train does with one drive out
 
@@ -212,6 +211,7 @@ Feature: F-NET-34 Single-fault campaign, metro 6-car train
     Examples:
       | board          |
       | car1.CCU.VCPUS |
+      | car1.CCU.VGWS  |
       | car1.CCU.VPS   |
 
   @req:RED-05 @req:RED-04 @req:TCN-04 @req:TCN-08
@@ -247,4 +247,5 @@ Feature: F-NET-34 Single-fault campaign, metro 6-car train
     Examples:
       | board          |
       | car6.CCU.VCPUS |
+      | car6.CCU.VGWS  |
       | car6.CCU.VPS   |

@@ -173,7 +173,7 @@ class MetroTrain:
     def _mvb_period(self, unit: int) -> None:
         seg = self.segments[unit]
         master = self.nodes.get(seg.master) if seg.master else None
-        if master is None or not master.alive:
+        if master is None or not master.masters_mvb:
             return
         t = self.cfg.timing
         k = self.kernel.now // t.mvb_basic_period_us
@@ -201,7 +201,7 @@ class MetroTrain:
     def _mvb_message(self, unit: int, master_name: str, what: str, target: Any, f_code: int) -> None:
         seg = self.segments[unit]
         master = self.nodes[master_name]
-        if seg.master != master_name or not master.alive:
+        if seg.master != master_name or not master.masters_mvb:
             return
         bus = seg.bus
         address = self._address(unit, what, target)
@@ -409,7 +409,8 @@ class MetroTrain:
         t = self.cfg.timing
         now = self.kernel.now
         for seg in self.segments.values():
-            name = self._successor(seg.ranks, seg.master, seg.last_master_t, t.mvb_master_timeout_us, "alive")
+            name = self._successor(seg.ranks, seg.master, seg.last_master_t, t.mvb_master_timeout_us,
+                                  "masters_mvb")
             if name is not None:
                 before, seg.master, seg.last_master_t = seg.master, name, now
                 self.emit(name, "master.take", bus=seg.bus.name, after=before)

@@ -67,6 +67,12 @@ class ControlUnit:
         return self.alive and "VGWS" not in self.failed_boards
 
     @property
+    def masters_mvb(self) -> bool:
+        """Fit to master its unit's MVB: alive, and its gateway joins the unit to the train (DECISIONS.md,
+        "Gateway failure": a unit mastered without one would be cut off from the train's command)."""
+        return self.on_wtb
+
+    @property
     def has_memory(self) -> bool:
         return self.alive and "VMS" in self.boards and "VMS" not in self.failed_boards
 
