@@ -17,6 +17,15 @@ STEP = "B"                     # notch 6 on the digital outputs of paths 2 and 3
 RIDE, TAKEOVER = 40, 100
 # What is watched after the fault: the slowest delivery (a takeover, path 3) and as long again on the new path.
 WINDOW = 2 * TAKEOVER
+# A fault record reaches the master (PRO-06) once the node's request has ridden its next status data and the
+# master's grant the master's next: two rounds of the token, each node holding it 10 ms (PRO-02, PRO-04), then
+# the block, 10 ms after the last (PRO-06); a takeover may come first. Rounds of the composition's ring.
+TOKEN_HOLD, BLOCK_GAP = 10, 10
+
+
+def record_bound(ring_nodes: int) -> int:
+    """ms from a fault to its record at the master, for a ring of `ring_nodes` nodes."""
+    return 2 * ring_nodes * TOKEN_HOLD + TAKEOVER + BLOCK_GAP
 
 KIND_ORDER = ("span", "board", "supply")
 # Per kind of fault: the hand-written features' sentence, its Examples columns, how a title names it; {n}

@@ -18,12 +18,29 @@ from __future__ import annotations
 from dataclasses import dataclass
 
 COMMAND_BOARDS = ("TXC", "RXC")    # boards with their own supply (CMD-01), named <unit>.<board>
+# DECISIONS.md "Fault records": a node's CPU3 writes a record of each of its boards that fails, as block data
+# to the master; a failed CPU3 writes nothing and a failed MDM8 sends nothing, so these are the boards whose
+# failure alone is recorded.
+RECORDED_BOARDS = ("MDM9", "TXC", "RXC")
 
 
 @dataclass(frozen=True)
 class Fault:
     kind: str                  # span, board, supply
     values: tuple[str, ...]    # (a, b) of a span, the board, the supply
+
+
+def fault_record(fault: "Fault") -> tuple[str, str] | None:
+    """(node, board) of the fault record a single fault makes its node's CPU3 write, None if it makes none:
+    a span cut fails no board, and a unit's own supply takes its CPU3 and MDM8 with it (a command board's own
+    supply takes only that board, CMD-01). One fault leaves the node's CPU3 and MDM8 and a way round the
+    ring to the master."""
+    if fault.kind == "span":
+        return None
+    node, _, board = fault.values[0].rpartition(".")
+    if fault.kind == "supply" and board not in COMMAND_BOARDS:
+        return None
+    return (node, board) if board in RECORDED_BOARDS else None
 
 
 def car_of(unit: str) -> int:

@@ -9,8 +9,8 @@ import pytest
 
 from outline import campaign, metro_campaign
 from outline.campaign import NO_MDM9, OFF_THE_RING, RIDES, TAKES_OVER
-from outline.fault_model import Fault, TrainShape
-from outline.campaign_text import example_rows, powered
+from outline.fault_model import Fault, TrainShape, fault_record
+from outline.campaign_text import example_rows, powered, record_bound
 from tests.variants import DOUBLE_ONLY
 from tests.test_faulty_variants import ROOT
 
@@ -28,8 +28,8 @@ def test_the_checked_in_campaigns_are_the_sut_fault_space(capsys) -> None:
 def test_every_span_board_and_supply_is_a_scenario_and_the_desks_are_listed_as_left_out(eight_cars) -> None:
     text = (ROOT / campaign.CAMPAIGNS[0].path).read_text(encoding="utf-8")
     nodes = eight_cars.ring_nodes()
-    # a TXC's board and its supply share a name: a list, not a set; the car column aside
-    rows = [tuple(v for k, v in row.items() if k != "car") for row in example_rows(text)]
+    # a TXC's board and its supply share a name: a list, not a set; the car and record columns aside
+    rows = [tuple(v for k, v in row.items() if k not in ("car", "node", "part")) for row in example_rows(text)]
     spans = {(a, b) for a, b in zip(nodes, nodes[1:] + nodes[:1])}
     boards = {(f"{node}.{board}",) for node in nodes for board in eight_cars.boards(node)}
     supplies = {(s,) for s in eight_cars.supplies() if not s.endswith(".desk")}
@@ -141,3 +141,26 @@ def test_a_double_fault_only_variant_passes_the_single_fault_campaign_and_fails_
     double = run("F-NET-32", "-x")          # the first rejecting pair is enough
     assert double.returncode == 1 and "FAILED features/test_outline.py::test_fnet32" in double.stdout, \
         double.stdout[-2000:]
+
+
+@pytest.mark.parametrize(("fault", "record"), [
+    (Fault("span", ("car2.LCU", "car3.LCU")), None),                     # no board fails
+    (Fault("board", ("car3.LCU.MDM9",)), ("car3.LCU", "MDM9")),
+    (Fault("board", ("car1.CCU.sys1.TXC",)), ("car1.CCU.sys1", "TXC")),
+    (Fault("board", ("car3.LCU.CPU3",)), None),                          # the writer itself is dead
+    (Fault("board", ("car3.LCU.MDM8",)), None),                          # nothing leaves the node
+    (Fault("supply", ("car3.LCU",)), None),                              # CPU3 and MDM8 go with the unit's supply
+    (Fault("supply", ("car3.LCU.RXC",)), ("car3.LCU", "RXC")),           # CMD-01: the RXC's own supply, the RXC alone
+])
+def test_the_fault_record_a_single_fault_makes_is_read_off_the_decision(fault: Fault, record) -> None:
+    assert fault_record(fault) == record
+
+
+def test_a_record_after_a_takeover_is_looked_for_at_system_2_within_two_token_rounds() -> None:
+    text = (ROOT / campaign.CAMPAIGNS[0].path).read_text(encoding="utf-8")
+    outline = text.split("Scenario Outline: F-NET-30 Board <board> failed, the commanding system lost: system 2 "
+                         "takes over, recorded at car1.CCU.sys2\n", 1)[1].split("Scenario Outline", 1)[0]
+    assert '"car1.CCU.sys2" holds a fault record of "<node>" saying "<part>" failed' in outline
+    assert "| car1.CCU.sys1.TXC | car1.CCU.sys1 | TXC  |" in outline
+    assert record_bound(12) == 2 * 120 + 100 + 10          # 12 nodes of an 8-car set: 120 ms rounds (PRO-02)
+    assert f"When {record_bound(12) - 200} ms pass" in outline

@@ -2,11 +2,14 @@
 # edit outline/campaign.py, not this file. tests/test_campaign.py fails when the two differ.
 @item:F-NET-30 @profile:crh2 @req:TST-04
 Feature: F-NET-30 Single-fault campaign, 8-car set
-  Requirements: CMD-01, CMD-02, CMD-03, CMD-04, NET-03, RED-01, RED-02, TST-04.
+  Requirements: CMD-01, CMD-02, CMD-03, CMD-04, NET-03, PRO-06, RED-01, RED-02, TST-04.
   Every single fault of the train's boards, ring spans and power supplies (80), one scenario
   each: at the instant of the fault the driver moves the traction notch; the command reaches every CI
   and BCU by the path the design gives that fault, within its bound; no device ever takes a wrong
-  notch, and none goes without a command for longer than a takeover takes.
+  notch, and none goes without a command for longer than a takeover takes. Where the fault fails a
+  board its node's CPU3 reports (DECISIONS.md "Fault records"), the record is at the master, the
+  commanding system, 350 ms after the fault: two token rounds of 12 nodes (the request, then
+  the grant, PRO-02/04/06), a takeover and the 10 ms before a block.
   Not in the campaign:
   - car1.desk: the desk's digital inputs: switching them off changes the driver's command itself (CMD-05), no network fault
   - car8.desk: the desk's digital inputs: switching them off changes the driver's command itself (CMD-05), no network fault
@@ -59,29 +62,45 @@ Feature: F-NET-30 Single-fault campaign, 8-car set
       | car1.CCU.sys1.CPU3 |
       | car1.CCU.sys2.CPU3 |
       | car1.CCU.sys2.MDM8 |
-      | car1.CCU.sys2.TXC  |
       | car1.LCU.CPU3      |
-      | car1.LCU.RXC       |
       | car2.LCU.CPU3      |
-      | car2.LCU.RXC       |
       | car3.LCU.CPU3      |
-      | car3.LCU.RXC       |
       | car4.LCU.CPU3      |
-      | car4.LCU.RXC       |
       | car5.LCU.CPU3      |
-      | car5.LCU.RXC       |
       | car6.LCU.CPU3      |
-      | car6.LCU.RXC       |
       | car7.LCU.CPU3      |
-      | car7.LCU.RXC       |
       | car8.LCU.CPU3      |
-      | car8.LCU.RXC       |
       | car8.CCU.sys2.CPU3 |
       | car8.CCU.sys2.MDM8 |
-      | car8.CCU.sys2.TXC  |
       | car8.CCU.sys1.CPU3 |
       | car8.CCU.sys1.MDM8 |
-      | car8.CCU.sys1.TXC  |
+
+  @req:NET-03 @req:CMD-01 @req:CMD-02 @req:PRO-06
+  Scenario Outline: F-NET-30 Board <board> failed: every CI and BCU stays on path 1, recorded at car1.CCU.sys1
+    When board "<board>" fails
+    And the driver moves the traction notch of cab 1 to 6
+    And 200 ms pass
+    Then every CI and BCU receives traction notch 6 over path 1 within 40 ms
+    And from 40 ms on every CI and BCU receives traction notch 6 over path 1
+    And no CI or BCU goes without a command for more than 100 ms
+    And no CI or BCU ever receives a traction notch other than 0 or 6
+    And no command over path 2 or 3 ever carried more than the traction and brake steps A and B
+    When 150 ms pass
+    Then "car1.CCU.sys1" holds a fault record of "<node>" saying "<part>" failed
+
+    Examples:
+      | board             | node          | part |
+      | car1.CCU.sys2.TXC | car1.CCU.sys2 | TXC  |
+      | car1.LCU.RXC      | car1.LCU      | RXC  |
+      | car2.LCU.RXC      | car2.LCU      | RXC  |
+      | car3.LCU.RXC      | car3.LCU      | RXC  |
+      | car4.LCU.RXC      | car4.LCU      | RXC  |
+      | car5.LCU.RXC      | car5.LCU      | RXC  |
+      | car6.LCU.RXC      | car6.LCU      | RXC  |
+      | car7.LCU.RXC      | car7.LCU      | RXC  |
+      | car8.LCU.RXC      | car8.LCU      | RXC  |
+      | car8.CCU.sys2.TXC | car8.CCU.sys2 | TXC  |
+      | car8.CCU.sys1.TXC | car8.CCU.sys1 | TXC  |
 
   @req:NET-03 @req:CMD-01 @req:CMD-02
   Scenario Outline: F-NET-30 Supply <supply> off: every CI and BCU stays on path 1
@@ -95,21 +114,37 @@ Feature: F-NET-30 Single-fault campaign, 8-car set
     And no command over path 2 or 3 ever carried more than the traction and brake steps A and B
 
     Examples:
-      | supply            |
-      | car1.CCU.sys2     |
-      | car1.CCU.sys2.TXC |
-      | car8.CCU.sys1     |
-      | car8.CCU.sys2     |
-      | car8.CCU.sys1.TXC |
-      | car8.CCU.sys2.TXC |
-      | car1.LCU.RXC      |
-      | car2.LCU.RXC      |
-      | car3.LCU.RXC      |
-      | car4.LCU.RXC      |
-      | car5.LCU.RXC      |
-      | car6.LCU.RXC      |
-      | car7.LCU.RXC      |
-      | car8.LCU.RXC      |
+      | supply        |
+      | car1.CCU.sys2 |
+      | car8.CCU.sys1 |
+      | car8.CCU.sys2 |
+
+  @req:NET-03 @req:CMD-01 @req:CMD-02 @req:PRO-06
+  Scenario Outline: F-NET-30 Supply <supply> off: every CI and BCU stays on path 1, recorded at car1.CCU.sys1
+    When the supply "<supply>" is switched off
+    And the driver moves the traction notch of cab 1 to 6
+    And 200 ms pass
+    Then every CI and BCU receives traction notch 6 over path 1 within 40 ms
+    And from 40 ms on every CI and BCU receives traction notch 6 over path 1
+    And no CI or BCU goes without a command for more than 100 ms
+    And no CI or BCU ever receives a traction notch other than 0 or 6
+    And no command over path 2 or 3 ever carried more than the traction and brake steps A and B
+    When 150 ms pass
+    Then "car1.CCU.sys1" holds a fault record of "<node>" saying "<part>" failed
+
+    Examples:
+      | supply            | node          | part |
+      | car1.CCU.sys2.TXC | car1.CCU.sys2 | TXC  |
+      | car8.CCU.sys1.TXC | car8.CCU.sys1 | TXC  |
+      | car8.CCU.sys2.TXC | car8.CCU.sys2 | TXC  |
+      | car1.LCU.RXC      | car1.LCU      | RXC  |
+      | car2.LCU.RXC      | car2.LCU      | RXC  |
+      | car3.LCU.RXC      | car3.LCU      | RXC  |
+      | car4.LCU.RXC      | car4.LCU      | RXC  |
+      | car5.LCU.RXC      | car5.LCU      | RXC  |
+      | car6.LCU.RXC      | car6.LCU      | RXC  |
+      | car7.LCU.RXC      | car7.LCU      | RXC  |
+      | car8.LCU.RXC      | car8.LCU      | RXC  |
 
   @req:RED-01 @req:RED-02
   Scenario Outline: F-NET-30 Board <board> failed, the commanding system lost: system 2 takes over
@@ -125,7 +160,23 @@ Feature: F-NET-30 Single-fault campaign, 8-car set
     Examples:
       | board              |
       | car1.CCU.sys1.MDM8 |
-      | car1.CCU.sys1.TXC  |
+
+  @req:RED-01 @req:RED-02 @req:PRO-06
+  Scenario Outline: F-NET-30 Board <board> failed, the commanding system lost: system 2 takes over, recorded at car1.CCU.sys2
+    When board "<board>" fails
+    And the driver moves the traction notch of cab 1 to 6
+    And 200 ms pass
+    Then every CI and BCU receives traction notch 6 over path 1 within 100 ms
+    And from 100 ms on every CI and BCU receives traction notch 6 over path 1
+    And no CI or BCU goes without a command for more than 100 ms
+    And no CI or BCU ever receives a traction notch other than 0 or 6
+    And no command over path 2 or 3 ever carried more than the traction and brake steps A and B
+    When 150 ms pass
+    Then "car1.CCU.sys2" holds a fault record of "<node>" saying "<part>" failed
+
+    Examples:
+      | board             | node          | part |
+      | car1.CCU.sys1.TXC | car1.CCU.sys1 | TXC  |
 
   @req:RED-01 @req:RED-02
   Scenario Outline: F-NET-30 Supply <supply> off, the commanding system lost: system 2 takes over
@@ -139,9 +190,25 @@ Feature: F-NET-30 Single-fault campaign, 8-car set
     And no command over path 2 or 3 ever carried more than the traction and brake steps A and B
 
     Examples:
-      | supply            |
-      | car1.CCU.sys1     |
-      | car1.CCU.sys1.TXC |
+      | supply        |
+      | car1.CCU.sys1 |
+
+  @req:RED-01 @req:RED-02 @req:PRO-06
+  Scenario Outline: F-NET-30 Supply <supply> off, the commanding system lost: system 2 takes over, recorded at car1.CCU.sys2
+    When the supply "<supply>" is switched off
+    And the driver moves the traction notch of cab 1 to 6
+    And 200 ms pass
+    Then every CI and BCU receives traction notch 6 over path 1 within 100 ms
+    And from 100 ms on every CI and BCU receives traction notch 6 over path 1
+    And no CI or BCU goes without a command for more than 100 ms
+    And no CI or BCU ever receives a traction notch other than 0 or 6
+    And no command over path 2 or 3 ever carried more than the traction and brake steps A and B
+    When 150 ms pass
+    Then "car1.CCU.sys2" holds a fault record of "<node>" saying "<part>" failed
+
+    Examples:
+      | supply            | node          | part |
+      | car1.CCU.sys1.TXC | car1.CCU.sys1 | TXC  |
 
   @req:CMD-04 @req:NET-03
   Scenario Outline: F-NET-30 Board <board> failed, car <car> off the ring: path 3 for it, path 1 for the rest
@@ -187,8 +254,8 @@ Feature: F-NET-30 Single-fault campaign, 8-car set
       | car7.LCU | 7   |
       | car8.LCU | 8   |
 
-  @req:CMD-03
-  Scenario Outline: F-NET-30 Board <board> failed, car <car> without its MDM9: path 2 for it, path 1 for the rest
+  @req:CMD-03 @req:PRO-06
+  Scenario Outline: F-NET-30 Board <board> failed, car <car> without its MDM9: path 2 for it, path 1 for the rest, recorded at car1.CCU.sys1
     When board "<board>" fails
     And the driver moves the traction notch of cab 1 to 6
     And 200 ms pass
@@ -197,14 +264,16 @@ Feature: F-NET-30 Single-fault campaign, 8-car set
     And no CI or BCU goes without a command for more than 100 ms
     And no CI or BCU ever receives a traction notch other than 0 or 6
     And no command over path 2 or 3 ever carried more than the traction and brake steps A and B
+    When 150 ms pass
+    Then "car1.CCU.sys1" holds a fault record of "<node>" saying "<part>" failed
 
     Examples:
-      | board         | car |
-      | car1.LCU.MDM9 | 1   |
-      | car2.LCU.MDM9 | 2   |
-      | car3.LCU.MDM9 | 3   |
-      | car4.LCU.MDM9 | 4   |
-      | car5.LCU.MDM9 | 5   |
-      | car6.LCU.MDM9 | 6   |
-      | car7.LCU.MDM9 | 7   |
-      | car8.LCU.MDM9 | 8   |
+      | board         | car | node     | part |
+      | car1.LCU.MDM9 | 1   | car1.LCU | MDM9 |
+      | car2.LCU.MDM9 | 2   | car2.LCU | MDM9 |
+      | car3.LCU.MDM9 | 3   | car3.LCU | MDM9 |
+      | car4.LCU.MDM9 | 4   | car4.LCU | MDM9 |
+      | car5.LCU.MDM9 | 5   | car5.LCU | MDM9 |
+      | car6.LCU.MDM9 | 6   | car6.LCU | MDM9 |
+      | car7.LCU.MDM9 | 7   | car7.LCU | MDM9 |
+      | car8.LCU.MDM9 | 8   | car8.LCU | MDM9 |
