@@ -10,6 +10,7 @@ import os
 import gc
 import re
 from pathlib import Path
+from typing import Callable
 
 import pytest
 
@@ -57,6 +58,10 @@ def pytest_runtest_makereport(item: pytest.Item, call: pytest.CallInfo):
 
 
 _SUTS = pytest.StashKey[dict]()           # test id suffix -> backend class, in --sut order
+# With several --sut, a plugin may narrow the backends a scenario runs on before its items exist
+# (tests/variant_plan.py: each faulty variant on the scenarios its plan names): chooser(definition, ids) -> the
+# ids to keep. Collecting every scenario once per backend and deselecting most was a quarter of that run.
+SUT_CHOOSER = pytest.StashKey[Callable[[pytest.Item, list[str]], list[str]]]()
 _SNAPSHOTS = pytest.StashKey[SnapshotCache]()
 
 
@@ -124,7 +129,9 @@ def pytest_generate_tests(metafunc: pytest.Metafunc) -> None:
     if len(suts) > 1 and step_index.is_scenario(metafunc.function):
         if "sut_class" not in metafunc.fixturenames:
             metafunc.fixturenames.append("sut_class")     # steps ask for `sut` at run time, not in the signature
-        metafunc.parametrize("sut_class", list(suts.values()), ids=list(suts), scope="function")
+        chooser = metafunc.config.stash.get(SUT_CHOOSER, None)
+        ids = chooser(metafunc.definition, list(suts)) if chooser is not None else list(suts)
+        metafunc.parametrize("sut_class", [suts[i] for i in ids], ids=ids, scope="function")
 
 
 def _profiles_of(item: pytest.Item) -> list[str]:
@@ -154,6 +161,9 @@ def pytest_collection_modifyitems(config: pytest.Config, items: list[pytest.Item
     keep, drop = [], []
     for item in items:
         sut_class = _sut_of(item, config)
+        if not isinstance(sut_class, type):           # NOTSET: the chooser kept no backend for this scenario
+            drop.append(item)
+            continue
         declared = tuple(sut_class.PROFILES)
         profiles = _profiles_of(item)
         if not profiles:
