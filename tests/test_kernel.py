@@ -455,3 +455,24 @@ def test_two_identical_reference_runs_give_identical_traces():
     assert events1 == events2 and events1 > 1_000
     assert first.count("\n") > 1_000, "the run should have produced a real trace"
     assert first == second
+
+
+def test_an_interrupt_goes_ahead_of_ordinary_callbacks_due_at_the_same_instant(k):
+    # A board losing power stops its process before anything else scheduled for that instant reaches it.
+    log = []
+
+    def proc():
+        try:
+            yield 1_000
+        except Interrupt:
+            log.append(("interrupted", k.now))
+
+    p = k.process(proc(), "watchdog")
+
+    def at_10():
+        k.call_later(0, log.append, ("ordinary", 10))     # scheduled first, at the same instant
+        p.interrupt("power loss")
+
+    k.call_at(10, at_10)
+    k.run(100)
+    assert log == [("interrupted", 10), ("ordinary", 10)]

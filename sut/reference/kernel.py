@@ -123,8 +123,9 @@ class Process:
             raise SimulationError(f"process {self.name} yielded {target!r}; expected int us or Signal")
 
     def interrupt(self, cause: Any = None) -> None:
-        """Throw `Interrupt(cause)` into the process at the current time, after anything already due now
-        (so a process not started yet first runs to its first wait, as in SimPy)."""
+        """Throw `Interrupt(cause)` into the process at the current time, ahead of the ordinary callbacks due
+        now (URGENT: a board losing power stops before anything else reaches it), after the urgent ones already
+        due (so a process not started yet first runs to its first wait, as in SimPy)."""
         self.kernel.call_later(0, self._interrupt_now, cause, prio=URGENT)
 
     def _interrupt_now(self, cause: Any) -> None:

@@ -16,6 +16,7 @@ Feature: F-DIA-04 Device status polled over the MVB and faults shown on both dis
     And 1000 ms pass
     Then the cab 1 display shows "<device>: no status data"
     And the cab 6 display shows "<device>: no status data"
+    And every VVVF applies 0 % traction
 
     Examples:
       | device    |

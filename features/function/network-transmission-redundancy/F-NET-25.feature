@@ -88,3 +88,22 @@ Feature: F-NET-25 Train network failure: brake to a stop, then hard-wired emerge
     Then the cab 6 display shows the mode "train network failure"
     And "car6.CCU" holds a record "train network failure: braking to a stop"
     And the cab 1 display shows the mode "normal"
+
+  @req:TCN-09
+  Scenario: F-NET-25 Both MVB lines of unit 1 dead from power-up: the cab's inputs are never read and the train stays braked
+    Given line A of "unit1.MVB" is cut
+    And line B of "unit1.MVB" is cut
+    And the train has been powered up for 1000 ms
+    When 500 ms pass
+    Then every VVVF applies 0 % traction
+    And every BECU applies 100 % brake
+    And the cab 6 display shows the mode "train network failure"
+
+  @req:TCN-09 @req:RED-06
+  Scenario: F-NET-25 Unit 1's first MVB frames lost on both lines at power-up: the train pulls once the inputs come through
+    Given the train is powered up
+    When the next 2 frames on both lines of "unit1.MVB" are disturbed
+    And 1000 ms pass
+    Then every VVVF applies 60 % traction
+    And every BECU applies 0 % brake
+    And the cab 1 display shows the mode "normal"
