@@ -93,6 +93,18 @@ def release_before_selftest(sut: TrainDriver, offset_ms: float) -> int:
     return release
 
 
+@when(parsers.parse("时间走到下一次FS自检开始后{at:g} ms"), target_fixture="t_action")
+@when(parsers.parse("the VDX is {at:g} ms into its next FS self-test"), target_fixture="t_action")
+def _(sut: TrainDriver, at: float) -> int:
+    """Stop inside a self-test (5 s after the last one, VDX-03), to read the FS output while it is pulled low."""
+    due = _next_selftest(sut)
+    sut.advance(due + us(at) - sut.now_us)
+    started = sut.trace.last(kind="selftest")
+    assert started is not None and started.t == due, \
+        f"no FS self-test began at {ms(due)} (the last began at {ms(started.t) if started else None})"
+    return sut.now_us
+
+
 @when(parsers.parse("ATP在下一次FS自检前{offset:g} ms缓解紧急制动"), target_fixture="t_action")
 @when(parsers.parse("the ATP releases the emergency brake {offset:g} ms before the next FS self-test"),
       target_fixture="t_action")

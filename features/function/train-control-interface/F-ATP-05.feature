@@ -19,6 +19,18 @@ Feature: F-ATP-05 FS output self-test every 5 s, 3 ms, sampled from the 2nd ms a
     And the emergency-brake loop stays closed
     And no C019 is raised
 
+  @req:VDX-03 @req:VDX-04
+  Scenario: F-ATP-05 Inside a self-test the FS output is low and the relay holds; after it the output is back
+    Given the train has been powered up for 1000 ms
+    And the ATP has released the emergency brake
+    When 6 s pass
+    And the VDX is 1.5 ms into its next FS self-test
+    Then the FS output reads 0 V within 6 V
+    And relay EB2R is energised
+    When 5 ms pass
+    Then the FS output reads 137 V within 14 V
+    And the emergency-brake loop is closed
+
   @req:VDX-03
   Scenario: F-ATP-05 A self-test that finds the FS output high raises C019, which stays until restart
     Given the VDX runs the old firmware
