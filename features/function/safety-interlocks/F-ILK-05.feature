@@ -38,3 +38,13 @@ Feature: F-ILK-05 Doors: pressed airtight above 30 km/h, opened only below 5 km/
     When the train speed changes to 30 km/h
     And 1000 ms pass
     Then the "press-seal valve" stays de-energised
+
+  @req:ILK-05
+  Scenario: F-ILK-05 Doors open at standstill and the train at 40 km/h at once: the doors close and are sealed
+    When the driver commands the doors open
+    And 200 ms pass
+    Then the "doors" is open
+    When the train speed changes to 40 km/h
+    And 100 ms pass
+    Then the "doors" is closed
+    And the "press-seal valve" is energised

@@ -62,10 +62,6 @@ def catalogue(cars: int, units: int) -> tuple[dict[str, Spec], dict[str, tuple]]
         inputs[f"car{car}.brake force"] = Spec("number", low=0, high=150, unit="% of demand", initial=100.0)
     for car in range(1, cars):
         inputs[f"coupler car{car}~car{car + 1}"] = Spec("choice", ("coupled", "separated"), initial="coupled")
-    for unit in range(1, units + 1):
-        inputs[f"unit{unit}.transformer"] = Spec("choice", TRANSFORMER_STATES, initial="normal")
-        inputs[f"unit{unit}.oil pump"] = Spec("choice", ("running", "stopped"), initial="running")
-        inputs[f"unit{unit}.oil temperature"] = Spec("choice", ("normal", "over-temperature"), initial="normal")
     outputs = {
         "EB valve": ("energised", "de-energised"),
         "rapid-brake valve": ("energised", "de-energised"),
@@ -80,7 +76,10 @@ def catalogue(cars: int, units: int) -> tuple[dict[str, Spec], dict[str, tuple]]
     }
     outputs["compressor"] = ("stopped", "running")
     outputs["passenger information"] = ("none", "next station", "welcome aboard")
-    for unit in range(1, units + 1):
+    for unit in range(1, units + 1):       # each traction unit's main circuit: what it senses, what it drives
+        inputs[f"unit{unit}.transformer"] = Spec("choice", TRANSFORMER_STATES, initial="normal")
+        inputs[f"unit{unit}.oil pump"] = Spec("choice", ("running", "stopped"), initial="running")
+        inputs[f"unit{unit}.oil temperature"] = Spec("choice", ("normal", "over-temperature"), initial="normal")
         outputs[f"unit{unit}.VCB"] = ("closed", "open")
         outputs[f"unit{unit}.pantograph"] = ("up", "down")
         outputs[f"unit{unit}.auxiliary supply"] = ("own", "extended", "none")
@@ -268,14 +267,16 @@ class Vehicle:
         driver_eb = self._handle_brake() >= 8
         atp = inp["ATP brake"]
         eb_loop_open = safety_trip or driver_eb or atp == "emergency"
-        # ILK-05
-        doors_open = inp["doors"] == "open" and self.outputs.get("doors") == "open"
+        # ILK-05: the doors can open only while the door-open relay acts (below 5 km/h, where the seal is long
+        # off); the seal follows the doors as they are now, not as they were: doors left open at standstill
+        # and the train set to 40 km/h close and are sealed in the same instant.
+        relay = speed < cfg.door_relay_kmh
+        doors_open = inp["doors"] == "open" and relay
         if self.seal and (speed < cfg.seal_off_kmh or doors_open):
             self.seal = False
         elif not self.seal and speed > cfg.seal_on_kmh and not doors_open:
             self.seal = True
-        relay = speed < cfg.door_relay_kmh
-        doors = "open" if inp["doors"] == "open" and relay and not self.seal else "closed"
+        doors = "open" if doors_open and not self.seal else "closed"
         # ILK-06
         for u in self.units:
             self._unit_protection(u)
