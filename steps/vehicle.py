@@ -119,8 +119,11 @@ def _(sut: TrainDriver, signal: str) -> int:
 
 @given(parsers.parse('过分相装置报告"{state}"'), converters={"state": zh.core_state})
 @given(parsers.parse('the neutral-section device reports "{state}"'))
-def _(sut: TrainDriver, state: str) -> None:
+@when(parsers.parse('过分相装置改为报告"{state}"'), converters={"state": zh.core_state}, target_fixture="t_action")
+@when(parsers.parse('the neutral-section device comes to report "{state}"'), target_fixture="t_action")
+def _(sut: TrainDriver, state: str) -> int:
     sut.set_input("neutral section device", state)
+    return sut.now_us
 
 
 @when("司机手动恢复过分相之前的状态", target_fixture="t_action")

@@ -41,6 +41,15 @@ Feature: F-ILK-04 Automatic neutral-section passing and its signal faults
     And the "unit1.VCB" stays closed
     And the "neutral section" is manual passing
 
+  @req:ILK-04
+  Scenario: F-ILK-04 A repaired neutral-section device clears its alarm
+    Given the neutral-section device reports "severe fault"
+    When 100 ms pass
+    Then the cab 1 monitor shows "neutral section: severe fault, pass manually"
+    When the neutral-section device comes to report "normal"
+    And 100 ms pass
+    Then the cab 1 monitor does not show "neutral section: severe fault, pass manually"
+
   @req:ILK-04 @tentative
   Scenario: F-ILK-04 Without an entry signal the driver is told to enter manually
     When the neutral-section warning signal arrives
