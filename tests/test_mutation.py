@@ -215,3 +215,17 @@ def test_a_resumed_run_keeps_the_kills_and_runs_survivors_and_the_unchecked_agai
     assert ran == [("run", "--max-children", "2", drawn[1].name, drawn[2].name)]
     assert [m.status for m in drawn] == ["killed", "killed", "survived", "timeout"]
     assert drawn[0].killed_by == "test_fatp01_a"          # the last run's killer kept
+
+
+def test_a_mutant_inside_the_emit_of_an_event_no_check_reads_is_passed_over() -> None:
+    def line_of(path: str, text: str) -> int:
+        lines = (ROOT / path).read_text(encoding="utf-8").splitlines()
+        return next(i for i, line in enumerate(lines, start=1) if text in line)
+
+    vdx = "sut/reference/atp/vdx.py"
+    assert mutation.in_unread_event(vdx, line_of(vdx, '"fs.on"'))              # the relays are what steps read
+    assert not mutation.in_unread_event(vdx, line_of(vdx, '"loop.change"'))    # "the loop opens within 6 ms"
+    assert not mutation.in_unread_event(vdx, line_of(vdx, "self.testing = True"))
+    kinds, _ = mutation.read_kinds()
+    assert {"loop.change", "out.change", "cmd.rx", "wtb.msg"} <= kinds
+    assert "line.switch" not in kinds              # named only by the timing diagram, which is not a check
