@@ -229,3 +229,18 @@ def test_a_mutant_inside_the_emit_of_an_event_no_check_reads_is_passed_over() ->
     kinds, _ = mutation.read_kinds()
     assert {"loop.change", "out.change", "cmd.rx", "wtb.msg"} <= kinds
     assert "line.switch" not in kinds              # named only by the timing diagram, which is not a check
+
+
+def test_the_map_is_made_again_when_a_scenario_or_step_changes(tmp_path: Path) -> None:
+    (tmp_path / "features" / "x").mkdir(parents=True)
+    (tmp_path / "steps").mkdir()
+    feature = tmp_path / "features" / "x" / "F-X-01.feature"
+    feature.write_text("Feature: x\n  Scenario: a\n    Given one\n", encoding="utf-8")
+    (tmp_path / "steps" / "s.py").write_text("# steps\n", encoding="utf-8")
+    before = mutation.scenarios_digest(tmp_path)
+    assert mutation.scenarios_digest(tmp_path) == before
+    feature.write_text("Feature: x\n  Scenario: a\n    Given one\n    Then two\n", encoding="utf-8")
+    assert mutation.scenarios_digest(tmp_path) != before      # same scenario id, new steps: mapped again
+    (tmp_path / "README.md").write_text("not a scenario", encoding="utf-8")
+    after = mutation.scenarios_digest(tmp_path)
+    assert mutation.scenarios_digest(tmp_path) == after
