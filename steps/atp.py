@@ -317,7 +317,8 @@ def _(sut: TrainDriver, fields: str) -> None:
             f"a CFSK record stamped {stamp!r} at {sut.now_us / 1000:.3f} ms: {record}")
     for field in re.split(r",\s*|\s+and\s+", fields):
         key, _, value = field.strip().partition(" ")
-        assert any(f"{key}=" in r and value in r for r in records), f"no CFSK record with {field!r}: {records}"
+        # The field itself, key=value as one word of the record, not the value anywhere in it.
+        assert any(f"{key}={value}" in r.split() for r in records), f"no CFSK record with {field!r}: {records}"
 
 
 # -- carrier consistency (ATP-02) ------------------------------------------------------------------------------

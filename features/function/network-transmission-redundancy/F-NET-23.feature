@@ -60,3 +60,20 @@ Feature: F-NET-23 Dual lines A and B on the WTB and on each MVB
     And 300 ms pass
     Then no message on "WTB" is lost
     And the cab 6 display shows "WTB line A: restored"
+
+  @req:RED-06
+  Scenario Outline: F-NET-23 Line A of "<bus>" cut and restored, then line B cut: the receivers go back to line A without a loss
+    When line A of "<bus>" is cut
+    And 300 ms pass
+    And line A of "<bus>" is restored
+    And 300 ms pass
+    And line B of "<bus>" is cut
+    And 300 ms pass
+    Then the receivers on "<bus>" take line A
+    And no message on "<bus>" is lost
+    And no VVVF or BECU changes what it applies
+
+    Examples:
+      | bus       |
+      | WTB       |
+      | unit1.MVB |

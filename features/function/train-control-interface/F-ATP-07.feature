@@ -34,6 +34,7 @@ Feature: F-ATP-07 CFSK track-circuit decoding: health, 3-comparison confirmation
     And 1000 ms pass
     Then the safety computer gets the CFSK fault and no decoded result
     And the DMI shows "CFSK fault"
+    And the ATP records for the CFSK state fault
 
   @req:ATP-01
   Scenario: F-ATP-07 A repaired CFSK decodes the track circuit again
