@@ -9,13 +9,13 @@ Feature: F-NET-25 Train network failure: brake to a stop, then hard-wired emerge
   Background:
     Given a 6-car metro train with its train control and diagnosis system
     And the driver has inserted the key in cab 1
-    And the direction switch of cab 1 is at forward
     And the master controller of cab 1 demands 60 % traction
     And the train runs at 30 km/h
 
   @req:TCN-09
   Scenario: F-NET-25 Both MVB lines of unit 1 cut: every VVVF of the unit stops pulling, every BECU brakes
-    Given the train has been powered up for 1000 ms
+    Given the direction switch of cab 1 is at forward
+    And the train has been powered up for 1000 ms
     When line A of "unit1.MVB" is cut
     And line B of "unit1.MVB" is cut
     And 1000 ms pass
@@ -24,7 +24,8 @@ Feature: F-NET-25 Train network failure: brake to a stop, then hard-wired emerge
 
   @req:TCN-09
   Scenario: F-NET-25 Unit 1 lost entirely: the train brakes to a stop, then runs in emergency operation
-    Given the train has been powered up for 1000 ms
+    Given the direction switch of cab 1 is at forward
+    And the train has been powered up for 1000 ms
     When "car1.CCU", "car2.VCU", "car3.VCU" fail together
     And 12 s pass
     Then every VVVF applies 0 % traction
@@ -62,7 +63,8 @@ Feature: F-NET-25 Train network failure: brake to a stop, then hard-wired emerge
 
   @req:TCN-09
   Scenario: F-NET-25 Emergency operation is not taken at speed
-    Given the train has been powered up for 1000 ms
+    Given the direction switch of cab 1 is at forward
+    And the train has been powered up for 1000 ms
     When "car1.CCU", "car2.VCU", "car3.VCU" fail together
     And 1000 ms pass
     And the driver turns the emergency-operation switch on
@@ -73,7 +75,8 @@ Feature: F-NET-25 Train network failure: brake to a stop, then hard-wired emerge
 
   @req:TCN-09
   Scenario: F-NET-25 A healthy network does not brake
-    Given the train has been powered up for 1000 ms
+    Given the direction switch of cab 1 is at forward
+    And the train has been powered up for 1000 ms
     When 3 s pass
     Then every VVVF applies 60 % traction
     And every BECU applies 0 % brake
@@ -81,7 +84,8 @@ Feature: F-NET-25 Train network failure: brake to a stop, then hard-wired emerge
 
   @req:TCN-09
   Scenario: F-NET-25 A WTB dead from power-up: the unit without the key never hears a train command and brakes
-    Given line A of "WTB" is cut
+    Given the direction switch of cab 1 is at forward
+    And line A of "WTB" is cut
     And line B of "WTB" is cut
     And the train has been powered up for 1000 ms
     When 500 ms pass
@@ -91,7 +95,8 @@ Feature: F-NET-25 Train network failure: brake to a stop, then hard-wired emerge
 
   @req:TCN-09
   Scenario: F-NET-25 Both MVB lines of unit 1 dead from power-up: the cab's inputs are never read and the train stays braked
-    Given line A of "unit1.MVB" is cut
+    Given the direction switch of cab 1 is at forward
+    And line A of "unit1.MVB" is cut
     And line B of "unit1.MVB" is cut
     And the train has been powered up for 1000 ms
     When 500 ms pass
@@ -101,9 +106,21 @@ Feature: F-NET-25 Train network failure: brake to a stop, then hard-wired emerge
 
   @req:TCN-09 @req:RED-06
   Scenario: F-NET-25 Unit 1's first MVB frames lost on both lines at power-up: the train pulls once the inputs come through
-    Given the train is powered up
+    Given the direction switch of cab 1 is at forward
+    And the train is powered up
     When the next 2 frames on both lines of "unit1.MVB" are disturbed
     And 1000 ms pass
     Then every VVVF applies 60 % traction
     And every BECU applies 0 % brake
     And the cab 1 display shows the mode "normal"
+
+  @req:TCN-09
+  Scenario: F-NET-25 Emergency operation with the direction switch never moved off neutral: the drives do not pull
+    Given the train has been powered up for 1000 ms
+    When "car1.CCU", "car2.VCU", "car3.VCU" fail together
+    And 12 s pass
+    And the driver turns the emergency-operation switch on
+    And 100 ms pass
+    Then every VVVF applies 0 % traction
+    And every BECU applies 0 % brake
+    And the cab 6 display shows the mode "emergency operation"
