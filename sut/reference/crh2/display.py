@@ -41,7 +41,6 @@ class DisplayTable:
         for name in list(NUMERIC) + ["direction"] + sorted(vehicle.outputs_spec):
             values = DIRECTIONS if name == "direction" else vehicle.outputs_spec.get(name, ())
             points.append(Point(len(points) + 1, name, self._owner(name, per), values))
-        self.points = points
         self.by_name = {p.name: p for p in points}
         self.by_id = {p.id: p for p in points}
         self.by_owner: dict[str, list[Point]] = {}
