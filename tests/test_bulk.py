@@ -500,3 +500,12 @@ def test_an_event_with_two_moving_fields_is_repeated_with_both_carried_on(jumps:
     assert jumps, "nothing was skipped"
     assert fast.events == exact.events
     assert fast.count == exact.count == 501                 # from 0 to 5 s, both ends included
+
+
+def test_the_environment_asks_for_frame_by_frame(monkeypatch: pytest.MonkeyPatch, jumps: list[int]) -> None:
+    # `pytest --frame-by-frame` says it through CRH2_FRAME_BY_FRAME, so that a server started from the run
+    # and every xdist worker hear it too.
+    monkeypatch.setenv("CRH2_FRAME_BY_FRAME", "1")
+    train = powered()
+    train.advance(10 * S)
+    assert not jumps, f"an advance skipped {jumps} periods though frame by frame was asked for"

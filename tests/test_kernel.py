@@ -476,3 +476,13 @@ def test_an_interrupt_goes_ahead_of_ordinary_callbacks_due_at_the_same_instant(k
     k.call_at(10, at_10)
     k.run(100)
     assert log == [("interrupted", 10), ("ordinary", 10)]
+
+
+def test_a_cycle_stopped_before_its_first_tick_never_ticks(k):
+    # A board switched off in the instant it was switched on: its periodic activity never runs.
+    ticks = []
+    cyc = k.every(100, lambda: ticks.append(k.now), phase=50)
+    k.run(10)
+    k.stop_cyclic(cyc)
+    k.run(1_000)
+    assert ticks == []
