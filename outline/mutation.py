@@ -217,15 +217,20 @@ _RAISES: dict[str, list[tuple[int, int]]] = {}
 
 def in_usage_error(path: str, line: int) -> bool:
     """Whether `line` of `path` is inside a `raise` of one of the driver's USAGE_ERRORS, or in the test of an
-    `if` that does nothing but raise one (the check of the stimulus is part of the usage error)."""
+    `if` that does nothing but raise one, maybe after assigning what the message lists (the check of the
+    stimulus and the words of its answer are part of the usage error)."""
     if path not in _RAISES:
         def usage(node: ast.AST) -> bool:
             return isinstance(node, ast.Raise) and isinstance(node.exc, ast.Call) \
                 and isinstance(node.exc.func, ast.Name) and node.exc.func.id in USAGE_ERRORS
         tree = ast.parse((ROOT / path).read_text(encoding="utf-8"))
         spans = [(node.lineno, node.end_lineno or node.lineno) for node in ast.walk(tree) if usage(node)]
-        spans += [(node.test.lineno, node.test.end_lineno or node.test.lineno) for node in ast.walk(tree)
-                  if isinstance(node, ast.If) and len(node.body) == 1 and usage(node.body[0]) and not node.orelse]
+        # An `if` that only raises one, maybe after naming what it lists as known (the message's words): its
+        # test, and those assignments, are the usage error too.
+        guards = [node for node in ast.walk(tree) if isinstance(node, ast.If) and not node.orelse
+                  and usage(node.body[-1]) and all(isinstance(st, (ast.Assign, ast.AnnAssign)) for st in node.body[:-1])]
+        spans += [(node.test.lineno, node.test.end_lineno or node.test.lineno) for node in guards]
+        spans += [(st.lineno, st.end_lineno or st.lineno) for node in guards for st in node.body[:-1]]
         _RAISES[path] = spans
     return any(start <= line <= end for start, end in _RAISES[path])
 

@@ -244,3 +244,18 @@ def test_the_map_is_made_again_when_a_scenario_or_step_changes(tmp_path: Path) -
     (tmp_path / "README.md").write_text("not a scenario", encoding="utf-8")
     after = mutation.scenarios_digest(tmp_path)
     assert mutation.scenarios_digest(tmp_path) == after
+
+
+def test_an_if_that_names_the_known_names_and_raises_a_usage_error_is_passed_over(tmp_path: Path,
+                                                                                  monkeypatch: pytest.MonkeyPatch) -> None:
+    source = tmp_path / "sut" / "reference" / "metro" / "reading.py"
+    source.parent.mkdir(parents=True)
+    source.write_text("from sut.errors import UnknownName\n\ndef reading(name, wanted):\n"
+                      "    if wanted is None or name != wanted:\n        known = ['speed', wanted]\n"
+                      "        raise UnknownName('reading', name, known)\n    if name == 'x':\n"
+                      "        print('a side effect')\n        raise UnknownName('reading', name, [])\n"
+                      "    return 1\n", encoding="utf-8")
+    monkeypatch.setattr(mutation, "ROOT", tmp_path)
+    monkeypatch.setattr(mutation, "_RAISES", {})
+    path = "sut/reference/metro/reading.py"
+    assert [line for line in range(1, 11) if mutation.in_usage_error(path, line)] == [4, 5, 6, 9]
