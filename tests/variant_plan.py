@@ -30,7 +30,7 @@ _REJECTED = pytest.StashKey[dict[str, set[str]]]()      # variant name -> {"item
 def _variant(item: pytest.Item) -> str | None:
     callspec = getattr(item, "callspec", None)
     variant = callspec.params.get("sut_class") if callspec is not None else None
-    return variant.__name__ if isinstance(variant, type) else None     # not NOTSET: a scenario no plan runs
+    return variant.__name__ if variant is not None else None
 
 
 def _tags(item: pytest.Item, mark: str) -> set[str]:
@@ -61,20 +61,15 @@ def pytest_configure(config: pytest.Config) -> None:
 
 @pytest.hookimpl(trylast=True)
 def pytest_collection_modifyitems(config: pytest.Config, items: list[pytest.Item]) -> None:
+    # Every item is a variant on a scenario its plan selects: the chooser parametrized nothing else, and
+    # steps/fixtures.py dropped the scenarios no plan selects. Stable: a variant's own item first, then the
+    # scenarios its requirement selects, the generated campaigns' rows last: a targeted scenario usually
+    # rejects it first, and the sweep is then skipped.
     plan = config.stash[_PLAN]
-    keep, drop = [], []
-    for item in items:
-        name = _variant(item)
-        (keep if name is not None and _why(item, plan.get(name, {})) else drop).append(item)
-    # Stable: a variant's own item first, then the scenarios its requirement selects, the generated campaigns'
-    # rows last: a targeted scenario usually rejects it first, and the sweep is then skipped.
-    keep.sort(key=lambda item: ("item" not in _why(item, plan[_variant(item)]),
-                                bool(_tags(item, "item") & CAMPAIGN_ITEMS)))
-    if drop:
-        config.hook.pytest_deselected(items=drop)
-        items[:] = keep
+    items.sort(key=lambda item: ("item" not in _why(item, plan[_variant(item)]),
+                                 bool(_tags(item, "item") & CAMPAIGN_ITEMS)))
     worker = getattr(config, "workerinput", {}).get("workerid", "main")
-    tags = {item.nodeid: sorted(_tags(item, "req")) for item in keep}
+    tags = {item.nodeid: sorted(_tags(item, "req")) for item in items}
     with open(f"{os.environ['CRH2_VARIANT_PLAN']}.{worker}.reqs.json", "w", encoding="utf-8") as fh:
         json.dump(tags, fh)
 
