@@ -228,7 +228,8 @@ def in_usage_error(path: str, line: int) -> bool:
         # An `if` that only raises one, maybe after naming what it lists as known (the message's words): its
         # test, and those assignments, are the usage error too.
         guards = [node for node in ast.walk(tree) if isinstance(node, ast.If) and not node.orelse
-                  and usage(node.body[-1]) and all(isinstance(st, (ast.Assign, ast.AnnAssign)) for st in node.body[:-1])]
+                  and usage(node.body[-1])
+                  and all(isinstance(st, (ast.Assign, ast.AnnAssign)) for st in node.body[:-1])]
         spans += [(node.test.lineno, node.test.end_lineno or node.test.lineno) for node in guards]
         spans += [(st.lineno, st.end_lineno or st.lineno) for node in guards for st in node.body[:-1]]
         _RAISES[path] = spans

@@ -108,17 +108,23 @@ def test_the_summary_names_the_mutation_entry_and_does_not_count_it_as_a_scenari
     assert text.splitlines()[-1] == "Mutation testing of the references: 100.0 % killed (target 90 %)"
 
 
+def _usage_error_lines(root: Path, monkeypatch: pytest.MonkeyPatch, path: str, source: str) -> list[int]:
+    """The lines of `source`, written as `path` under a project at `root`, that `make mutate` counts as part of
+    a usage error."""
+    (root / path).parent.mkdir(parents=True)
+    (root / path).write_text(source, encoding="utf-8")
+    monkeypatch.setattr(mutation, "ROOT", root)
+    monkeypatch.setattr(mutation, "_RAISES", {})
+    return [line for line in range(1, source.count("\n") + 2) if mutation.in_usage_error(path, line)]
+
+
 def test_a_mutant_inside_a_usage_error_is_passed_over_and_counted(tmp_path: Path,
                                                                    monkeypatch: pytest.MonkeyPatch) -> None:
-    source = tmp_path / "sut" / "reference" / "atp" / "desk.py"
-    source.parent.mkdir(parents=True)
-    source.write_text("from sut.errors import OutOfRange\n\ndef set_notch(n):\n    if not 0 <= n <= 7:\n"
-                      "        raise OutOfRange('notch', n,\n                         '0..7')\n"
-                      "    if n == 3:\n        raise ValueError('three')\n    return n\n", encoding="utf-8")
-    monkeypatch.setattr(mutation, "ROOT", tmp_path)
-    monkeypatch.setattr(mutation, "_RAISES", {})
     path = "sut/reference/atp/desk.py"
-    assert [line for line in range(1, 11) if mutation.in_usage_error(path, line)] == [4, 5, 6]
+    assert _usage_error_lines(tmp_path, monkeypatch, path, (
+        "from sut.errors import OutOfRange\n\ndef set_notch(n):\n    if not 0 <= n <= 7:\n"
+        "        raise OutOfRange('notch', n,\n                         '0..7')\n"
+        "    if n == 3:\n        raise ValueError('three')\n    return n\n")) == [4, 5, 6]
 
     lines = {"x_set_notch__mutmut_1": (4, "if not 1 <= n <= 7:"), "x_set_notch__mutmut_2": (6, "'XX0..7XX')"),
              "x_set_notch__mutmut_3": (8, "raise ValueError('THREE')")}
@@ -241,21 +247,16 @@ def test_the_map_is_made_again_when_a_scenario_or_step_changes(tmp_path: Path) -
     assert mutation.scenarios_digest(tmp_path) == before
     feature.write_text("Feature: x\n  Scenario: a\n    Given one\n    Then two\n", encoding="utf-8")
     assert mutation.scenarios_digest(tmp_path) != before      # same scenario id, new steps: mapped again
+    changed = mutation.scenarios_digest(tmp_path)
     (tmp_path / "README.md").write_text("not a scenario", encoding="utf-8")
-    after = mutation.scenarios_digest(tmp_path)
-    assert mutation.scenarios_digest(tmp_path) == after
+    assert mutation.scenarios_digest(tmp_path) == changed     # what no scenario is made from leaves the map
 
 
 def test_an_if_that_names_the_known_names_and_raises_a_usage_error_is_passed_over(tmp_path: Path,
                                                                                   monkeypatch: pytest.MonkeyPatch) -> None:
-    source = tmp_path / "sut" / "reference" / "metro" / "reading.py"
-    source.parent.mkdir(parents=True)
-    source.write_text("from sut.errors import UnknownName\n\ndef reading(name, wanted):\n"
-                      "    if wanted is None or name != wanted:\n        known = ['speed', wanted]\n"
-                      "        raise UnknownName('reading', name, known)\n    if name == 'x':\n"
-                      "        print('a side effect')\n        raise UnknownName('reading', name, [])\n"
-                      "    return 1\n", encoding="utf-8")
-    monkeypatch.setattr(mutation, "ROOT", tmp_path)
-    monkeypatch.setattr(mutation, "_RAISES", {})
-    path = "sut/reference/metro/reading.py"
-    assert [line for line in range(1, 11) if mutation.in_usage_error(path, line)] == [4, 5, 6, 9]
+    assert _usage_error_lines(tmp_path, monkeypatch, "sut/reference/metro/reading.py", (
+        "from sut.errors import UnknownName\n\ndef reading(name, wanted):\n"
+        "    if wanted is None or name != wanted:\n        known = ['speed', wanted]\n"
+        "        raise UnknownName('reading', name, known)\n    if name == 'x':\n"
+        "        print('a side effect')\n        raise UnknownName('reading', name, [])\n"
+        "    return 1\n")) == [4, 5, 6, 9]
