@@ -9,7 +9,8 @@ Each process writes, beside the plan, the requirement tags of every scenario it 
 (`<plan>.<worker>.reqs.json`: {test id: [requirement, ...]}), so that the test can tell which selection a
 rejecting scenario belongs to. A variant's own item runs first; once a scenario of its item and one tagged
 with its requirement have both failed, its remaining scenarios are skipped: the variant is rejected both
-ways, and the rest would only cost time.
+ways, and the rest would only cost time. The workers tell each other (`<plan>.rejected`, a line per
+rejection), so a worker does not go on running a variant the other one has already rejected.
 """
 from __future__ import annotations
 
@@ -74,9 +75,26 @@ def pytest_collection_modifyitems(config: pytest.Config, items: list[pytest.Item
         json.dump(tags, fh)
 
 
+def _rejections() -> str:
+    return f"{os.environ['CRH2_VARIANT_PLAN']}.rejected"
+
+
+def _heard(config: pytest.Config) -> dict[str, set[str]]:
+    """The rejections of every worker so far: this one's, and what the others wrote to the shared file."""
+    rejected = config.stash[_REJECTED]
+    try:
+        with open(_rejections(), encoding="utf-8") as fh:
+            for line in fh:
+                name, _, why = line.strip().partition(" ")
+                rejected.setdefault(name, set()).update(why.split())
+    except FileNotFoundError:
+        pass
+    return rejected
+
+
 @pytest.hookimpl(tryfirst=True)                       # before the fixtures build a train
 def pytest_runtest_setup(item: pytest.Item) -> None:
-    if item.config.stash[_REJECTED].get(_variant(item)) == {"item", "req"}:
+    if _heard(item.config).get(_variant(item)) == {"item", "req"}:
         pytest.skip("this variant already failed a scenario of its item and one tagged with its requirement")
 
 
@@ -85,5 +103,8 @@ def pytest_runtest_makereport(item: pytest.Item, call: pytest.CallInfo):
     report = yield
     if report.failed and report.when == "call":
         name = _variant(item)
-        item.config.stash[_REJECTED].setdefault(name, set()).update(_why(item, item.config.stash[_PLAN][name]))
+        why = _why(item, item.config.stash[_PLAN][name])
+        item.config.stash[_REJECTED].setdefault(name, set()).update(why)
+        with open(_rejections(), "a", encoding="utf-8") as fh:      # one short line: appended whole
+            fh.write(f"{name} {' '.join(sorted(why))}\n")
     return report
