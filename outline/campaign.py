@@ -120,7 +120,7 @@ def render(campaign: Campaign, faults: list[Fault], left_out: list[tuple[str, st
         "  and BCU by the path the design gives that fault, within its bound; no device ever takes a wrong",
         "  notch, and none goes without a command for longer than a takeover takes. Where the fault fails a",
         "  board its node's CPU3 reports (DECISIONS.md \"Fault records\"), the record is at the master, the",
-        f"  commanding system, {record_bound(len(shape.nodes))} ms after the fault: two token rounds of "
+        f"  commanding system, within {record_bound(len(shape.nodes))} ms of the fault: two token rounds of "
         f"{len(shape.nodes)} nodes (the request, then",
         "  the grant, PRO-02/04/06), a takeover and the 10 ms before a block.",
         "  Not in the campaign:",
@@ -147,8 +147,8 @@ def _outline(campaign: Campaign, group: Group, kind: str, members: list[tuple[Fa
               for fault, car in members]
     title = group.title.replace("<fault>", named[0].upper() + named[1:])
     master = STANDBY if group is TAKES_OVER else COMMANDING
-    record = [f"    When {record_bound(len(shape.nodes)) - WINDOW} ms pass",
-              f'    Then "{master}" holds a fault record of "<node>" saying "<part>" failed'] if recorded else []
+    record = [f'    And "{master}" holds a fault record of "<node>" saying "<part>" failed at most '
+              f"{record_bound(len(shape.nodes))} ms after it"] if recorded else []
     return [
         f"  {' '.join('@req:' + r for r in (*group.reqs, *(['PRO-06'] if recorded else [])))}",
         f"  Scenario Outline: {campaign.item} {title}{f', recorded at {master}' if recorded else ''}",

@@ -16,6 +16,7 @@ articles' design, not the reference's code:
 from __future__ import annotations
 
 from dataclasses import dataclass
+from typing import Callable
 
 COMMAND_BOARDS = ("TXC", "RXC")    # boards with their own supply (CMD-01), named <unit>.<board>
 # DECISIONS.md "Fault records": a node's CPU3 writes a record of each of its boards that fails, as block data
@@ -77,8 +78,8 @@ class TrainShape:
                     dead |= {f"{supply}.{b}" for b in self.boards[supply] if b not in COMMAND_BOARDS}
         return dead
 
-    def paths(self, faults: tuple[Fault, ...] | list[Fault]) -> dict[int, int | None]:
-        """Car -> the path its CI and BCU get the command by (1, 2, 3), None if the design leaves it none."""
+    def _ring(self, faults: tuple[Fault, ...] | list[Fault]) -> "_Ring":
+        """The ring under `faults` and who commands on it: shared by paths() and records()."""
         dead = self.dead_boards(faults)
         cut = {frozenset(f.values) for f in faults if f.kind == "span"}
         nodes = self.nodes
@@ -102,9 +103,16 @@ class TrainShape:
         i2 = nodes.index(sys2)
         hears_ring2 = on[sys2] and (joined(sys2, nodes[i2 - 1]) or joined(sys2, nodes[(i2 + 1) % len(nodes)]))
         takes_over = txc2 and hears_ring2 and not (on_ring1 and sys2 in heard_from(sys1))
-        entering = [s for s, ok in ((sys1, on_ring1), (sys2, takes_over and on[sys2])) if ok]
-        heard = set().union(*(heard_from(s) for s in entering))
-        self_diagnostic = txc1 or takes_over
+        return _Ring(dead, heard_from, txc1, on_ring1, takes_over, on[sys2])
+
+    def paths(self, faults: tuple[Fault, ...] | list[Fault]) -> dict[int, int | None]:
+        """Car -> the path its CI and BCU get the command by (1, 2, 3), None if the design leaves it none."""
+        ring = self._ring(faults)
+        dead = ring.dead
+        sys1, sys2 = self.systems
+        entering = [s for s, ok in ((sys1, ring.on_ring1), (sys2, ring.takes_over and ring.on2)) if ok]
+        heard = set().union(*(ring.heard_from(s) for s in entering))
+        self_diagnostic = ring.txc1 or ring.takes_over
         out: dict[int, int | None] = {}
         for car in self.cars:
             lcu = f"car{car}.LCU"
@@ -118,3 +126,46 @@ class TrainShape:
             else:
                 out[car] = None
         return out
+
+    def records(self, faults: tuple[Fault, ...] | list[Fault]) -> Records:
+        """Where the fault records the faults make must end up (DECISIONS.md "Block data", "Fault records").
+
+        The master is the commanding cab's master system: system 1, or system 2 once it has taken over; it
+        stores records while its CPU3 and MDM8 live. A record is written by the failed board's CPU3 (one
+        record per failed board, fault_record) and reaches the master if that CPU3 and its MDM8 live and the
+        master hears the node on the ring. Where system 2 takes over while system 1 still commands its own
+        segment of a split ring, each takes the mastership back from the other whenever it has heard nothing
+        for a takeover time (RED-02): which one holds a record is then not the design's to say."""
+        made = dict.fromkeys(r for f in faults if (r := fault_record(f)) is not None)
+        if not made:
+            return Records(None, (), None)
+        ring = self._ring(faults)
+        sys1, sys2 = self.systems
+        if ring.takes_over and ring.on_ring1:
+            return Records(None, (), "system 1 and system 2 command two segments of the ring: the mastership "
+                                     "goes back and forth between them (RED-02)")
+        master = sys2 if ring.takes_over else sys1
+        if {f"{master}.CPU3", f"{master}.MDM8"} & ring.dead:
+            return Records(None, (), f"the master, {master}, cannot store records: its CPU3 or MDM8 is dead")
+        heard = ring.heard_from(master)
+        kept = tuple((node, board) for node, board in made
+                     if node in heard and not {f"{node}.CPU3", f"{node}.MDM8"} & ring.dead)
+        return Records(master, kept, None)
+
+
+@dataclass(frozen=True)
+class _Ring:
+    dead: set[str]
+    heard_from: Callable[[str], set[str]]
+    txc1: bool                  # system 1's TXC lives: it drives the self-diagnostic line
+    on_ring1: bool              # and its MDM8 too: system 1 puts commands on the ring
+    takes_over: bool            # system 2 takes over (RED-02, DECISIONS.md: only if it hears the ring)
+    on2: bool                   # system 2's MDM8 lives
+
+
+@dataclass(frozen=True)
+class Records:
+    """records(): the master that must hold them, the (node, board) records, or why none can be asked for."""
+    master: str | None
+    held: tuple[tuple[str, str], ...]
+    unchecked: str | None

@@ -220,6 +220,30 @@ def _(sut: TrainDriver, t_action: int, master: str, node: str, board: str, event
         f"the record is stamped {records[-1][1]} ms; the {event} happened at {ms(t_action)} (limit {bound} ms)")
 
 
+# A record is looked for every RECORD_LOOK_US while its bound runs: a fault campaign's row waits only as long as
+# its record takes (a few token rounds), not the whole bound (up to seconds under a double fault).
+RECORD_LOOK_US = 10_000
+
+
+@then(parsers.parse('"{master}"在该事件后{bound:g} ms内保存有"{node}"关于"{board}"{event:w}的故障记录'),
+      converters={"event": zh.core_event})
+@then(parsers.parse('"{master}" holds a fault record of "{node}" saying "{board}" {event:w} at most {bound:g} ms '
+                    'after it'))
+def _(sut: TrainDriver, t_action: int, master: str, node: str, board: str, event: str, bound: float) -> None:
+    deadline = t_action + us(bound)
+    if sut.now_us > deadline:
+        raise AssertionError(f"the step comes {ms(sut.now_us - deadline)} after its bound: when the record came "
+                             f"cannot be told any more (look before {bound:g} ms have passed)")
+    while True:
+        records = [r for r in _fault_records(sut, master, node) if r[3:] == [board, event]]
+        if records:
+            return
+        if sut.now_us >= deadline:
+            raise AssertionError(f"{ms(deadline - t_action)} after the {event} {master} holds no record of {node} "
+                                 f"saying {board} {event}: {_fault_records(sut, master, node)}")
+        sut.advance(min(RECORD_LOOK_US, deadline - sut.now_us))
+
+
 @then(parsers.parse("{cab:d}号司机室的检修画面共有{count:d}行"))
 @then(parsers.parse("the maintenance view of cab {cab:d} holds {count:d} line(s)"))
 def _(sut: TrainDriver, cab: int, count: int) -> None:

@@ -9,8 +9,8 @@ import pytest
 
 from outline import campaign, metro_campaign
 from outline.campaign import NO_MDM9, OFF_THE_RING, RIDES, TAKES_OVER
-from outline.fault_model import Fault, TrainShape, fault_record
-from outline.campaign_text import example_rows, powered, record_bound
+from outline.fault_model import Fault, Records, TrainShape, fault_record
+from outline.campaign_text import example_rows, powered, record_bound, regenerated_record_bound
 from tests.variants import DOUBLE_ONLY
 from tests.test_faulty_variants import ROOT
 
@@ -160,7 +160,43 @@ def test_a_record_after_a_takeover_is_looked_for_at_system_2_within_two_token_ro
     text = (ROOT / campaign.CAMPAIGNS[0].path).read_text(encoding="utf-8")
     outline = text.split("Scenario Outline: F-NET-30 Board <board> failed, the commanding system lost: system 2 "
                          "takes over, recorded at car1.CCU.sys2\n", 1)[1].split("Scenario Outline", 1)[0]
-    assert '"car1.CCU.sys2" holds a fault record of "<node>" saying "<part>" failed' in outline
-    assert "| car1.CCU.sys1.TXC | car1.CCU.sys1 | TXC  |" in outline
     assert record_bound(12) == 2 * 120 + 100 + 10          # 12 nodes of an 8-car set: 120 ms rounds (PRO-02)
-    assert f"When {record_bound(12) - 200} ms pass" in outline
+    assert (f'"car1.CCU.sys2" holds a fault record of "<node>" saying "<part>" failed at most {record_bound(12)} ms '
+            "after it") in outline
+    assert "| car1.CCU.sys1.TXC | car1.CCU.sys1 | TXC  |" in outline
+
+
+# -- fault records under two faults (outline/fault_model.py TrainShape.records), read off DECISIONS.md ----------
+def test_the_fault_records_of_a_double_fault_are_read_off_the_decisions(eight_cars) -> None:
+    shape = TrainShape.of(eight_cars)
+    sys1, sys2 = "car1.CCU.sys1", "car1.CCU.sys2"
+    # A cut leaves a way round the ring: car 3's record reaches system 1.
+    assert shape.records((_board("car3.LCU.MDM9"), _span("car5.LCU", "car6.LCU"))) == \
+        Records(sys1, (("car3.LCU", "MDM9"),), None)
+    # Its MDM8 dead too: the record never leaves the node.
+    assert shape.records((_board("car3.LCU.MDM9"), _board("car3.LCU.MDM8"))) == Records(sys1, (), None)
+    # Two nodes' records, each its own grant.
+    assert shape.records((_board("car3.LCU.MDM9"), Fault("supply", ("car5.LCU.RXC",)))) == \
+        Records(sys1, (("car3.LCU", "MDM9"), ("car5.LCU", "RXC")), None)
+    # System 1's TXC lost and system 2 deaf to the ring: nobody takes over, system 1 stays the master and keeps
+    # its own record.
+    assert shape.records((_board(f"{sys1}.TXC"), _board(f"{sys2}.MDM8"))) == Records(sys1, ((sys1, "TXC"),), None)
+    # After a takeover the record is at system 2, heard the long way round past the cut.
+    assert shape.records((_board(f"{sys1}.TXC"), _span(sys1, sys2))) == Records(sys2, ((sys1, "TXC"),), None)
+    # The master's own CPU3 dead: no one stores records, and the campaign says so instead of asking.
+    unchecked = shape.records((_board(f"{sys1}.CPU3"), _board("car3.LCU.MDM9")))
+    assert unchecked.held == () and "car1.CCU.sys1, cannot store records" in unchecked.unchecked
+    # Two cuts and no board: nothing to record, nothing left unchecked.
+    assert shape.records((_span("car3.LCU", "car4.LCU"), _span("car6.LCU", "car7.LCU"))) == Records(None, (), None)
+
+
+def test_double_fault_records_are_waited_for_through_a_token_regeneration() -> None:
+    # 12 nodes: 500 ms without a token, 240 ms to form it, then per node recording two 240 ms rounds of a line
+    # and a 10 ms block, and a takeover.
+    assert regenerated_record_bound(12, 1) == 500 + 240 + 480 + 10 + 100
+    assert regenerated_record_bound(12, 2) == 500 + 240 + 2 * (480 + 10) + 100
+    text = (ROOT / campaign.CAMPAIGNS[2].path).read_text(encoding="utf-8")
+    outline = text.split("Scenario Outline: F-NET-32 Board <board1> failed and board <board2> failed: each car by "
+                         "the path left to it, both faults recorded at the master\n", 1)[1].split("Examples:", 1)[0]
+    assert (f'And "<master>" holds a fault record of "<node2>" saying "<part2>" failed at most '
+            f"{regenerated_record_bound(12, 2)} ms after it") in outline

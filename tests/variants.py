@@ -98,6 +98,12 @@ class RxcRepeatsTheRing(ReferenceTrain):
     BEHAVIOUR = {"rxc_trusts_selfdiag": False}
 
 
+class BlockDataTheShortWayOnly(ReferenceTrain):
+    """PRO-06: block data goes to the master only the shorter way round the ring, so a cut on that way loses a
+    fault record (an intact ring, all a single board fault leaves, always carries it)."""
+    BEHAVIOUR = {"block_data_both_ways": False}
+
+
 class LampsFromOneTxc(ReferenceTrain):
     """RED-03: only system 1's TXC drives the cab lamps."""
     BEHAVIOUR = {"lamps_parallel": False}
@@ -400,7 +406,8 @@ class RuggedBoards(ReferenceTrain):
 
 # Faulty under double faults only (issue 16): the single-fault campaigns pass them, the double-fault one
 # (F-NET-32, run on request) must reject them: tests/test_campaign.py.
-DOUBLE_ONLY = [StaleCommandsWhileTheRingIsHeard, FullNotchesOnPath3WithALiveModem, RxcRepeatsTheRing]
+DOUBLE_ONLY = [StaleCommandsWhileTheRingIsHeard, FullNotchesOnPath3WithALiveModem, RxcRepeatsTheRing,
+               BlockDataTheShortWayOnly]
 
 IN_BAND = [HoldCountedToSend, FasterNodes, CommandsEvery12ms, EarlierFallback, PipeTripAt585, DoorBandsNarrow,
            RuggedBoards]

@@ -8,7 +8,7 @@ Feature: F-NET-31 Single-fault campaign, two coupled 8-car sets
   and BCU by the path the design gives that fault, within its bound; no device ever takes a wrong
   notch, and none goes without a command for longer than a takeover takes. Where the fault fails a
   board its node's CPU3 reports (DECISIONS.md "Fault records"), the record is at the master, the
-  commanding system, 590 ms after the fault: two token rounds of 24 nodes (the request, then
+  commanding system, within 590 ms of the fault: two token rounds of 24 nodes (the request, then
   the grant, PRO-02/04/06), a takeover and the 10 ms before a block.
   Not in the campaign:
   - car1.desk: the desk's digital inputs: switching them off changes the driver's command itself (CMD-05), no network fault
@@ -115,8 +115,7 @@ Feature: F-NET-31 Single-fault campaign, two coupled 8-car sets
     And no CI or BCU goes without a command for more than 100 ms
     And no CI or BCU ever receives a traction notch other than 0 or 6
     And no command over path 2 or 3 ever carried more than the traction and brake steps A and B
-    When 390 ms pass
-    Then "car1.CCU.sys1" holds a fault record of "<node>" saying "<part>" failed
+    And "car1.CCU.sys1" holds a fault record of "<node>" saying "<part>" failed at most 590 ms after it
 
     Examples:
       | board              | node           | part |
@@ -175,8 +174,7 @@ Feature: F-NET-31 Single-fault campaign, two coupled 8-car sets
     And no CI or BCU goes without a command for more than 100 ms
     And no CI or BCU ever receives a traction notch other than 0 or 6
     And no command over path 2 or 3 ever carried more than the traction and brake steps A and B
-    When 390 ms pass
-    Then "car1.CCU.sys1" holds a fault record of "<node>" saying "<part>" failed
+    And "car1.CCU.sys1" holds a fault record of "<node>" saying "<part>" failed at most 590 ms after it
 
     Examples:
       | supply             | node           | part |
@@ -229,8 +227,7 @@ Feature: F-NET-31 Single-fault campaign, two coupled 8-car sets
     And no CI or BCU goes without a command for more than 100 ms
     And no CI or BCU ever receives a traction notch other than 0 or 6
     And no command over path 2 or 3 ever carried more than the traction and brake steps A and B
-    When 390 ms pass
-    Then "car1.CCU.sys2" holds a fault record of "<node>" saying "<part>" failed
+    And "car1.CCU.sys2" holds a fault record of "<node>" saying "<part>" failed at most 590 ms after it
 
     Examples:
       | board             | node          | part |
@@ -261,8 +258,7 @@ Feature: F-NET-31 Single-fault campaign, two coupled 8-car sets
     And no CI or BCU goes without a command for more than 100 ms
     And no CI or BCU ever receives a traction notch other than 0 or 6
     And no command over path 2 or 3 ever carried more than the traction and brake steps A and B
-    When 390 ms pass
-    Then "car1.CCU.sys2" holds a fault record of "<node>" saying "<part>" failed
+    And "car1.CCU.sys2" holds a fault record of "<node>" saying "<part>" failed at most 590 ms after it
 
     Examples:
       | supply            | node          | part |
@@ -338,8 +334,7 @@ Feature: F-NET-31 Single-fault campaign, two coupled 8-car sets
     And no CI or BCU goes without a command for more than 100 ms
     And no CI or BCU ever receives a traction notch other than 0 or 6
     And no command over path 2 or 3 ever carried more than the traction and brake steps A and B
-    When 390 ms pass
-    Then "car1.CCU.sys1" holds a fault record of "<node>" saying "<part>" failed
+    And "car1.CCU.sys1" holds a fault record of "<node>" saying "<part>" failed at most 590 ms after it
 
     Examples:
       | board          | car | node      | part |

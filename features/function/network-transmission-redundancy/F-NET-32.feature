@@ -2,13 +2,20 @@
 # and outline/fault_model.py; edit those, not this file. tests/test_campaign.py fails when they differ.
 @item:F-NET-32 @profile:crh2 @req:TST-04 @on_request
 Feature: F-NET-32 Double-fault campaign, 8-car set
-  Requirements: NET-03, CMD-01, CMD-02, CMD-03, CMD-04, RED-01, RED-02, TST-04.
+  Requirements: NET-03, CMD-01, CMD-02, CMD-03, CMD-04, PRO-06, RED-01, RED-02, TST-04.
   Every pair of the 80 single faults of F-NET-30 (3160 pairs), one scenario each, run
   on request (`--item F-NET-32`, `make campaign`). At the instant of the faults the driver moves the
   traction notch; column `paths` gives, car 1 first, the path by which that car's CI and BCU must then take
   the command (1, 2 or 3; - where the pair leaves the car no path: then the command must not reach it),
   as outline/fault_model.py derives it from the articles and DECISIONS.md's takeover rule (a standby
   system deaf to the ring does not take over). Whatever the path, no device ever takes a wrong notch.
+  Where a fault fails a board its node's CPU3 reports and that CPU3 and its MDM8 live on, heard by a master
+  able to store it (DECISIONS.md "Block data", "Fault records"), the record must be at the master
+  (`master`) within 1330 ms of the faults, 1820 ms for two records: the token lost
+  and formed again (PRO-05, PRO-03), then per record two rounds of a ring broken to a line (PRO-04), the
+  block (PRO-06) and a takeover. Records are not looked for:
+  - in 34 pairs: the master, car1.CCU.sys1, cannot store records: its CPU3 or MDM8 is dead
+  - in 2 pairs: the master, car1.CCU.sys2, cannot store records: its CPU3 or MDM8 is dead
 
   Background:
     Given an 8-car CRH2 train set
@@ -111,532 +118,547 @@ Feature: F-NET-32 Double-fault campaign, 8-car set
       | a             | b             | board              | paths           |
       | car1.CCU.sys1 | car1.CCU.sys2 | car1.CCU.sys1.CPU3 | 1,1,1,1,1,1,1,1 |
       | car1.CCU.sys1 | car1.CCU.sys2 | car1.CCU.sys1.MDM8 | 1,1,1,1,1,1,1,1 |
-      | car1.CCU.sys1 | car1.CCU.sys2 | car1.CCU.sys1.TXC  | 1,1,1,1,1,1,1,1 |
       | car1.CCU.sys1 | car1.CCU.sys2 | car1.CCU.sys2.CPU3 | 1,1,1,1,1,1,1,1 |
       | car1.CCU.sys1 | car1.CCU.sys2 | car1.CCU.sys2.MDM8 | 1,1,1,1,1,1,1,1 |
-      | car1.CCU.sys1 | car1.CCU.sys2 | car1.CCU.sys2.TXC  | 1,1,1,1,1,1,1,1 |
       | car1.CCU.sys1 | car1.CCU.sys2 | car1.LCU.CPU3      | 1,1,1,1,1,1,1,1 |
       | car1.CCU.sys1 | car1.CCU.sys2 | car1.LCU.MDM8      | 3,1,1,1,1,1,1,1 |
-      | car1.CCU.sys1 | car1.CCU.sys2 | car1.LCU.MDM9      | 2,1,1,1,1,1,1,1 |
-      | car1.CCU.sys1 | car1.CCU.sys2 | car1.LCU.RXC       | 1,1,1,1,1,1,1,1 |
       | car1.CCU.sys1 | car1.CCU.sys2 | car2.LCU.CPU3      | 1,1,1,1,1,1,1,1 |
       | car1.CCU.sys1 | car1.CCU.sys2 | car2.LCU.MDM8      | 1,3,1,1,1,1,1,1 |
-      | car1.CCU.sys1 | car1.CCU.sys2 | car2.LCU.MDM9      | 1,2,1,1,1,1,1,1 |
-      | car1.CCU.sys1 | car1.CCU.sys2 | car2.LCU.RXC       | 1,1,1,1,1,1,1,1 |
       | car1.CCU.sys1 | car1.CCU.sys2 | car3.LCU.CPU3      | 1,1,1,1,1,1,1,1 |
       | car1.CCU.sys1 | car1.CCU.sys2 | car3.LCU.MDM8      | 1,1,3,1,1,1,1,1 |
-      | car1.CCU.sys1 | car1.CCU.sys2 | car3.LCU.MDM9      | 1,1,2,1,1,1,1,1 |
-      | car1.CCU.sys1 | car1.CCU.sys2 | car3.LCU.RXC       | 1,1,1,1,1,1,1,1 |
       | car1.CCU.sys1 | car1.CCU.sys2 | car4.LCU.CPU3      | 1,1,1,1,1,1,1,1 |
       | car1.CCU.sys1 | car1.CCU.sys2 | car4.LCU.MDM8      | 1,1,1,3,1,1,1,1 |
-      | car1.CCU.sys1 | car1.CCU.sys2 | car4.LCU.MDM9      | 1,1,1,2,1,1,1,1 |
-      | car1.CCU.sys1 | car1.CCU.sys2 | car4.LCU.RXC       | 1,1,1,1,1,1,1,1 |
       | car1.CCU.sys1 | car1.CCU.sys2 | car5.LCU.CPU3      | 1,1,1,1,1,1,1,1 |
       | car1.CCU.sys1 | car1.CCU.sys2 | car5.LCU.MDM8      | 1,1,1,1,3,1,1,1 |
-      | car1.CCU.sys1 | car1.CCU.sys2 | car5.LCU.MDM9      | 1,1,1,1,2,1,1,1 |
-      | car1.CCU.sys1 | car1.CCU.sys2 | car5.LCU.RXC       | 1,1,1,1,1,1,1,1 |
       | car1.CCU.sys1 | car1.CCU.sys2 | car6.LCU.CPU3      | 1,1,1,1,1,1,1,1 |
       | car1.CCU.sys1 | car1.CCU.sys2 | car6.LCU.MDM8      | 1,1,1,1,1,3,1,1 |
-      | car1.CCU.sys1 | car1.CCU.sys2 | car6.LCU.MDM9      | 1,1,1,1,1,2,1,1 |
-      | car1.CCU.sys1 | car1.CCU.sys2 | car6.LCU.RXC       | 1,1,1,1,1,1,1,1 |
       | car1.CCU.sys1 | car1.CCU.sys2 | car7.LCU.CPU3      | 1,1,1,1,1,1,1,1 |
       | car1.CCU.sys1 | car1.CCU.sys2 | car7.LCU.MDM8      | 1,1,1,1,1,1,3,1 |
-      | car1.CCU.sys1 | car1.CCU.sys2 | car7.LCU.MDM9      | 1,1,1,1,1,1,2,1 |
-      | car1.CCU.sys1 | car1.CCU.sys2 | car7.LCU.RXC       | 1,1,1,1,1,1,1,1 |
       | car1.CCU.sys1 | car1.CCU.sys2 | car8.LCU.CPU3      | 1,1,1,1,1,1,1,1 |
       | car1.CCU.sys1 | car1.CCU.sys2 | car8.LCU.MDM8      | 1,1,1,1,1,1,1,3 |
-      | car1.CCU.sys1 | car1.CCU.sys2 | car8.LCU.MDM9      | 1,1,1,1,1,1,1,2 |
-      | car1.CCU.sys1 | car1.CCU.sys2 | car8.LCU.RXC       | 1,1,1,1,1,1,1,1 |
       | car1.CCU.sys1 | car1.CCU.sys2 | car8.CCU.sys2.CPU3 | 1,1,1,1,1,1,1,1 |
       | car1.CCU.sys1 | car1.CCU.sys2 | car8.CCU.sys2.MDM8 | 1,1,1,1,1,1,1,1 |
-      | car1.CCU.sys1 | car1.CCU.sys2 | car8.CCU.sys2.TXC  | 1,1,1,1,1,1,1,1 |
       | car1.CCU.sys1 | car1.CCU.sys2 | car8.CCU.sys1.CPU3 | 1,1,1,1,1,1,1,1 |
       | car1.CCU.sys1 | car1.CCU.sys2 | car8.CCU.sys1.MDM8 | 1,1,1,1,1,1,1,1 |
-      | car1.CCU.sys1 | car1.CCU.sys2 | car8.CCU.sys1.TXC  | 1,1,1,1,1,1,1,1 |
       | car1.CCU.sys2 | car1.LCU      | car1.CCU.sys1.CPU3 | 1,1,1,1,1,1,1,1 |
       | car1.CCU.sys2 | car1.LCU      | car1.CCU.sys1.MDM8 | 3,3,3,3,3,3,3,3 |
-      | car1.CCU.sys2 | car1.LCU      | car1.CCU.sys1.TXC  | 1,1,1,1,1,1,1,1 |
       | car1.CCU.sys2 | car1.LCU      | car1.CCU.sys2.CPU3 | 1,1,1,1,1,1,1,1 |
       | car1.CCU.sys2 | car1.LCU      | car1.CCU.sys2.MDM8 | 1,1,1,1,1,1,1,1 |
-      | car1.CCU.sys2 | car1.LCU      | car1.CCU.sys2.TXC  | 1,1,1,1,1,1,1,1 |
       | car1.CCU.sys2 | car1.LCU      | car1.LCU.CPU3      | 1,1,1,1,1,1,1,1 |
       | car1.CCU.sys2 | car1.LCU      | car1.LCU.MDM8      | 3,1,1,1,1,1,1,1 |
-      | car1.CCU.sys2 | car1.LCU      | car1.LCU.MDM9      | 2,1,1,1,1,1,1,1 |
-      | car1.CCU.sys2 | car1.LCU      | car1.LCU.RXC       | 1,1,1,1,1,1,1,1 |
       | car1.CCU.sys2 | car1.LCU      | car2.LCU.CPU3      | 1,1,1,1,1,1,1,1 |
       | car1.CCU.sys2 | car1.LCU      | car2.LCU.MDM8      | 3,3,1,1,1,1,1,1 |
-      | car1.CCU.sys2 | car1.LCU      | car2.LCU.MDM9      | 1,2,1,1,1,1,1,1 |
-      | car1.CCU.sys2 | car1.LCU      | car2.LCU.RXC       | 1,1,1,1,1,1,1,1 |
       | car1.CCU.sys2 | car1.LCU      | car3.LCU.CPU3      | 1,1,1,1,1,1,1,1 |
       | car1.CCU.sys2 | car1.LCU      | car3.LCU.MDM8      | 3,3,3,1,1,1,1,1 |
-      | car1.CCU.sys2 | car1.LCU      | car3.LCU.MDM9      | 1,1,2,1,1,1,1,1 |
-      | car1.CCU.sys2 | car1.LCU      | car3.LCU.RXC       | 1,1,1,1,1,1,1,1 |
       | car1.CCU.sys2 | car1.LCU      | car4.LCU.CPU3      | 1,1,1,1,1,1,1,1 |
       | car1.CCU.sys2 | car1.LCU      | car4.LCU.MDM8      | 3,3,3,3,1,1,1,1 |
-      | car1.CCU.sys2 | car1.LCU      | car4.LCU.MDM9      | 1,1,1,2,1,1,1,1 |
-      | car1.CCU.sys2 | car1.LCU      | car4.LCU.RXC       | 1,1,1,1,1,1,1,1 |
       | car1.CCU.sys2 | car1.LCU      | car5.LCU.CPU3      | 1,1,1,1,1,1,1,1 |
       | car1.CCU.sys2 | car1.LCU      | car5.LCU.MDM8      | 3,3,3,3,3,1,1,1 |
-      | car1.CCU.sys2 | car1.LCU      | car5.LCU.MDM9      | 1,1,1,1,2,1,1,1 |
-      | car1.CCU.sys2 | car1.LCU      | car5.LCU.RXC       | 1,1,1,1,1,1,1,1 |
       | car1.CCU.sys2 | car1.LCU      | car6.LCU.CPU3      | 1,1,1,1,1,1,1,1 |
       | car1.CCU.sys2 | car1.LCU      | car6.LCU.MDM8      | 3,3,3,3,3,3,1,1 |
-      | car1.CCU.sys2 | car1.LCU      | car6.LCU.MDM9      | 1,1,1,1,1,2,1,1 |
-      | car1.CCU.sys2 | car1.LCU      | car6.LCU.RXC       | 1,1,1,1,1,1,1,1 |
       | car1.CCU.sys2 | car1.LCU      | car7.LCU.CPU3      | 1,1,1,1,1,1,1,1 |
       | car1.CCU.sys2 | car1.LCU      | car7.LCU.MDM8      | 3,3,3,3,3,3,3,1 |
-      | car1.CCU.sys2 | car1.LCU      | car7.LCU.MDM9      | 1,1,1,1,1,1,2,1 |
-      | car1.CCU.sys2 | car1.LCU      | car7.LCU.RXC       | 1,1,1,1,1,1,1,1 |
       | car1.CCU.sys2 | car1.LCU      | car8.LCU.CPU3      | 1,1,1,1,1,1,1,1 |
       | car1.CCU.sys2 | car1.LCU      | car8.LCU.MDM8      | 3,3,3,3,3,3,3,3 |
-      | car1.CCU.sys2 | car1.LCU      | car8.LCU.MDM9      | 1,1,1,1,1,1,1,2 |
-      | car1.CCU.sys2 | car1.LCU      | car8.LCU.RXC       | 1,1,1,1,1,1,1,1 |
       | car1.CCU.sys2 | car1.LCU      | car8.CCU.sys2.CPU3 | 1,1,1,1,1,1,1,1 |
       | car1.CCU.sys2 | car1.LCU      | car8.CCU.sys2.MDM8 | 3,3,3,3,3,3,3,3 |
-      | car1.CCU.sys2 | car1.LCU      | car8.CCU.sys2.TXC  | 1,1,1,1,1,1,1,1 |
       | car1.CCU.sys2 | car1.LCU      | car8.CCU.sys1.CPU3 | 1,1,1,1,1,1,1,1 |
       | car1.CCU.sys2 | car1.LCU      | car8.CCU.sys1.MDM8 | 3,3,3,3,3,3,3,3 |
-      | car1.CCU.sys2 | car1.LCU      | car8.CCU.sys1.TXC  | 1,1,1,1,1,1,1,1 |
       | car1.LCU      | car2.LCU      | car1.CCU.sys1.CPU3 | 1,1,1,1,1,1,1,1 |
       | car1.LCU      | car2.LCU      | car1.CCU.sys1.MDM8 | 1,3,3,3,3,3,3,3 |
-      | car1.LCU      | car2.LCU      | car1.CCU.sys1.TXC  | 1,1,1,1,1,1,1,1 |
       | car1.LCU      | car2.LCU      | car1.CCU.sys2.CPU3 | 1,1,1,1,1,1,1,1 |
       | car1.LCU      | car2.LCU      | car1.CCU.sys2.MDM8 | 3,1,1,1,1,1,1,1 |
-      | car1.LCU      | car2.LCU      | car1.CCU.sys2.TXC  | 1,1,1,1,1,1,1,1 |
       | car1.LCU      | car2.LCU      | car1.LCU.CPU3      | 1,1,1,1,1,1,1,1 |
       | car1.LCU      | car2.LCU      | car1.LCU.MDM8      | 3,1,1,1,1,1,1,1 |
-      | car1.LCU      | car2.LCU      | car1.LCU.MDM9      | 2,1,1,1,1,1,1,1 |
-      | car1.LCU      | car2.LCU      | car1.LCU.RXC       | 1,1,1,1,1,1,1,1 |
       | car1.LCU      | car2.LCU      | car2.LCU.CPU3      | 1,1,1,1,1,1,1,1 |
       | car1.LCU      | car2.LCU      | car2.LCU.MDM8      | 1,3,1,1,1,1,1,1 |
-      | car1.LCU      | car2.LCU      | car2.LCU.MDM9      | 1,2,1,1,1,1,1,1 |
-      | car1.LCU      | car2.LCU      | car2.LCU.RXC       | 1,1,1,1,1,1,1,1 |
       | car1.LCU      | car2.LCU      | car3.LCU.CPU3      | 1,1,1,1,1,1,1,1 |
       | car1.LCU      | car2.LCU      | car3.LCU.MDM8      | 1,3,3,1,1,1,1,1 |
-      | car1.LCU      | car2.LCU      | car3.LCU.MDM9      | 1,1,2,1,1,1,1,1 |
-      | car1.LCU      | car2.LCU      | car3.LCU.RXC       | 1,1,1,1,1,1,1,1 |
       | car1.LCU      | car2.LCU      | car4.LCU.CPU3      | 1,1,1,1,1,1,1,1 |
       | car1.LCU      | car2.LCU      | car4.LCU.MDM8      | 1,3,3,3,1,1,1,1 |
-      | car1.LCU      | car2.LCU      | car4.LCU.MDM9      | 1,1,1,2,1,1,1,1 |
-      | car1.LCU      | car2.LCU      | car4.LCU.RXC       | 1,1,1,1,1,1,1,1 |
       | car1.LCU      | car2.LCU      | car5.LCU.CPU3      | 1,1,1,1,1,1,1,1 |
       | car1.LCU      | car2.LCU      | car5.LCU.MDM8      | 1,3,3,3,3,1,1,1 |
-      | car1.LCU      | car2.LCU      | car5.LCU.MDM9      | 1,1,1,1,2,1,1,1 |
-      | car1.LCU      | car2.LCU      | car5.LCU.RXC       | 1,1,1,1,1,1,1,1 |
       | car1.LCU      | car2.LCU      | car6.LCU.CPU3      | 1,1,1,1,1,1,1,1 |
       | car1.LCU      | car2.LCU      | car6.LCU.MDM8      | 1,3,3,3,3,3,1,1 |
-      | car1.LCU      | car2.LCU      | car6.LCU.MDM9      | 1,1,1,1,1,2,1,1 |
-      | car1.LCU      | car2.LCU      | car6.LCU.RXC       | 1,1,1,1,1,1,1,1 |
       | car1.LCU      | car2.LCU      | car7.LCU.CPU3      | 1,1,1,1,1,1,1,1 |
       | car1.LCU      | car2.LCU      | car7.LCU.MDM8      | 1,3,3,3,3,3,3,1 |
-      | car1.LCU      | car2.LCU      | car7.LCU.MDM9      | 1,1,1,1,1,1,2,1 |
-      | car1.LCU      | car2.LCU      | car7.LCU.RXC       | 1,1,1,1,1,1,1,1 |
       | car1.LCU      | car2.LCU      | car8.LCU.CPU3      | 1,1,1,1,1,1,1,1 |
       | car1.LCU      | car2.LCU      | car8.LCU.MDM8      | 1,3,3,3,3,3,3,3 |
-      | car1.LCU      | car2.LCU      | car8.LCU.MDM9      | 1,1,1,1,1,1,1,2 |
-      | car1.LCU      | car2.LCU      | car8.LCU.RXC       | 1,1,1,1,1,1,1,1 |
       | car1.LCU      | car2.LCU      | car8.CCU.sys2.CPU3 | 1,1,1,1,1,1,1,1 |
       | car1.LCU      | car2.LCU      | car8.CCU.sys2.MDM8 | 1,3,3,3,3,3,3,3 |
-      | car1.LCU      | car2.LCU      | car8.CCU.sys2.TXC  | 1,1,1,1,1,1,1,1 |
       | car1.LCU      | car2.LCU      | car8.CCU.sys1.CPU3 | 1,1,1,1,1,1,1,1 |
       | car1.LCU      | car2.LCU      | car8.CCU.sys1.MDM8 | 1,3,3,3,3,3,3,3 |
-      | car1.LCU      | car2.LCU      | car8.CCU.sys1.TXC  | 1,1,1,1,1,1,1,1 |
       | car2.LCU      | car3.LCU      | car1.CCU.sys1.CPU3 | 1,1,1,1,1,1,1,1 |
       | car2.LCU      | car3.LCU      | car1.CCU.sys1.MDM8 | 1,1,3,3,3,3,3,3 |
-      | car2.LCU      | car3.LCU      | car1.CCU.sys1.TXC  | 1,1,1,1,1,1,1,1 |
       | car2.LCU      | car3.LCU      | car1.CCU.sys2.CPU3 | 1,1,1,1,1,1,1,1 |
       | car2.LCU      | car3.LCU      | car1.CCU.sys2.MDM8 | 3,3,1,1,1,1,1,1 |
-      | car2.LCU      | car3.LCU      | car1.CCU.sys2.TXC  | 1,1,1,1,1,1,1,1 |
       | car2.LCU      | car3.LCU      | car1.LCU.CPU3      | 1,1,1,1,1,1,1,1 |
       | car2.LCU      | car3.LCU      | car1.LCU.MDM8      | 3,3,1,1,1,1,1,1 |
-      | car2.LCU      | car3.LCU      | car1.LCU.MDM9      | 2,1,1,1,1,1,1,1 |
-      | car2.LCU      | car3.LCU      | car1.LCU.RXC       | 1,1,1,1,1,1,1,1 |
       | car2.LCU      | car3.LCU      | car2.LCU.CPU3      | 1,1,1,1,1,1,1,1 |
       | car2.LCU      | car3.LCU      | car2.LCU.MDM8      | 1,3,1,1,1,1,1,1 |
-      | car2.LCU      | car3.LCU      | car2.LCU.MDM9      | 1,2,1,1,1,1,1,1 |
-      | car2.LCU      | car3.LCU      | car2.LCU.RXC       | 1,1,1,1,1,1,1,1 |
       | car2.LCU      | car3.LCU      | car3.LCU.CPU3      | 1,1,1,1,1,1,1,1 |
       | car2.LCU      | car3.LCU      | car3.LCU.MDM8      | 1,1,3,1,1,1,1,1 |
-      | car2.LCU      | car3.LCU      | car3.LCU.MDM9      | 1,1,2,1,1,1,1,1 |
-      | car2.LCU      | car3.LCU      | car3.LCU.RXC       | 1,1,1,1,1,1,1,1 |
       | car2.LCU      | car3.LCU      | car4.LCU.CPU3      | 1,1,1,1,1,1,1,1 |
       | car2.LCU      | car3.LCU      | car4.LCU.MDM8      | 1,1,3,3,1,1,1,1 |
-      | car2.LCU      | car3.LCU      | car4.LCU.MDM9      | 1,1,1,2,1,1,1,1 |
-      | car2.LCU      | car3.LCU      | car4.LCU.RXC       | 1,1,1,1,1,1,1,1 |
       | car2.LCU      | car3.LCU      | car5.LCU.CPU3      | 1,1,1,1,1,1,1,1 |
       | car2.LCU      | car3.LCU      | car5.LCU.MDM8      | 1,1,3,3,3,1,1,1 |
-      | car2.LCU      | car3.LCU      | car5.LCU.MDM9      | 1,1,1,1,2,1,1,1 |
-      | car2.LCU      | car3.LCU      | car5.LCU.RXC       | 1,1,1,1,1,1,1,1 |
       | car2.LCU      | car3.LCU      | car6.LCU.CPU3      | 1,1,1,1,1,1,1,1 |
       | car2.LCU      | car3.LCU      | car6.LCU.MDM8      | 1,1,3,3,3,3,1,1 |
-      | car2.LCU      | car3.LCU      | car6.LCU.MDM9      | 1,1,1,1,1,2,1,1 |
-      | car2.LCU      | car3.LCU      | car6.LCU.RXC       | 1,1,1,1,1,1,1,1 |
       | car2.LCU      | car3.LCU      | car7.LCU.CPU3      | 1,1,1,1,1,1,1,1 |
       | car2.LCU      | car3.LCU      | car7.LCU.MDM8      | 1,1,3,3,3,3,3,1 |
-      | car2.LCU      | car3.LCU      | car7.LCU.MDM9      | 1,1,1,1,1,1,2,1 |
-      | car2.LCU      | car3.LCU      | car7.LCU.RXC       | 1,1,1,1,1,1,1,1 |
       | car2.LCU      | car3.LCU      | car8.LCU.CPU3      | 1,1,1,1,1,1,1,1 |
       | car2.LCU      | car3.LCU      | car8.LCU.MDM8      | 1,1,3,3,3,3,3,3 |
-      | car2.LCU      | car3.LCU      | car8.LCU.MDM9      | 1,1,1,1,1,1,1,2 |
-      | car2.LCU      | car3.LCU      | car8.LCU.RXC       | 1,1,1,1,1,1,1,1 |
       | car2.LCU      | car3.LCU      | car8.CCU.sys2.CPU3 | 1,1,1,1,1,1,1,1 |
       | car2.LCU      | car3.LCU      | car8.CCU.sys2.MDM8 | 1,1,3,3,3,3,3,3 |
-      | car2.LCU      | car3.LCU      | car8.CCU.sys2.TXC  | 1,1,1,1,1,1,1,1 |
       | car2.LCU      | car3.LCU      | car8.CCU.sys1.CPU3 | 1,1,1,1,1,1,1,1 |
       | car2.LCU      | car3.LCU      | car8.CCU.sys1.MDM8 | 1,1,3,3,3,3,3,3 |
-      | car2.LCU      | car3.LCU      | car8.CCU.sys1.TXC  | 1,1,1,1,1,1,1,1 |
       | car3.LCU      | car4.LCU      | car1.CCU.sys1.CPU3 | 1,1,1,1,1,1,1,1 |
       | car3.LCU      | car4.LCU      | car1.CCU.sys1.MDM8 | 1,1,1,3,3,3,3,3 |
-      | car3.LCU      | car4.LCU      | car1.CCU.sys1.TXC  | 1,1,1,1,1,1,1,1 |
       | car3.LCU      | car4.LCU      | car1.CCU.sys2.CPU3 | 1,1,1,1,1,1,1,1 |
       | car3.LCU      | car4.LCU      | car1.CCU.sys2.MDM8 | 3,3,3,1,1,1,1,1 |
-      | car3.LCU      | car4.LCU      | car1.CCU.sys2.TXC  | 1,1,1,1,1,1,1,1 |
       | car3.LCU      | car4.LCU      | car1.LCU.CPU3      | 1,1,1,1,1,1,1,1 |
       | car3.LCU      | car4.LCU      | car1.LCU.MDM8      | 3,3,3,1,1,1,1,1 |
-      | car3.LCU      | car4.LCU      | car1.LCU.MDM9      | 2,1,1,1,1,1,1,1 |
-      | car3.LCU      | car4.LCU      | car1.LCU.RXC       | 1,1,1,1,1,1,1,1 |
       | car3.LCU      | car4.LCU      | car2.LCU.CPU3      | 1,1,1,1,1,1,1,1 |
       | car3.LCU      | car4.LCU      | car2.LCU.MDM8      | 1,3,3,1,1,1,1,1 |
-      | car3.LCU      | car4.LCU      | car2.LCU.MDM9      | 1,2,1,1,1,1,1,1 |
-      | car3.LCU      | car4.LCU      | car2.LCU.RXC       | 1,1,1,1,1,1,1,1 |
       | car3.LCU      | car4.LCU      | car3.LCU.CPU3      | 1,1,1,1,1,1,1,1 |
       | car3.LCU      | car4.LCU      | car3.LCU.MDM8      | 1,1,3,1,1,1,1,1 |
-      | car3.LCU      | car4.LCU      | car3.LCU.MDM9      | 1,1,2,1,1,1,1,1 |
-      | car3.LCU      | car4.LCU      | car3.LCU.RXC       | 1,1,1,1,1,1,1,1 |
       | car3.LCU      | car4.LCU      | car4.LCU.CPU3      | 1,1,1,1,1,1,1,1 |
       | car3.LCU      | car4.LCU      | car4.LCU.MDM8      | 1,1,1,3,1,1,1,1 |
-      | car3.LCU      | car4.LCU      | car4.LCU.MDM9      | 1,1,1,2,1,1,1,1 |
-      | car3.LCU      | car4.LCU      | car4.LCU.RXC       | 1,1,1,1,1,1,1,1 |
       | car3.LCU      | car4.LCU      | car5.LCU.CPU3      | 1,1,1,1,1,1,1,1 |
       | car3.LCU      | car4.LCU      | car5.LCU.MDM8      | 1,1,1,3,3,1,1,1 |
-      | car3.LCU      | car4.LCU      | car5.LCU.MDM9      | 1,1,1,1,2,1,1,1 |
-      | car3.LCU      | car4.LCU      | car5.LCU.RXC       | 1,1,1,1,1,1,1,1 |
       | car3.LCU      | car4.LCU      | car6.LCU.CPU3      | 1,1,1,1,1,1,1,1 |
       | car3.LCU      | car4.LCU      | car6.LCU.MDM8      | 1,1,1,3,3,3,1,1 |
-      | car3.LCU      | car4.LCU      | car6.LCU.MDM9      | 1,1,1,1,1,2,1,1 |
-      | car3.LCU      | car4.LCU      | car6.LCU.RXC       | 1,1,1,1,1,1,1,1 |
       | car3.LCU      | car4.LCU      | car7.LCU.CPU3      | 1,1,1,1,1,1,1,1 |
       | car3.LCU      | car4.LCU      | car7.LCU.MDM8      | 1,1,1,3,3,3,3,1 |
-      | car3.LCU      | car4.LCU      | car7.LCU.MDM9      | 1,1,1,1,1,1,2,1 |
-      | car3.LCU      | car4.LCU      | car7.LCU.RXC       | 1,1,1,1,1,1,1,1 |
       | car3.LCU      | car4.LCU      | car8.LCU.CPU3      | 1,1,1,1,1,1,1,1 |
       | car3.LCU      | car4.LCU      | car8.LCU.MDM8      | 1,1,1,3,3,3,3,3 |
-      | car3.LCU      | car4.LCU      | car8.LCU.MDM9      | 1,1,1,1,1,1,1,2 |
-      | car3.LCU      | car4.LCU      | car8.LCU.RXC       | 1,1,1,1,1,1,1,1 |
       | car3.LCU      | car4.LCU      | car8.CCU.sys2.CPU3 | 1,1,1,1,1,1,1,1 |
       | car3.LCU      | car4.LCU      | car8.CCU.sys2.MDM8 | 1,1,1,3,3,3,3,3 |
-      | car3.LCU      | car4.LCU      | car8.CCU.sys2.TXC  | 1,1,1,1,1,1,1,1 |
       | car3.LCU      | car4.LCU      | car8.CCU.sys1.CPU3 | 1,1,1,1,1,1,1,1 |
       | car3.LCU      | car4.LCU      | car8.CCU.sys1.MDM8 | 1,1,1,3,3,3,3,3 |
-      | car3.LCU      | car4.LCU      | car8.CCU.sys1.TXC  | 1,1,1,1,1,1,1,1 |
       | car4.LCU      | car5.LCU      | car1.CCU.sys1.CPU3 | 1,1,1,1,1,1,1,1 |
       | car4.LCU      | car5.LCU      | car1.CCU.sys1.MDM8 | 1,1,1,1,3,3,3,3 |
-      | car4.LCU      | car5.LCU      | car1.CCU.sys1.TXC  | 1,1,1,1,1,1,1,1 |
       | car4.LCU      | car5.LCU      | car1.CCU.sys2.CPU3 | 1,1,1,1,1,1,1,1 |
       | car4.LCU      | car5.LCU      | car1.CCU.sys2.MDM8 | 3,3,3,3,1,1,1,1 |
-      | car4.LCU      | car5.LCU      | car1.CCU.sys2.TXC  | 1,1,1,1,1,1,1,1 |
       | car4.LCU      | car5.LCU      | car1.LCU.CPU3      | 1,1,1,1,1,1,1,1 |
       | car4.LCU      | car5.LCU      | car1.LCU.MDM8      | 3,3,3,3,1,1,1,1 |
-      | car4.LCU      | car5.LCU      | car1.LCU.MDM9      | 2,1,1,1,1,1,1,1 |
-      | car4.LCU      | car5.LCU      | car1.LCU.RXC       | 1,1,1,1,1,1,1,1 |
       | car4.LCU      | car5.LCU      | car2.LCU.CPU3      | 1,1,1,1,1,1,1,1 |
       | car4.LCU      | car5.LCU      | car2.LCU.MDM8      | 1,3,3,3,1,1,1,1 |
-      | car4.LCU      | car5.LCU      | car2.LCU.MDM9      | 1,2,1,1,1,1,1,1 |
-      | car4.LCU      | car5.LCU      | car2.LCU.RXC       | 1,1,1,1,1,1,1,1 |
       | car4.LCU      | car5.LCU      | car3.LCU.CPU3      | 1,1,1,1,1,1,1,1 |
       | car4.LCU      | car5.LCU      | car3.LCU.MDM8      | 1,1,3,3,1,1,1,1 |
-      | car4.LCU      | car5.LCU      | car3.LCU.MDM9      | 1,1,2,1,1,1,1,1 |
-      | car4.LCU      | car5.LCU      | car3.LCU.RXC       | 1,1,1,1,1,1,1,1 |
       | car4.LCU      | car5.LCU      | car4.LCU.CPU3      | 1,1,1,1,1,1,1,1 |
       | car4.LCU      | car5.LCU      | car4.LCU.MDM8      | 1,1,1,3,1,1,1,1 |
-      | car4.LCU      | car5.LCU      | car4.LCU.MDM9      | 1,1,1,2,1,1,1,1 |
-      | car4.LCU      | car5.LCU      | car4.LCU.RXC       | 1,1,1,1,1,1,1,1 |
       | car4.LCU      | car5.LCU      | car5.LCU.CPU3      | 1,1,1,1,1,1,1,1 |
       | car4.LCU      | car5.LCU      | car5.LCU.MDM8      | 1,1,1,1,3,1,1,1 |
-      | car4.LCU      | car5.LCU      | car5.LCU.MDM9      | 1,1,1,1,2,1,1,1 |
-      | car4.LCU      | car5.LCU      | car5.LCU.RXC       | 1,1,1,1,1,1,1,1 |
       | car4.LCU      | car5.LCU      | car6.LCU.CPU3      | 1,1,1,1,1,1,1,1 |
       | car4.LCU      | car5.LCU      | car6.LCU.MDM8      | 1,1,1,1,3,3,1,1 |
-      | car4.LCU      | car5.LCU      | car6.LCU.MDM9      | 1,1,1,1,1,2,1,1 |
-      | car4.LCU      | car5.LCU      | car6.LCU.RXC       | 1,1,1,1,1,1,1,1 |
       | car4.LCU      | car5.LCU      | car7.LCU.CPU3      | 1,1,1,1,1,1,1,1 |
       | car4.LCU      | car5.LCU      | car7.LCU.MDM8      | 1,1,1,1,3,3,3,1 |
-      | car4.LCU      | car5.LCU      | car7.LCU.MDM9      | 1,1,1,1,1,1,2,1 |
-      | car4.LCU      | car5.LCU      | car7.LCU.RXC       | 1,1,1,1,1,1,1,1 |
       | car4.LCU      | car5.LCU      | car8.LCU.CPU3      | 1,1,1,1,1,1,1,1 |
       | car4.LCU      | car5.LCU      | car8.LCU.MDM8      | 1,1,1,1,3,3,3,3 |
-      | car4.LCU      | car5.LCU      | car8.LCU.MDM9      | 1,1,1,1,1,1,1,2 |
-      | car4.LCU      | car5.LCU      | car8.LCU.RXC       | 1,1,1,1,1,1,1,1 |
       | car4.LCU      | car5.LCU      | car8.CCU.sys2.CPU3 | 1,1,1,1,1,1,1,1 |
       | car4.LCU      | car5.LCU      | car8.CCU.sys2.MDM8 | 1,1,1,1,3,3,3,3 |
-      | car4.LCU      | car5.LCU      | car8.CCU.sys2.TXC  | 1,1,1,1,1,1,1,1 |
       | car4.LCU      | car5.LCU      | car8.CCU.sys1.CPU3 | 1,1,1,1,1,1,1,1 |
       | car4.LCU      | car5.LCU      | car8.CCU.sys1.MDM8 | 1,1,1,1,3,3,3,3 |
-      | car4.LCU      | car5.LCU      | car8.CCU.sys1.TXC  | 1,1,1,1,1,1,1,1 |
       | car5.LCU      | car6.LCU      | car1.CCU.sys1.CPU3 | 1,1,1,1,1,1,1,1 |
       | car5.LCU      | car6.LCU      | car1.CCU.sys1.MDM8 | 1,1,1,1,1,3,3,3 |
-      | car5.LCU      | car6.LCU      | car1.CCU.sys1.TXC  | 1,1,1,1,1,1,1,1 |
       | car5.LCU      | car6.LCU      | car1.CCU.sys2.CPU3 | 1,1,1,1,1,1,1,1 |
       | car5.LCU      | car6.LCU      | car1.CCU.sys2.MDM8 | 3,3,3,3,3,1,1,1 |
-      | car5.LCU      | car6.LCU      | car1.CCU.sys2.TXC  | 1,1,1,1,1,1,1,1 |
       | car5.LCU      | car6.LCU      | car1.LCU.CPU3      | 1,1,1,1,1,1,1,1 |
       | car5.LCU      | car6.LCU      | car1.LCU.MDM8      | 3,3,3,3,3,1,1,1 |
-      | car5.LCU      | car6.LCU      | car1.LCU.MDM9      | 2,1,1,1,1,1,1,1 |
-      | car5.LCU      | car6.LCU      | car1.LCU.RXC       | 1,1,1,1,1,1,1,1 |
       | car5.LCU      | car6.LCU      | car2.LCU.CPU3      | 1,1,1,1,1,1,1,1 |
       | car5.LCU      | car6.LCU      | car2.LCU.MDM8      | 1,3,3,3,3,1,1,1 |
-      | car5.LCU      | car6.LCU      | car2.LCU.MDM9      | 1,2,1,1,1,1,1,1 |
-      | car5.LCU      | car6.LCU      | car2.LCU.RXC       | 1,1,1,1,1,1,1,1 |
       | car5.LCU      | car6.LCU      | car3.LCU.CPU3      | 1,1,1,1,1,1,1,1 |
       | car5.LCU      | car6.LCU      | car3.LCU.MDM8      | 1,1,3,3,3,1,1,1 |
-      | car5.LCU      | car6.LCU      | car3.LCU.MDM9      | 1,1,2,1,1,1,1,1 |
-      | car5.LCU      | car6.LCU      | car3.LCU.RXC       | 1,1,1,1,1,1,1,1 |
       | car5.LCU      | car6.LCU      | car4.LCU.CPU3      | 1,1,1,1,1,1,1,1 |
       | car5.LCU      | car6.LCU      | car4.LCU.MDM8      | 1,1,1,3,3,1,1,1 |
-      | car5.LCU      | car6.LCU      | car4.LCU.MDM9      | 1,1,1,2,1,1,1,1 |
-      | car5.LCU      | car6.LCU      | car4.LCU.RXC       | 1,1,1,1,1,1,1,1 |
       | car5.LCU      | car6.LCU      | car5.LCU.CPU3      | 1,1,1,1,1,1,1,1 |
       | car5.LCU      | car6.LCU      | car5.LCU.MDM8      | 1,1,1,1,3,1,1,1 |
-      | car5.LCU      | car6.LCU      | car5.LCU.MDM9      | 1,1,1,1,2,1,1,1 |
-      | car5.LCU      | car6.LCU      | car5.LCU.RXC       | 1,1,1,1,1,1,1,1 |
       | car5.LCU      | car6.LCU      | car6.LCU.CPU3      | 1,1,1,1,1,1,1,1 |
       | car5.LCU      | car6.LCU      | car6.LCU.MDM8      | 1,1,1,1,1,3,1,1 |
-      | car5.LCU      | car6.LCU      | car6.LCU.MDM9      | 1,1,1,1,1,2,1,1 |
-      | car5.LCU      | car6.LCU      | car6.LCU.RXC       | 1,1,1,1,1,1,1,1 |
       | car5.LCU      | car6.LCU      | car7.LCU.CPU3      | 1,1,1,1,1,1,1,1 |
       | car5.LCU      | car6.LCU      | car7.LCU.MDM8      | 1,1,1,1,1,3,3,1 |
-      | car5.LCU      | car6.LCU      | car7.LCU.MDM9      | 1,1,1,1,1,1,2,1 |
-      | car5.LCU      | car6.LCU      | car7.LCU.RXC       | 1,1,1,1,1,1,1,1 |
       | car5.LCU      | car6.LCU      | car8.LCU.CPU3      | 1,1,1,1,1,1,1,1 |
       | car5.LCU      | car6.LCU      | car8.LCU.MDM8      | 1,1,1,1,1,3,3,3 |
-      | car5.LCU      | car6.LCU      | car8.LCU.MDM9      | 1,1,1,1,1,1,1,2 |
-      | car5.LCU      | car6.LCU      | car8.LCU.RXC       | 1,1,1,1,1,1,1,1 |
       | car5.LCU      | car6.LCU      | car8.CCU.sys2.CPU3 | 1,1,1,1,1,1,1,1 |
       | car5.LCU      | car6.LCU      | car8.CCU.sys2.MDM8 | 1,1,1,1,1,3,3,3 |
-      | car5.LCU      | car6.LCU      | car8.CCU.sys2.TXC  | 1,1,1,1,1,1,1,1 |
       | car5.LCU      | car6.LCU      | car8.CCU.sys1.CPU3 | 1,1,1,1,1,1,1,1 |
       | car5.LCU      | car6.LCU      | car8.CCU.sys1.MDM8 | 1,1,1,1,1,3,3,3 |
-      | car5.LCU      | car6.LCU      | car8.CCU.sys1.TXC  | 1,1,1,1,1,1,1,1 |
       | car6.LCU      | car7.LCU      | car1.CCU.sys1.CPU3 | 1,1,1,1,1,1,1,1 |
       | car6.LCU      | car7.LCU      | car1.CCU.sys1.MDM8 | 1,1,1,1,1,1,3,3 |
-      | car6.LCU      | car7.LCU      | car1.CCU.sys1.TXC  | 1,1,1,1,1,1,1,1 |
       | car6.LCU      | car7.LCU      | car1.CCU.sys2.CPU3 | 1,1,1,1,1,1,1,1 |
       | car6.LCU      | car7.LCU      | car1.CCU.sys2.MDM8 | 3,3,3,3,3,3,1,1 |
-      | car6.LCU      | car7.LCU      | car1.CCU.sys2.TXC  | 1,1,1,1,1,1,1,1 |
       | car6.LCU      | car7.LCU      | car1.LCU.CPU3      | 1,1,1,1,1,1,1,1 |
       | car6.LCU      | car7.LCU      | car1.LCU.MDM8      | 3,3,3,3,3,3,1,1 |
-      | car6.LCU      | car7.LCU      | car1.LCU.MDM9      | 2,1,1,1,1,1,1,1 |
-      | car6.LCU      | car7.LCU      | car1.LCU.RXC       | 1,1,1,1,1,1,1,1 |
       | car6.LCU      | car7.LCU      | car2.LCU.CPU3      | 1,1,1,1,1,1,1,1 |
       | car6.LCU      | car7.LCU      | car2.LCU.MDM8      | 1,3,3,3,3,3,1,1 |
-      | car6.LCU      | car7.LCU      | car2.LCU.MDM9      | 1,2,1,1,1,1,1,1 |
-      | car6.LCU      | car7.LCU      | car2.LCU.RXC       | 1,1,1,1,1,1,1,1 |
       | car6.LCU      | car7.LCU      | car3.LCU.CPU3      | 1,1,1,1,1,1,1,1 |
       | car6.LCU      | car7.LCU      | car3.LCU.MDM8      | 1,1,3,3,3,3,1,1 |
-      | car6.LCU      | car7.LCU      | car3.LCU.MDM9      | 1,1,2,1,1,1,1,1 |
-      | car6.LCU      | car7.LCU      | car3.LCU.RXC       | 1,1,1,1,1,1,1,1 |
       | car6.LCU      | car7.LCU      | car4.LCU.CPU3      | 1,1,1,1,1,1,1,1 |
       | car6.LCU      | car7.LCU      | car4.LCU.MDM8      | 1,1,1,3,3,3,1,1 |
-      | car6.LCU      | car7.LCU      | car4.LCU.MDM9      | 1,1,1,2,1,1,1,1 |
-      | car6.LCU      | car7.LCU      | car4.LCU.RXC       | 1,1,1,1,1,1,1,1 |
       | car6.LCU      | car7.LCU      | car5.LCU.CPU3      | 1,1,1,1,1,1,1,1 |
       | car6.LCU      | car7.LCU      | car5.LCU.MDM8      | 1,1,1,1,3,3,1,1 |
-      | car6.LCU      | car7.LCU      | car5.LCU.MDM9      | 1,1,1,1,2,1,1,1 |
-      | car6.LCU      | car7.LCU      | car5.LCU.RXC       | 1,1,1,1,1,1,1,1 |
       | car6.LCU      | car7.LCU      | car6.LCU.CPU3      | 1,1,1,1,1,1,1,1 |
       | car6.LCU      | car7.LCU      | car6.LCU.MDM8      | 1,1,1,1,1,3,1,1 |
-      | car6.LCU      | car7.LCU      | car6.LCU.MDM9      | 1,1,1,1,1,2,1,1 |
-      | car6.LCU      | car7.LCU      | car6.LCU.RXC       | 1,1,1,1,1,1,1,1 |
       | car6.LCU      | car7.LCU      | car7.LCU.CPU3      | 1,1,1,1,1,1,1,1 |
       | car6.LCU      | car7.LCU      | car7.LCU.MDM8      | 1,1,1,1,1,1,3,1 |
-      | car6.LCU      | car7.LCU      | car7.LCU.MDM9      | 1,1,1,1,1,1,2,1 |
-      | car6.LCU      | car7.LCU      | car7.LCU.RXC       | 1,1,1,1,1,1,1,1 |
       | car6.LCU      | car7.LCU      | car8.LCU.CPU3      | 1,1,1,1,1,1,1,1 |
       | car6.LCU      | car7.LCU      | car8.LCU.MDM8      | 1,1,1,1,1,1,3,3 |
-      | car6.LCU      | car7.LCU      | car8.LCU.MDM9      | 1,1,1,1,1,1,1,2 |
-      | car6.LCU      | car7.LCU      | car8.LCU.RXC       | 1,1,1,1,1,1,1,1 |
       | car6.LCU      | car7.LCU      | car8.CCU.sys2.CPU3 | 1,1,1,1,1,1,1,1 |
       | car6.LCU      | car7.LCU      | car8.CCU.sys2.MDM8 | 1,1,1,1,1,1,3,3 |
-      | car6.LCU      | car7.LCU      | car8.CCU.sys2.TXC  | 1,1,1,1,1,1,1,1 |
       | car6.LCU      | car7.LCU      | car8.CCU.sys1.CPU3 | 1,1,1,1,1,1,1,1 |
       | car6.LCU      | car7.LCU      | car8.CCU.sys1.MDM8 | 1,1,1,1,1,1,3,3 |
-      | car6.LCU      | car7.LCU      | car8.CCU.sys1.TXC  | 1,1,1,1,1,1,1,1 |
       | car7.LCU      | car8.LCU      | car1.CCU.sys1.CPU3 | 1,1,1,1,1,1,1,1 |
       | car7.LCU      | car8.LCU      | car1.CCU.sys1.MDM8 | 1,1,1,1,1,1,1,3 |
-      | car7.LCU      | car8.LCU      | car1.CCU.sys1.TXC  | 1,1,1,1,1,1,1,1 |
       | car7.LCU      | car8.LCU      | car1.CCU.sys2.CPU3 | 1,1,1,1,1,1,1,1 |
       | car7.LCU      | car8.LCU      | car1.CCU.sys2.MDM8 | 3,3,3,3,3,3,3,1 |
-      | car7.LCU      | car8.LCU      | car1.CCU.sys2.TXC  | 1,1,1,1,1,1,1,1 |
       | car7.LCU      | car8.LCU      | car1.LCU.CPU3      | 1,1,1,1,1,1,1,1 |
       | car7.LCU      | car8.LCU      | car1.LCU.MDM8      | 3,3,3,3,3,3,3,1 |
-      | car7.LCU      | car8.LCU      | car1.LCU.MDM9      | 2,1,1,1,1,1,1,1 |
-      | car7.LCU      | car8.LCU      | car1.LCU.RXC       | 1,1,1,1,1,1,1,1 |
       | car7.LCU      | car8.LCU      | car2.LCU.CPU3      | 1,1,1,1,1,1,1,1 |
       | car7.LCU      | car8.LCU      | car2.LCU.MDM8      | 1,3,3,3,3,3,3,1 |
-      | car7.LCU      | car8.LCU      | car2.LCU.MDM9      | 1,2,1,1,1,1,1,1 |
-      | car7.LCU      | car8.LCU      | car2.LCU.RXC       | 1,1,1,1,1,1,1,1 |
       | car7.LCU      | car8.LCU      | car3.LCU.CPU3      | 1,1,1,1,1,1,1,1 |
       | car7.LCU      | car8.LCU      | car3.LCU.MDM8      | 1,1,3,3,3,3,3,1 |
-      | car7.LCU      | car8.LCU      | car3.LCU.MDM9      | 1,1,2,1,1,1,1,1 |
-      | car7.LCU      | car8.LCU      | car3.LCU.RXC       | 1,1,1,1,1,1,1,1 |
       | car7.LCU      | car8.LCU      | car4.LCU.CPU3      | 1,1,1,1,1,1,1,1 |
       | car7.LCU      | car8.LCU      | car4.LCU.MDM8      | 1,1,1,3,3,3,3,1 |
-      | car7.LCU      | car8.LCU      | car4.LCU.MDM9      | 1,1,1,2,1,1,1,1 |
-      | car7.LCU      | car8.LCU      | car4.LCU.RXC       | 1,1,1,1,1,1,1,1 |
       | car7.LCU      | car8.LCU      | car5.LCU.CPU3      | 1,1,1,1,1,1,1,1 |
       | car7.LCU      | car8.LCU      | car5.LCU.MDM8      | 1,1,1,1,3,3,3,1 |
-      | car7.LCU      | car8.LCU      | car5.LCU.MDM9      | 1,1,1,1,2,1,1,1 |
-      | car7.LCU      | car8.LCU      | car5.LCU.RXC       | 1,1,1,1,1,1,1,1 |
       | car7.LCU      | car8.LCU      | car6.LCU.CPU3      | 1,1,1,1,1,1,1,1 |
       | car7.LCU      | car8.LCU      | car6.LCU.MDM8      | 1,1,1,1,1,3,3,1 |
-      | car7.LCU      | car8.LCU      | car6.LCU.MDM9      | 1,1,1,1,1,2,1,1 |
-      | car7.LCU      | car8.LCU      | car6.LCU.RXC       | 1,1,1,1,1,1,1,1 |
       | car7.LCU      | car8.LCU      | car7.LCU.CPU3      | 1,1,1,1,1,1,1,1 |
       | car7.LCU      | car8.LCU      | car7.LCU.MDM8      | 1,1,1,1,1,1,3,1 |
-      | car7.LCU      | car8.LCU      | car7.LCU.MDM9      | 1,1,1,1,1,1,2,1 |
-      | car7.LCU      | car8.LCU      | car7.LCU.RXC       | 1,1,1,1,1,1,1,1 |
       | car7.LCU      | car8.LCU      | car8.LCU.CPU3      | 1,1,1,1,1,1,1,1 |
       | car7.LCU      | car8.LCU      | car8.LCU.MDM8      | 1,1,1,1,1,1,1,3 |
-      | car7.LCU      | car8.LCU      | car8.LCU.MDM9      | 1,1,1,1,1,1,1,2 |
-      | car7.LCU      | car8.LCU      | car8.LCU.RXC       | 1,1,1,1,1,1,1,1 |
       | car7.LCU      | car8.LCU      | car8.CCU.sys2.CPU3 | 1,1,1,1,1,1,1,1 |
       | car7.LCU      | car8.LCU      | car8.CCU.sys2.MDM8 | 1,1,1,1,1,1,1,3 |
-      | car7.LCU      | car8.LCU      | car8.CCU.sys2.TXC  | 1,1,1,1,1,1,1,1 |
       | car7.LCU      | car8.LCU      | car8.CCU.sys1.CPU3 | 1,1,1,1,1,1,1,1 |
       | car7.LCU      | car8.LCU      | car8.CCU.sys1.MDM8 | 1,1,1,1,1,1,1,3 |
-      | car7.LCU      | car8.LCU      | car8.CCU.sys1.TXC  | 1,1,1,1,1,1,1,1 |
       | car8.LCU      | car8.CCU.sys2 | car1.CCU.sys1.CPU3 | 1,1,1,1,1,1,1,1 |
       | car8.LCU      | car8.CCU.sys2 | car1.CCU.sys1.MDM8 | 1,1,1,1,1,1,1,1 |
-      | car8.LCU      | car8.CCU.sys2 | car1.CCU.sys1.TXC  | 1,1,1,1,1,1,1,1 |
       | car8.LCU      | car8.CCU.sys2 | car1.CCU.sys2.CPU3 | 1,1,1,1,1,1,1,1 |
       | car8.LCU      | car8.CCU.sys2 | car1.CCU.sys2.MDM8 | 3,3,3,3,3,3,3,3 |
-      | car8.LCU      | car8.CCU.sys2 | car1.CCU.sys2.TXC  | 1,1,1,1,1,1,1,1 |
       | car8.LCU      | car8.CCU.sys2 | car1.LCU.CPU3      | 1,1,1,1,1,1,1,1 |
       | car8.LCU      | car8.CCU.sys2 | car1.LCU.MDM8      | 3,3,3,3,3,3,3,3 |
-      | car8.LCU      | car8.CCU.sys2 | car1.LCU.MDM9      | 2,1,1,1,1,1,1,1 |
-      | car8.LCU      | car8.CCU.sys2 | car1.LCU.RXC       | 1,1,1,1,1,1,1,1 |
       | car8.LCU      | car8.CCU.sys2 | car2.LCU.CPU3      | 1,1,1,1,1,1,1,1 |
       | car8.LCU      | car8.CCU.sys2 | car2.LCU.MDM8      | 1,3,3,3,3,3,3,3 |
-      | car8.LCU      | car8.CCU.sys2 | car2.LCU.MDM9      | 1,2,1,1,1,1,1,1 |
-      | car8.LCU      | car8.CCU.sys2 | car2.LCU.RXC       | 1,1,1,1,1,1,1,1 |
       | car8.LCU      | car8.CCU.sys2 | car3.LCU.CPU3      | 1,1,1,1,1,1,1,1 |
       | car8.LCU      | car8.CCU.sys2 | car3.LCU.MDM8      | 1,1,3,3,3,3,3,3 |
-      | car8.LCU      | car8.CCU.sys2 | car3.LCU.MDM9      | 1,1,2,1,1,1,1,1 |
-      | car8.LCU      | car8.CCU.sys2 | car3.LCU.RXC       | 1,1,1,1,1,1,1,1 |
       | car8.LCU      | car8.CCU.sys2 | car4.LCU.CPU3      | 1,1,1,1,1,1,1,1 |
       | car8.LCU      | car8.CCU.sys2 | car4.LCU.MDM8      | 1,1,1,3,3,3,3,3 |
-      | car8.LCU      | car8.CCU.sys2 | car4.LCU.MDM9      | 1,1,1,2,1,1,1,1 |
-      | car8.LCU      | car8.CCU.sys2 | car4.LCU.RXC       | 1,1,1,1,1,1,1,1 |
       | car8.LCU      | car8.CCU.sys2 | car5.LCU.CPU3      | 1,1,1,1,1,1,1,1 |
       | car8.LCU      | car8.CCU.sys2 | car5.LCU.MDM8      | 1,1,1,1,3,3,3,3 |
-      | car8.LCU      | car8.CCU.sys2 | car5.LCU.MDM9      | 1,1,1,1,2,1,1,1 |
-      | car8.LCU      | car8.CCU.sys2 | car5.LCU.RXC       | 1,1,1,1,1,1,1,1 |
       | car8.LCU      | car8.CCU.sys2 | car6.LCU.CPU3      | 1,1,1,1,1,1,1,1 |
       | car8.LCU      | car8.CCU.sys2 | car6.LCU.MDM8      | 1,1,1,1,1,3,3,3 |
-      | car8.LCU      | car8.CCU.sys2 | car6.LCU.MDM9      | 1,1,1,1,1,2,1,1 |
-      | car8.LCU      | car8.CCU.sys2 | car6.LCU.RXC       | 1,1,1,1,1,1,1,1 |
       | car8.LCU      | car8.CCU.sys2 | car7.LCU.CPU3      | 1,1,1,1,1,1,1,1 |
       | car8.LCU      | car8.CCU.sys2 | car7.LCU.MDM8      | 1,1,1,1,1,1,3,3 |
-      | car8.LCU      | car8.CCU.sys2 | car7.LCU.MDM9      | 1,1,1,1,1,1,2,1 |
-      | car8.LCU      | car8.CCU.sys2 | car7.LCU.RXC       | 1,1,1,1,1,1,1,1 |
       | car8.LCU      | car8.CCU.sys2 | car8.LCU.CPU3      | 1,1,1,1,1,1,1,1 |
       | car8.LCU      | car8.CCU.sys2 | car8.LCU.MDM8      | 1,1,1,1,1,1,1,3 |
-      | car8.LCU      | car8.CCU.sys2 | car8.LCU.MDM9      | 1,1,1,1,1,1,1,2 |
-      | car8.LCU      | car8.CCU.sys2 | car8.LCU.RXC       | 1,1,1,1,1,1,1,1 |
       | car8.LCU      | car8.CCU.sys2 | car8.CCU.sys2.CPU3 | 1,1,1,1,1,1,1,1 |
       | car8.LCU      | car8.CCU.sys2 | car8.CCU.sys2.MDM8 | 1,1,1,1,1,1,1,1 |
-      | car8.LCU      | car8.CCU.sys2 | car8.CCU.sys2.TXC  | 1,1,1,1,1,1,1,1 |
       | car8.LCU      | car8.CCU.sys2 | car8.CCU.sys1.CPU3 | 1,1,1,1,1,1,1,1 |
       | car8.LCU      | car8.CCU.sys2 | car8.CCU.sys1.MDM8 | 1,1,1,1,1,1,1,1 |
-      | car8.LCU      | car8.CCU.sys2 | car8.CCU.sys1.TXC  | 1,1,1,1,1,1,1,1 |
       | car8.CCU.sys2 | car8.CCU.sys1 | car1.CCU.sys1.CPU3 | 1,1,1,1,1,1,1,1 |
       | car8.CCU.sys2 | car8.CCU.sys1 | car1.CCU.sys1.MDM8 | 1,1,1,1,1,1,1,1 |
-      | car8.CCU.sys2 | car8.CCU.sys1 | car1.CCU.sys1.TXC  | 1,1,1,1,1,1,1,1 |
       | car8.CCU.sys2 | car8.CCU.sys1 | car1.CCU.sys2.CPU3 | 1,1,1,1,1,1,1,1 |
       | car8.CCU.sys2 | car8.CCU.sys1 | car1.CCU.sys2.MDM8 | 3,3,3,3,3,3,3,3 |
-      | car8.CCU.sys2 | car8.CCU.sys1 | car1.CCU.sys2.TXC  | 1,1,1,1,1,1,1,1 |
       | car8.CCU.sys2 | car8.CCU.sys1 | car1.LCU.CPU3      | 1,1,1,1,1,1,1,1 |
       | car8.CCU.sys2 | car8.CCU.sys1 | car1.LCU.MDM8      | 3,3,3,3,3,3,3,3 |
-      | car8.CCU.sys2 | car8.CCU.sys1 | car1.LCU.MDM9      | 2,1,1,1,1,1,1,1 |
-      | car8.CCU.sys2 | car8.CCU.sys1 | car1.LCU.RXC       | 1,1,1,1,1,1,1,1 |
       | car8.CCU.sys2 | car8.CCU.sys1 | car2.LCU.CPU3      | 1,1,1,1,1,1,1,1 |
       | car8.CCU.sys2 | car8.CCU.sys1 | car2.LCU.MDM8      | 1,3,3,3,3,3,3,3 |
-      | car8.CCU.sys2 | car8.CCU.sys1 | car2.LCU.MDM9      | 1,2,1,1,1,1,1,1 |
-      | car8.CCU.sys2 | car8.CCU.sys1 | car2.LCU.RXC       | 1,1,1,1,1,1,1,1 |
       | car8.CCU.sys2 | car8.CCU.sys1 | car3.LCU.CPU3      | 1,1,1,1,1,1,1,1 |
       | car8.CCU.sys2 | car8.CCU.sys1 | car3.LCU.MDM8      | 1,1,3,3,3,3,3,3 |
-      | car8.CCU.sys2 | car8.CCU.sys1 | car3.LCU.MDM9      | 1,1,2,1,1,1,1,1 |
-      | car8.CCU.sys2 | car8.CCU.sys1 | car3.LCU.RXC       | 1,1,1,1,1,1,1,1 |
       | car8.CCU.sys2 | car8.CCU.sys1 | car4.LCU.CPU3      | 1,1,1,1,1,1,1,1 |
       | car8.CCU.sys2 | car8.CCU.sys1 | car4.LCU.MDM8      | 1,1,1,3,3,3,3,3 |
-      | car8.CCU.sys2 | car8.CCU.sys1 | car4.LCU.MDM9      | 1,1,1,2,1,1,1,1 |
-      | car8.CCU.sys2 | car8.CCU.sys1 | car4.LCU.RXC       | 1,1,1,1,1,1,1,1 |
       | car8.CCU.sys2 | car8.CCU.sys1 | car5.LCU.CPU3      | 1,1,1,1,1,1,1,1 |
       | car8.CCU.sys2 | car8.CCU.sys1 | car5.LCU.MDM8      | 1,1,1,1,3,3,3,3 |
-      | car8.CCU.sys2 | car8.CCU.sys1 | car5.LCU.MDM9      | 1,1,1,1,2,1,1,1 |
-      | car8.CCU.sys2 | car8.CCU.sys1 | car5.LCU.RXC       | 1,1,1,1,1,1,1,1 |
       | car8.CCU.sys2 | car8.CCU.sys1 | car6.LCU.CPU3      | 1,1,1,1,1,1,1,1 |
       | car8.CCU.sys2 | car8.CCU.sys1 | car6.LCU.MDM8      | 1,1,1,1,1,3,3,3 |
-      | car8.CCU.sys2 | car8.CCU.sys1 | car6.LCU.MDM9      | 1,1,1,1,1,2,1,1 |
-      | car8.CCU.sys2 | car8.CCU.sys1 | car6.LCU.RXC       | 1,1,1,1,1,1,1,1 |
       | car8.CCU.sys2 | car8.CCU.sys1 | car7.LCU.CPU3      | 1,1,1,1,1,1,1,1 |
       | car8.CCU.sys2 | car8.CCU.sys1 | car7.LCU.MDM8      | 1,1,1,1,1,1,3,3 |
-      | car8.CCU.sys2 | car8.CCU.sys1 | car7.LCU.MDM9      | 1,1,1,1,1,1,2,1 |
-      | car8.CCU.sys2 | car8.CCU.sys1 | car7.LCU.RXC       | 1,1,1,1,1,1,1,1 |
       | car8.CCU.sys2 | car8.CCU.sys1 | car8.LCU.CPU3      | 1,1,1,1,1,1,1,1 |
       | car8.CCU.sys2 | car8.CCU.sys1 | car8.LCU.MDM8      | 1,1,1,1,1,1,1,3 |
-      | car8.CCU.sys2 | car8.CCU.sys1 | car8.LCU.MDM9      | 1,1,1,1,1,1,1,2 |
-      | car8.CCU.sys2 | car8.CCU.sys1 | car8.LCU.RXC       | 1,1,1,1,1,1,1,1 |
       | car8.CCU.sys2 | car8.CCU.sys1 | car8.CCU.sys2.CPU3 | 1,1,1,1,1,1,1,1 |
       | car8.CCU.sys2 | car8.CCU.sys1 | car8.CCU.sys2.MDM8 | 1,1,1,1,1,1,1,1 |
-      | car8.CCU.sys2 | car8.CCU.sys1 | car8.CCU.sys2.TXC  | 1,1,1,1,1,1,1,1 |
       | car8.CCU.sys2 | car8.CCU.sys1 | car8.CCU.sys1.CPU3 | 1,1,1,1,1,1,1,1 |
       | car8.CCU.sys2 | car8.CCU.sys1 | car8.CCU.sys1.MDM8 | 1,1,1,1,1,1,1,1 |
-      | car8.CCU.sys2 | car8.CCU.sys1 | car8.CCU.sys1.TXC  | 1,1,1,1,1,1,1,1 |
       | car8.CCU.sys1 | car1.CCU.sys1 | car1.CCU.sys1.CPU3 | 1,1,1,1,1,1,1,1 |
       | car8.CCU.sys1 | car1.CCU.sys1 | car1.CCU.sys1.MDM8 | 1,1,1,1,1,1,1,1 |
-      | car8.CCU.sys1 | car1.CCU.sys1 | car1.CCU.sys1.TXC  | 1,1,1,1,1,1,1,1 |
       | car8.CCU.sys1 | car1.CCU.sys1 | car1.CCU.sys2.CPU3 | 1,1,1,1,1,1,1,1 |
       | car8.CCU.sys1 | car1.CCU.sys1 | car1.CCU.sys2.MDM8 | 3,3,3,3,3,3,3,3 |
-      | car8.CCU.sys1 | car1.CCU.sys1 | car1.CCU.sys2.TXC  | 1,1,1,1,1,1,1,1 |
       | car8.CCU.sys1 | car1.CCU.sys1 | car1.LCU.CPU3      | 1,1,1,1,1,1,1,1 |
       | car8.CCU.sys1 | car1.CCU.sys1 | car1.LCU.MDM8      | 3,3,3,3,3,3,3,3 |
-      | car8.CCU.sys1 | car1.CCU.sys1 | car1.LCU.MDM9      | 2,1,1,1,1,1,1,1 |
-      | car8.CCU.sys1 | car1.CCU.sys1 | car1.LCU.RXC       | 1,1,1,1,1,1,1,1 |
       | car8.CCU.sys1 | car1.CCU.sys1 | car2.LCU.CPU3      | 1,1,1,1,1,1,1,1 |
       | car8.CCU.sys1 | car1.CCU.sys1 | car2.LCU.MDM8      | 1,3,3,3,3,3,3,3 |
-      | car8.CCU.sys1 | car1.CCU.sys1 | car2.LCU.MDM9      | 1,2,1,1,1,1,1,1 |
-      | car8.CCU.sys1 | car1.CCU.sys1 | car2.LCU.RXC       | 1,1,1,1,1,1,1,1 |
       | car8.CCU.sys1 | car1.CCU.sys1 | car3.LCU.CPU3      | 1,1,1,1,1,1,1,1 |
       | car8.CCU.sys1 | car1.CCU.sys1 | car3.LCU.MDM8      | 1,1,3,3,3,3,3,3 |
-      | car8.CCU.sys1 | car1.CCU.sys1 | car3.LCU.MDM9      | 1,1,2,1,1,1,1,1 |
-      | car8.CCU.sys1 | car1.CCU.sys1 | car3.LCU.RXC       | 1,1,1,1,1,1,1,1 |
       | car8.CCU.sys1 | car1.CCU.sys1 | car4.LCU.CPU3      | 1,1,1,1,1,1,1,1 |
       | car8.CCU.sys1 | car1.CCU.sys1 | car4.LCU.MDM8      | 1,1,1,3,3,3,3,3 |
-      | car8.CCU.sys1 | car1.CCU.sys1 | car4.LCU.MDM9      | 1,1,1,2,1,1,1,1 |
-      | car8.CCU.sys1 | car1.CCU.sys1 | car4.LCU.RXC       | 1,1,1,1,1,1,1,1 |
       | car8.CCU.sys1 | car1.CCU.sys1 | car5.LCU.CPU3      | 1,1,1,1,1,1,1,1 |
       | car8.CCU.sys1 | car1.CCU.sys1 | car5.LCU.MDM8      | 1,1,1,1,3,3,3,3 |
-      | car8.CCU.sys1 | car1.CCU.sys1 | car5.LCU.MDM9      | 1,1,1,1,2,1,1,1 |
-      | car8.CCU.sys1 | car1.CCU.sys1 | car5.LCU.RXC       | 1,1,1,1,1,1,1,1 |
       | car8.CCU.sys1 | car1.CCU.sys1 | car6.LCU.CPU3      | 1,1,1,1,1,1,1,1 |
       | car8.CCU.sys1 | car1.CCU.sys1 | car6.LCU.MDM8      | 1,1,1,1,1,3,3,3 |
-      | car8.CCU.sys1 | car1.CCU.sys1 | car6.LCU.MDM9      | 1,1,1,1,1,2,1,1 |
-      | car8.CCU.sys1 | car1.CCU.sys1 | car6.LCU.RXC       | 1,1,1,1,1,1,1,1 |
       | car8.CCU.sys1 | car1.CCU.sys1 | car7.LCU.CPU3      | 1,1,1,1,1,1,1,1 |
       | car8.CCU.sys1 | car1.CCU.sys1 | car7.LCU.MDM8      | 1,1,1,1,1,1,3,3 |
-      | car8.CCU.sys1 | car1.CCU.sys1 | car7.LCU.MDM9      | 1,1,1,1,1,1,2,1 |
-      | car8.CCU.sys1 | car1.CCU.sys1 | car7.LCU.RXC       | 1,1,1,1,1,1,1,1 |
       | car8.CCU.sys1 | car1.CCU.sys1 | car8.LCU.CPU3      | 1,1,1,1,1,1,1,1 |
       | car8.CCU.sys1 | car1.CCU.sys1 | car8.LCU.MDM8      | 1,1,1,1,1,1,1,3 |
-      | car8.CCU.sys1 | car1.CCU.sys1 | car8.LCU.MDM9      | 1,1,1,1,1,1,1,2 |
-      | car8.CCU.sys1 | car1.CCU.sys1 | car8.LCU.RXC       | 1,1,1,1,1,1,1,1 |
       | car8.CCU.sys1 | car1.CCU.sys1 | car8.CCU.sys2.CPU3 | 1,1,1,1,1,1,1,1 |
       | car8.CCU.sys1 | car1.CCU.sys1 | car8.CCU.sys2.MDM8 | 1,1,1,1,1,1,1,1 |
-      | car8.CCU.sys1 | car1.CCU.sys1 | car8.CCU.sys2.TXC  | 1,1,1,1,1,1,1,1 |
       | car8.CCU.sys1 | car1.CCU.sys1 | car8.CCU.sys1.CPU3 | 1,1,1,1,1,1,1,1 |
       | car8.CCU.sys1 | car1.CCU.sys1 | car8.CCU.sys1.MDM8 | 1,1,1,1,1,1,1,1 |
-      | car8.CCU.sys1 | car1.CCU.sys1 | car8.CCU.sys1.TXC  | 1,1,1,1,1,1,1,1 |
+
+  @req:NET-03 @req:CMD-01 @req:CMD-02 @req:CMD-03 @req:CMD-04 @req:RED-01 @req:RED-02 @req:PRO-06
+  Scenario Outline: F-NET-32 The ring link <a>~<b> cut and board <board> failed: each car by the path left to it, one fault recorded at the master
+    When the ring link between "<a>" and "<b>" is cut
+    And board "<board>" fails
+    And the driver moves the traction notch of cab 1 to 6
+    And 200 ms pass
+    Then car by car the CI and BCU receive traction notch 6 or traction step "B" by the paths <paths> within 100 ms
+    And no CI or BCU of a car with a path in <paths> goes without a command for more than 100 ms
+    And no CI or BCU ever receives a traction notch other than 0 or 6
+    And no command over path 2 or 3 ever carried more than the traction and brake steps A and B
+    And "<master>" holds a fault record of "<node1>" saying "<part1>" failed at most 1330 ms after it
+
+    Examples:
+      | a             | b             | board             | paths           | master        | node1         | part1 |
+      | car1.CCU.sys1 | car1.CCU.sys2 | car1.CCU.sys1.TXC | 1,1,1,1,1,1,1,1 | car1.CCU.sys2 | car1.CCU.sys1 | TXC   |
+      | car1.CCU.sys1 | car1.CCU.sys2 | car1.CCU.sys2.TXC | 1,1,1,1,1,1,1,1 | car1.CCU.sys1 | car1.CCU.sys2 | TXC   |
+      | car1.CCU.sys1 | car1.CCU.sys2 | car1.LCU.MDM9     | 2,1,1,1,1,1,1,1 | car1.CCU.sys1 | car1.LCU      | MDM9  |
+      | car1.CCU.sys1 | car1.CCU.sys2 | car1.LCU.RXC      | 1,1,1,1,1,1,1,1 | car1.CCU.sys1 | car1.LCU      | RXC   |
+      | car1.CCU.sys1 | car1.CCU.sys2 | car2.LCU.MDM9     | 1,2,1,1,1,1,1,1 | car1.CCU.sys1 | car2.LCU      | MDM9  |
+      | car1.CCU.sys1 | car1.CCU.sys2 | car2.LCU.RXC      | 1,1,1,1,1,1,1,1 | car1.CCU.sys1 | car2.LCU      | RXC   |
+      | car1.CCU.sys1 | car1.CCU.sys2 | car3.LCU.MDM9     | 1,1,2,1,1,1,1,1 | car1.CCU.sys1 | car3.LCU      | MDM9  |
+      | car1.CCU.sys1 | car1.CCU.sys2 | car3.LCU.RXC      | 1,1,1,1,1,1,1,1 | car1.CCU.sys1 | car3.LCU      | RXC   |
+      | car1.CCU.sys1 | car1.CCU.sys2 | car4.LCU.MDM9     | 1,1,1,2,1,1,1,1 | car1.CCU.sys1 | car4.LCU      | MDM9  |
+      | car1.CCU.sys1 | car1.CCU.sys2 | car4.LCU.RXC      | 1,1,1,1,1,1,1,1 | car1.CCU.sys1 | car4.LCU      | RXC   |
+      | car1.CCU.sys1 | car1.CCU.sys2 | car5.LCU.MDM9     | 1,1,1,1,2,1,1,1 | car1.CCU.sys1 | car5.LCU      | MDM9  |
+      | car1.CCU.sys1 | car1.CCU.sys2 | car5.LCU.RXC      | 1,1,1,1,1,1,1,1 | car1.CCU.sys1 | car5.LCU      | RXC   |
+      | car1.CCU.sys1 | car1.CCU.sys2 | car6.LCU.MDM9     | 1,1,1,1,1,2,1,1 | car1.CCU.sys1 | car6.LCU      | MDM9  |
+      | car1.CCU.sys1 | car1.CCU.sys2 | car6.LCU.RXC      | 1,1,1,1,1,1,1,1 | car1.CCU.sys1 | car6.LCU      | RXC   |
+      | car1.CCU.sys1 | car1.CCU.sys2 | car7.LCU.MDM9     | 1,1,1,1,1,1,2,1 | car1.CCU.sys1 | car7.LCU      | MDM9  |
+      | car1.CCU.sys1 | car1.CCU.sys2 | car7.LCU.RXC      | 1,1,1,1,1,1,1,1 | car1.CCU.sys1 | car7.LCU      | RXC   |
+      | car1.CCU.sys1 | car1.CCU.sys2 | car8.LCU.MDM9     | 1,1,1,1,1,1,1,2 | car1.CCU.sys1 | car8.LCU      | MDM9  |
+      | car1.CCU.sys1 | car1.CCU.sys2 | car8.LCU.RXC      | 1,1,1,1,1,1,1,1 | car1.CCU.sys1 | car8.LCU      | RXC   |
+      | car1.CCU.sys1 | car1.CCU.sys2 | car8.CCU.sys2.TXC | 1,1,1,1,1,1,1,1 | car1.CCU.sys1 | car8.CCU.sys2 | TXC   |
+      | car1.CCU.sys1 | car1.CCU.sys2 | car8.CCU.sys1.TXC | 1,1,1,1,1,1,1,1 | car1.CCU.sys1 | car8.CCU.sys1 | TXC   |
+      | car1.CCU.sys2 | car1.LCU      | car1.CCU.sys1.TXC | 1,1,1,1,1,1,1,1 | car1.CCU.sys2 | car1.CCU.sys1 | TXC   |
+      | car1.CCU.sys2 | car1.LCU      | car1.CCU.sys2.TXC | 1,1,1,1,1,1,1,1 | car1.CCU.sys1 | car1.CCU.sys2 | TXC   |
+      | car1.CCU.sys2 | car1.LCU      | car1.LCU.MDM9     | 2,1,1,1,1,1,1,1 | car1.CCU.sys1 | car1.LCU      | MDM9  |
+      | car1.CCU.sys2 | car1.LCU      | car1.LCU.RXC      | 1,1,1,1,1,1,1,1 | car1.CCU.sys1 | car1.LCU      | RXC   |
+      | car1.CCU.sys2 | car1.LCU      | car2.LCU.MDM9     | 1,2,1,1,1,1,1,1 | car1.CCU.sys1 | car2.LCU      | MDM9  |
+      | car1.CCU.sys2 | car1.LCU      | car2.LCU.RXC      | 1,1,1,1,1,1,1,1 | car1.CCU.sys1 | car2.LCU      | RXC   |
+      | car1.CCU.sys2 | car1.LCU      | car3.LCU.MDM9     | 1,1,2,1,1,1,1,1 | car1.CCU.sys1 | car3.LCU      | MDM9  |
+      | car1.CCU.sys2 | car1.LCU      | car3.LCU.RXC      | 1,1,1,1,1,1,1,1 | car1.CCU.sys1 | car3.LCU      | RXC   |
+      | car1.CCU.sys2 | car1.LCU      | car4.LCU.MDM9     | 1,1,1,2,1,1,1,1 | car1.CCU.sys1 | car4.LCU      | MDM9  |
+      | car1.CCU.sys2 | car1.LCU      | car4.LCU.RXC      | 1,1,1,1,1,1,1,1 | car1.CCU.sys1 | car4.LCU      | RXC   |
+      | car1.CCU.sys2 | car1.LCU      | car5.LCU.MDM9     | 1,1,1,1,2,1,1,1 | car1.CCU.sys1 | car5.LCU      | MDM9  |
+      | car1.CCU.sys2 | car1.LCU      | car5.LCU.RXC      | 1,1,1,1,1,1,1,1 | car1.CCU.sys1 | car5.LCU      | RXC   |
+      | car1.CCU.sys2 | car1.LCU      | car6.LCU.MDM9     | 1,1,1,1,1,2,1,1 | car1.CCU.sys1 | car6.LCU      | MDM9  |
+      | car1.CCU.sys2 | car1.LCU      | car6.LCU.RXC      | 1,1,1,1,1,1,1,1 | car1.CCU.sys1 | car6.LCU      | RXC   |
+      | car1.CCU.sys2 | car1.LCU      | car7.LCU.MDM9     | 1,1,1,1,1,1,2,1 | car1.CCU.sys1 | car7.LCU      | MDM9  |
+      | car1.CCU.sys2 | car1.LCU      | car7.LCU.RXC      | 1,1,1,1,1,1,1,1 | car1.CCU.sys1 | car7.LCU      | RXC   |
+      | car1.CCU.sys2 | car1.LCU      | car8.LCU.MDM9     | 1,1,1,1,1,1,1,2 | car1.CCU.sys1 | car8.LCU      | MDM9  |
+      | car1.CCU.sys2 | car1.LCU      | car8.LCU.RXC      | 1,1,1,1,1,1,1,1 | car1.CCU.sys1 | car8.LCU      | RXC   |
+      | car1.CCU.sys2 | car1.LCU      | car8.CCU.sys2.TXC | 1,1,1,1,1,1,1,1 | car1.CCU.sys1 | car8.CCU.sys2 | TXC   |
+      | car1.CCU.sys2 | car1.LCU      | car8.CCU.sys1.TXC | 1,1,1,1,1,1,1,1 | car1.CCU.sys1 | car8.CCU.sys1 | TXC   |
+      | car1.LCU      | car2.LCU      | car1.CCU.sys1.TXC | 1,1,1,1,1,1,1,1 | car1.CCU.sys2 | car1.CCU.sys1 | TXC   |
+      | car1.LCU      | car2.LCU      | car1.CCU.sys2.TXC | 1,1,1,1,1,1,1,1 | car1.CCU.sys1 | car1.CCU.sys2 | TXC   |
+      | car1.LCU      | car2.LCU      | car1.LCU.MDM9     | 2,1,1,1,1,1,1,1 | car1.CCU.sys1 | car1.LCU      | MDM9  |
+      | car1.LCU      | car2.LCU      | car1.LCU.RXC      | 1,1,1,1,1,1,1,1 | car1.CCU.sys1 | car1.LCU      | RXC   |
+      | car1.LCU      | car2.LCU      | car2.LCU.MDM9     | 1,2,1,1,1,1,1,1 | car1.CCU.sys1 | car2.LCU      | MDM9  |
+      | car1.LCU      | car2.LCU      | car2.LCU.RXC      | 1,1,1,1,1,1,1,1 | car1.CCU.sys1 | car2.LCU      | RXC   |
+      | car1.LCU      | car2.LCU      | car3.LCU.MDM9     | 1,1,2,1,1,1,1,1 | car1.CCU.sys1 | car3.LCU      | MDM9  |
+      | car1.LCU      | car2.LCU      | car3.LCU.RXC      | 1,1,1,1,1,1,1,1 | car1.CCU.sys1 | car3.LCU      | RXC   |
+      | car1.LCU      | car2.LCU      | car4.LCU.MDM9     | 1,1,1,2,1,1,1,1 | car1.CCU.sys1 | car4.LCU      | MDM9  |
+      | car1.LCU      | car2.LCU      | car4.LCU.RXC      | 1,1,1,1,1,1,1,1 | car1.CCU.sys1 | car4.LCU      | RXC   |
+      | car1.LCU      | car2.LCU      | car5.LCU.MDM9     | 1,1,1,1,2,1,1,1 | car1.CCU.sys1 | car5.LCU      | MDM9  |
+      | car1.LCU      | car2.LCU      | car5.LCU.RXC      | 1,1,1,1,1,1,1,1 | car1.CCU.sys1 | car5.LCU      | RXC   |
+      | car1.LCU      | car2.LCU      | car6.LCU.MDM9     | 1,1,1,1,1,2,1,1 | car1.CCU.sys1 | car6.LCU      | MDM9  |
+      | car1.LCU      | car2.LCU      | car6.LCU.RXC      | 1,1,1,1,1,1,1,1 | car1.CCU.sys1 | car6.LCU      | RXC   |
+      | car1.LCU      | car2.LCU      | car7.LCU.MDM9     | 1,1,1,1,1,1,2,1 | car1.CCU.sys1 | car7.LCU      | MDM9  |
+      | car1.LCU      | car2.LCU      | car7.LCU.RXC      | 1,1,1,1,1,1,1,1 | car1.CCU.sys1 | car7.LCU      | RXC   |
+      | car1.LCU      | car2.LCU      | car8.LCU.MDM9     | 1,1,1,1,1,1,1,2 | car1.CCU.sys1 | car8.LCU      | MDM9  |
+      | car1.LCU      | car2.LCU      | car8.LCU.RXC      | 1,1,1,1,1,1,1,1 | car1.CCU.sys1 | car8.LCU      | RXC   |
+      | car1.LCU      | car2.LCU      | car8.CCU.sys2.TXC | 1,1,1,1,1,1,1,1 | car1.CCU.sys1 | car8.CCU.sys2 | TXC   |
+      | car1.LCU      | car2.LCU      | car8.CCU.sys1.TXC | 1,1,1,1,1,1,1,1 | car1.CCU.sys1 | car8.CCU.sys1 | TXC   |
+      | car2.LCU      | car3.LCU      | car1.CCU.sys1.TXC | 1,1,1,1,1,1,1,1 | car1.CCU.sys2 | car1.CCU.sys1 | TXC   |
+      | car2.LCU      | car3.LCU      | car1.CCU.sys2.TXC | 1,1,1,1,1,1,1,1 | car1.CCU.sys1 | car1.CCU.sys2 | TXC   |
+      | car2.LCU      | car3.LCU      | car1.LCU.MDM9     | 2,1,1,1,1,1,1,1 | car1.CCU.sys1 | car1.LCU      | MDM9  |
+      | car2.LCU      | car3.LCU      | car1.LCU.RXC      | 1,1,1,1,1,1,1,1 | car1.CCU.sys1 | car1.LCU      | RXC   |
+      | car2.LCU      | car3.LCU      | car2.LCU.MDM9     | 1,2,1,1,1,1,1,1 | car1.CCU.sys1 | car2.LCU      | MDM9  |
+      | car2.LCU      | car3.LCU      | car2.LCU.RXC      | 1,1,1,1,1,1,1,1 | car1.CCU.sys1 | car2.LCU      | RXC   |
+      | car2.LCU      | car3.LCU      | car3.LCU.MDM9     | 1,1,2,1,1,1,1,1 | car1.CCU.sys1 | car3.LCU      | MDM9  |
+      | car2.LCU      | car3.LCU      | car3.LCU.RXC      | 1,1,1,1,1,1,1,1 | car1.CCU.sys1 | car3.LCU      | RXC   |
+      | car2.LCU      | car3.LCU      | car4.LCU.MDM9     | 1,1,1,2,1,1,1,1 | car1.CCU.sys1 | car4.LCU      | MDM9  |
+      | car2.LCU      | car3.LCU      | car4.LCU.RXC      | 1,1,1,1,1,1,1,1 | car1.CCU.sys1 | car4.LCU      | RXC   |
+      | car2.LCU      | car3.LCU      | car5.LCU.MDM9     | 1,1,1,1,2,1,1,1 | car1.CCU.sys1 | car5.LCU      | MDM9  |
+      | car2.LCU      | car3.LCU      | car5.LCU.RXC      | 1,1,1,1,1,1,1,1 | car1.CCU.sys1 | car5.LCU      | RXC   |
+      | car2.LCU      | car3.LCU      | car6.LCU.MDM9     | 1,1,1,1,1,2,1,1 | car1.CCU.sys1 | car6.LCU      | MDM9  |
+      | car2.LCU      | car3.LCU      | car6.LCU.RXC      | 1,1,1,1,1,1,1,1 | car1.CCU.sys1 | car6.LCU      | RXC   |
+      | car2.LCU      | car3.LCU      | car7.LCU.MDM9     | 1,1,1,1,1,1,2,1 | car1.CCU.sys1 | car7.LCU      | MDM9  |
+      | car2.LCU      | car3.LCU      | car7.LCU.RXC      | 1,1,1,1,1,1,1,1 | car1.CCU.sys1 | car7.LCU      | RXC   |
+      | car2.LCU      | car3.LCU      | car8.LCU.MDM9     | 1,1,1,1,1,1,1,2 | car1.CCU.sys1 | car8.LCU      | MDM9  |
+      | car2.LCU      | car3.LCU      | car8.LCU.RXC      | 1,1,1,1,1,1,1,1 | car1.CCU.sys1 | car8.LCU      | RXC   |
+      | car2.LCU      | car3.LCU      | car8.CCU.sys2.TXC | 1,1,1,1,1,1,1,1 | car1.CCU.sys1 | car8.CCU.sys2 | TXC   |
+      | car2.LCU      | car3.LCU      | car8.CCU.sys1.TXC | 1,1,1,1,1,1,1,1 | car1.CCU.sys1 | car8.CCU.sys1 | TXC   |
+      | car3.LCU      | car4.LCU      | car1.CCU.sys1.TXC | 1,1,1,1,1,1,1,1 | car1.CCU.sys2 | car1.CCU.sys1 | TXC   |
+      | car3.LCU      | car4.LCU      | car1.CCU.sys2.TXC | 1,1,1,1,1,1,1,1 | car1.CCU.sys1 | car1.CCU.sys2 | TXC   |
+      | car3.LCU      | car4.LCU      | car1.LCU.MDM9     | 2,1,1,1,1,1,1,1 | car1.CCU.sys1 | car1.LCU      | MDM9  |
+      | car3.LCU      | car4.LCU      | car1.LCU.RXC      | 1,1,1,1,1,1,1,1 | car1.CCU.sys1 | car1.LCU      | RXC   |
+      | car3.LCU      | car4.LCU      | car2.LCU.MDM9     | 1,2,1,1,1,1,1,1 | car1.CCU.sys1 | car2.LCU      | MDM9  |
+      | car3.LCU      | car4.LCU      | car2.LCU.RXC      | 1,1,1,1,1,1,1,1 | car1.CCU.sys1 | car2.LCU      | RXC   |
+      | car3.LCU      | car4.LCU      | car3.LCU.MDM9     | 1,1,2,1,1,1,1,1 | car1.CCU.sys1 | car3.LCU      | MDM9  |
+      | car3.LCU      | car4.LCU      | car3.LCU.RXC      | 1,1,1,1,1,1,1,1 | car1.CCU.sys1 | car3.LCU      | RXC   |
+      | car3.LCU      | car4.LCU      | car4.LCU.MDM9     | 1,1,1,2,1,1,1,1 | car1.CCU.sys1 | car4.LCU      | MDM9  |
+      | car3.LCU      | car4.LCU      | car4.LCU.RXC      | 1,1,1,1,1,1,1,1 | car1.CCU.sys1 | car4.LCU      | RXC   |
+      | car3.LCU      | car4.LCU      | car5.LCU.MDM9     | 1,1,1,1,2,1,1,1 | car1.CCU.sys1 | car5.LCU      | MDM9  |
+      | car3.LCU      | car4.LCU      | car5.LCU.RXC      | 1,1,1,1,1,1,1,1 | car1.CCU.sys1 | car5.LCU      | RXC   |
+      | car3.LCU      | car4.LCU      | car6.LCU.MDM9     | 1,1,1,1,1,2,1,1 | car1.CCU.sys1 | car6.LCU      | MDM9  |
+      | car3.LCU      | car4.LCU      | car6.LCU.RXC      | 1,1,1,1,1,1,1,1 | car1.CCU.sys1 | car6.LCU      | RXC   |
+      | car3.LCU      | car4.LCU      | car7.LCU.MDM9     | 1,1,1,1,1,1,2,1 | car1.CCU.sys1 | car7.LCU      | MDM9  |
+      | car3.LCU      | car4.LCU      | car7.LCU.RXC      | 1,1,1,1,1,1,1,1 | car1.CCU.sys1 | car7.LCU      | RXC   |
+      | car3.LCU      | car4.LCU      | car8.LCU.MDM9     | 1,1,1,1,1,1,1,2 | car1.CCU.sys1 | car8.LCU      | MDM9  |
+      | car3.LCU      | car4.LCU      | car8.LCU.RXC      | 1,1,1,1,1,1,1,1 | car1.CCU.sys1 | car8.LCU      | RXC   |
+      | car3.LCU      | car4.LCU      | car8.CCU.sys2.TXC | 1,1,1,1,1,1,1,1 | car1.CCU.sys1 | car8.CCU.sys2 | TXC   |
+      | car3.LCU      | car4.LCU      | car8.CCU.sys1.TXC | 1,1,1,1,1,1,1,1 | car1.CCU.sys1 | car8.CCU.sys1 | TXC   |
+      | car4.LCU      | car5.LCU      | car1.CCU.sys1.TXC | 1,1,1,1,1,1,1,1 | car1.CCU.sys2 | car1.CCU.sys1 | TXC   |
+      | car4.LCU      | car5.LCU      | car1.CCU.sys2.TXC | 1,1,1,1,1,1,1,1 | car1.CCU.sys1 | car1.CCU.sys2 | TXC   |
+      | car4.LCU      | car5.LCU      | car1.LCU.MDM9     | 2,1,1,1,1,1,1,1 | car1.CCU.sys1 | car1.LCU      | MDM9  |
+      | car4.LCU      | car5.LCU      | car1.LCU.RXC      | 1,1,1,1,1,1,1,1 | car1.CCU.sys1 | car1.LCU      | RXC   |
+      | car4.LCU      | car5.LCU      | car2.LCU.MDM9     | 1,2,1,1,1,1,1,1 | car1.CCU.sys1 | car2.LCU      | MDM9  |
+      | car4.LCU      | car5.LCU      | car2.LCU.RXC      | 1,1,1,1,1,1,1,1 | car1.CCU.sys1 | car2.LCU      | RXC   |
+      | car4.LCU      | car5.LCU      | car3.LCU.MDM9     | 1,1,2,1,1,1,1,1 | car1.CCU.sys1 | car3.LCU      | MDM9  |
+      | car4.LCU      | car5.LCU      | car3.LCU.RXC      | 1,1,1,1,1,1,1,1 | car1.CCU.sys1 | car3.LCU      | RXC   |
+      | car4.LCU      | car5.LCU      | car4.LCU.MDM9     | 1,1,1,2,1,1,1,1 | car1.CCU.sys1 | car4.LCU      | MDM9  |
+      | car4.LCU      | car5.LCU      | car4.LCU.RXC      | 1,1,1,1,1,1,1,1 | car1.CCU.sys1 | car4.LCU      | RXC   |
+      | car4.LCU      | car5.LCU      | car5.LCU.MDM9     | 1,1,1,1,2,1,1,1 | car1.CCU.sys1 | car5.LCU      | MDM9  |
+      | car4.LCU      | car5.LCU      | car5.LCU.RXC      | 1,1,1,1,1,1,1,1 | car1.CCU.sys1 | car5.LCU      | RXC   |
+      | car4.LCU      | car5.LCU      | car6.LCU.MDM9     | 1,1,1,1,1,2,1,1 | car1.CCU.sys1 | car6.LCU      | MDM9  |
+      | car4.LCU      | car5.LCU      | car6.LCU.RXC      | 1,1,1,1,1,1,1,1 | car1.CCU.sys1 | car6.LCU      | RXC   |
+      | car4.LCU      | car5.LCU      | car7.LCU.MDM9     | 1,1,1,1,1,1,2,1 | car1.CCU.sys1 | car7.LCU      | MDM9  |
+      | car4.LCU      | car5.LCU      | car7.LCU.RXC      | 1,1,1,1,1,1,1,1 | car1.CCU.sys1 | car7.LCU      | RXC   |
+      | car4.LCU      | car5.LCU      | car8.LCU.MDM9     | 1,1,1,1,1,1,1,2 | car1.CCU.sys1 | car8.LCU      | MDM9  |
+      | car4.LCU      | car5.LCU      | car8.LCU.RXC      | 1,1,1,1,1,1,1,1 | car1.CCU.sys1 | car8.LCU      | RXC   |
+      | car4.LCU      | car5.LCU      | car8.CCU.sys2.TXC | 1,1,1,1,1,1,1,1 | car1.CCU.sys1 | car8.CCU.sys2 | TXC   |
+      | car4.LCU      | car5.LCU      | car8.CCU.sys1.TXC | 1,1,1,1,1,1,1,1 | car1.CCU.sys1 | car8.CCU.sys1 | TXC   |
+      | car5.LCU      | car6.LCU      | car1.CCU.sys1.TXC | 1,1,1,1,1,1,1,1 | car1.CCU.sys2 | car1.CCU.sys1 | TXC   |
+      | car5.LCU      | car6.LCU      | car1.CCU.sys2.TXC | 1,1,1,1,1,1,1,1 | car1.CCU.sys1 | car1.CCU.sys2 | TXC   |
+      | car5.LCU      | car6.LCU      | car1.LCU.MDM9     | 2,1,1,1,1,1,1,1 | car1.CCU.sys1 | car1.LCU      | MDM9  |
+      | car5.LCU      | car6.LCU      | car1.LCU.RXC      | 1,1,1,1,1,1,1,1 | car1.CCU.sys1 | car1.LCU      | RXC   |
+      | car5.LCU      | car6.LCU      | car2.LCU.MDM9     | 1,2,1,1,1,1,1,1 | car1.CCU.sys1 | car2.LCU      | MDM9  |
+      | car5.LCU      | car6.LCU      | car2.LCU.RXC      | 1,1,1,1,1,1,1,1 | car1.CCU.sys1 | car2.LCU      | RXC   |
+      | car5.LCU      | car6.LCU      | car3.LCU.MDM9     | 1,1,2,1,1,1,1,1 | car1.CCU.sys1 | car3.LCU      | MDM9  |
+      | car5.LCU      | car6.LCU      | car3.LCU.RXC      | 1,1,1,1,1,1,1,1 | car1.CCU.sys1 | car3.LCU      | RXC   |
+      | car5.LCU      | car6.LCU      | car4.LCU.MDM9     | 1,1,1,2,1,1,1,1 | car1.CCU.sys1 | car4.LCU      | MDM9  |
+      | car5.LCU      | car6.LCU      | car4.LCU.RXC      | 1,1,1,1,1,1,1,1 | car1.CCU.sys1 | car4.LCU      | RXC   |
+      | car5.LCU      | car6.LCU      | car5.LCU.MDM9     | 1,1,1,1,2,1,1,1 | car1.CCU.sys1 | car5.LCU      | MDM9  |
+      | car5.LCU      | car6.LCU      | car5.LCU.RXC      | 1,1,1,1,1,1,1,1 | car1.CCU.sys1 | car5.LCU      | RXC   |
+      | car5.LCU      | car6.LCU      | car6.LCU.MDM9     | 1,1,1,1,1,2,1,1 | car1.CCU.sys1 | car6.LCU      | MDM9  |
+      | car5.LCU      | car6.LCU      | car6.LCU.RXC      | 1,1,1,1,1,1,1,1 | car1.CCU.sys1 | car6.LCU      | RXC   |
+      | car5.LCU      | car6.LCU      | car7.LCU.MDM9     | 1,1,1,1,1,1,2,1 | car1.CCU.sys1 | car7.LCU      | MDM9  |
+      | car5.LCU      | car6.LCU      | car7.LCU.RXC      | 1,1,1,1,1,1,1,1 | car1.CCU.sys1 | car7.LCU      | RXC   |
+      | car5.LCU      | car6.LCU      | car8.LCU.MDM9     | 1,1,1,1,1,1,1,2 | car1.CCU.sys1 | car8.LCU      | MDM9  |
+      | car5.LCU      | car6.LCU      | car8.LCU.RXC      | 1,1,1,1,1,1,1,1 | car1.CCU.sys1 | car8.LCU      | RXC   |
+      | car5.LCU      | car6.LCU      | car8.CCU.sys2.TXC | 1,1,1,1,1,1,1,1 | car1.CCU.sys1 | car8.CCU.sys2 | TXC   |
+      | car5.LCU      | car6.LCU      | car8.CCU.sys1.TXC | 1,1,1,1,1,1,1,1 | car1.CCU.sys1 | car8.CCU.sys1 | TXC   |
+      | car6.LCU      | car7.LCU      | car1.CCU.sys1.TXC | 1,1,1,1,1,1,1,1 | car1.CCU.sys2 | car1.CCU.sys1 | TXC   |
+      | car6.LCU      | car7.LCU      | car1.CCU.sys2.TXC | 1,1,1,1,1,1,1,1 | car1.CCU.sys1 | car1.CCU.sys2 | TXC   |
+      | car6.LCU      | car7.LCU      | car1.LCU.MDM9     | 2,1,1,1,1,1,1,1 | car1.CCU.sys1 | car1.LCU      | MDM9  |
+      | car6.LCU      | car7.LCU      | car1.LCU.RXC      | 1,1,1,1,1,1,1,1 | car1.CCU.sys1 | car1.LCU      | RXC   |
+      | car6.LCU      | car7.LCU      | car2.LCU.MDM9     | 1,2,1,1,1,1,1,1 | car1.CCU.sys1 | car2.LCU      | MDM9  |
+      | car6.LCU      | car7.LCU      | car2.LCU.RXC      | 1,1,1,1,1,1,1,1 | car1.CCU.sys1 | car2.LCU      | RXC   |
+      | car6.LCU      | car7.LCU      | car3.LCU.MDM9     | 1,1,2,1,1,1,1,1 | car1.CCU.sys1 | car3.LCU      | MDM9  |
+      | car6.LCU      | car7.LCU      | car3.LCU.RXC      | 1,1,1,1,1,1,1,1 | car1.CCU.sys1 | car3.LCU      | RXC   |
+      | car6.LCU      | car7.LCU      | car4.LCU.MDM9     | 1,1,1,2,1,1,1,1 | car1.CCU.sys1 | car4.LCU      | MDM9  |
+      | car6.LCU      | car7.LCU      | car4.LCU.RXC      | 1,1,1,1,1,1,1,1 | car1.CCU.sys1 | car4.LCU      | RXC   |
+      | car6.LCU      | car7.LCU      | car5.LCU.MDM9     | 1,1,1,1,2,1,1,1 | car1.CCU.sys1 | car5.LCU      | MDM9  |
+      | car6.LCU      | car7.LCU      | car5.LCU.RXC      | 1,1,1,1,1,1,1,1 | car1.CCU.sys1 | car5.LCU      | RXC   |
+      | car6.LCU      | car7.LCU      | car6.LCU.MDM9     | 1,1,1,1,1,2,1,1 | car1.CCU.sys1 | car6.LCU      | MDM9  |
+      | car6.LCU      | car7.LCU      | car6.LCU.RXC      | 1,1,1,1,1,1,1,1 | car1.CCU.sys1 | car6.LCU      | RXC   |
+      | car6.LCU      | car7.LCU      | car7.LCU.MDM9     | 1,1,1,1,1,1,2,1 | car1.CCU.sys1 | car7.LCU      | MDM9  |
+      | car6.LCU      | car7.LCU      | car7.LCU.RXC      | 1,1,1,1,1,1,1,1 | car1.CCU.sys1 | car7.LCU      | RXC   |
+      | car6.LCU      | car7.LCU      | car8.LCU.MDM9     | 1,1,1,1,1,1,1,2 | car1.CCU.sys1 | car8.LCU      | MDM9  |
+      | car6.LCU      | car7.LCU      | car8.LCU.RXC      | 1,1,1,1,1,1,1,1 | car1.CCU.sys1 | car8.LCU      | RXC   |
+      | car6.LCU      | car7.LCU      | car8.CCU.sys2.TXC | 1,1,1,1,1,1,1,1 | car1.CCU.sys1 | car8.CCU.sys2 | TXC   |
+      | car6.LCU      | car7.LCU      | car8.CCU.sys1.TXC | 1,1,1,1,1,1,1,1 | car1.CCU.sys1 | car8.CCU.sys1 | TXC   |
+      | car7.LCU      | car8.LCU      | car1.CCU.sys1.TXC | 1,1,1,1,1,1,1,1 | car1.CCU.sys2 | car1.CCU.sys1 | TXC   |
+      | car7.LCU      | car8.LCU      | car1.CCU.sys2.TXC | 1,1,1,1,1,1,1,1 | car1.CCU.sys1 | car1.CCU.sys2 | TXC   |
+      | car7.LCU      | car8.LCU      | car1.LCU.MDM9     | 2,1,1,1,1,1,1,1 | car1.CCU.sys1 | car1.LCU      | MDM9  |
+      | car7.LCU      | car8.LCU      | car1.LCU.RXC      | 1,1,1,1,1,1,1,1 | car1.CCU.sys1 | car1.LCU      | RXC   |
+      | car7.LCU      | car8.LCU      | car2.LCU.MDM9     | 1,2,1,1,1,1,1,1 | car1.CCU.sys1 | car2.LCU      | MDM9  |
+      | car7.LCU      | car8.LCU      | car2.LCU.RXC      | 1,1,1,1,1,1,1,1 | car1.CCU.sys1 | car2.LCU      | RXC   |
+      | car7.LCU      | car8.LCU      | car3.LCU.MDM9     | 1,1,2,1,1,1,1,1 | car1.CCU.sys1 | car3.LCU      | MDM9  |
+      | car7.LCU      | car8.LCU      | car3.LCU.RXC      | 1,1,1,1,1,1,1,1 | car1.CCU.sys1 | car3.LCU      | RXC   |
+      | car7.LCU      | car8.LCU      | car4.LCU.MDM9     | 1,1,1,2,1,1,1,1 | car1.CCU.sys1 | car4.LCU      | MDM9  |
+      | car7.LCU      | car8.LCU      | car4.LCU.RXC      | 1,1,1,1,1,1,1,1 | car1.CCU.sys1 | car4.LCU      | RXC   |
+      | car7.LCU      | car8.LCU      | car5.LCU.MDM9     | 1,1,1,1,2,1,1,1 | car1.CCU.sys1 | car5.LCU      | MDM9  |
+      | car7.LCU      | car8.LCU      | car5.LCU.RXC      | 1,1,1,1,1,1,1,1 | car1.CCU.sys1 | car5.LCU      | RXC   |
+      | car7.LCU      | car8.LCU      | car6.LCU.MDM9     | 1,1,1,1,1,2,1,1 | car1.CCU.sys1 | car6.LCU      | MDM9  |
+      | car7.LCU      | car8.LCU      | car6.LCU.RXC      | 1,1,1,1,1,1,1,1 | car1.CCU.sys1 | car6.LCU      | RXC   |
+      | car7.LCU      | car8.LCU      | car7.LCU.MDM9     | 1,1,1,1,1,1,2,1 | car1.CCU.sys1 | car7.LCU      | MDM9  |
+      | car7.LCU      | car8.LCU      | car7.LCU.RXC      | 1,1,1,1,1,1,1,1 | car1.CCU.sys1 | car7.LCU      | RXC   |
+      | car7.LCU      | car8.LCU      | car8.LCU.MDM9     | 1,1,1,1,1,1,1,2 | car1.CCU.sys1 | car8.LCU      | MDM9  |
+      | car7.LCU      | car8.LCU      | car8.LCU.RXC      | 1,1,1,1,1,1,1,1 | car1.CCU.sys1 | car8.LCU      | RXC   |
+      | car7.LCU      | car8.LCU      | car8.CCU.sys2.TXC | 1,1,1,1,1,1,1,1 | car1.CCU.sys1 | car8.CCU.sys2 | TXC   |
+      | car7.LCU      | car8.LCU      | car8.CCU.sys1.TXC | 1,1,1,1,1,1,1,1 | car1.CCU.sys1 | car8.CCU.sys1 | TXC   |
+      | car8.LCU      | car8.CCU.sys2 | car1.CCU.sys1.TXC | 1,1,1,1,1,1,1,1 | car1.CCU.sys2 | car1.CCU.sys1 | TXC   |
+      | car8.LCU      | car8.CCU.sys2 | car1.CCU.sys2.TXC | 1,1,1,1,1,1,1,1 | car1.CCU.sys1 | car1.CCU.sys2 | TXC   |
+      | car8.LCU      | car8.CCU.sys2 | car1.LCU.MDM9     | 2,1,1,1,1,1,1,1 | car1.CCU.sys1 | car1.LCU      | MDM9  |
+      | car8.LCU      | car8.CCU.sys2 | car1.LCU.RXC      | 1,1,1,1,1,1,1,1 | car1.CCU.sys1 | car1.LCU      | RXC   |
+      | car8.LCU      | car8.CCU.sys2 | car2.LCU.MDM9     | 1,2,1,1,1,1,1,1 | car1.CCU.sys1 | car2.LCU      | MDM9  |
+      | car8.LCU      | car8.CCU.sys2 | car2.LCU.RXC      | 1,1,1,1,1,1,1,1 | car1.CCU.sys1 | car2.LCU      | RXC   |
+      | car8.LCU      | car8.CCU.sys2 | car3.LCU.MDM9     | 1,1,2,1,1,1,1,1 | car1.CCU.sys1 | car3.LCU      | MDM9  |
+      | car8.LCU      | car8.CCU.sys2 | car3.LCU.RXC      | 1,1,1,1,1,1,1,1 | car1.CCU.sys1 | car3.LCU      | RXC   |
+      | car8.LCU      | car8.CCU.sys2 | car4.LCU.MDM9     | 1,1,1,2,1,1,1,1 | car1.CCU.sys1 | car4.LCU      | MDM9  |
+      | car8.LCU      | car8.CCU.sys2 | car4.LCU.RXC      | 1,1,1,1,1,1,1,1 | car1.CCU.sys1 | car4.LCU      | RXC   |
+      | car8.LCU      | car8.CCU.sys2 | car5.LCU.MDM9     | 1,1,1,1,2,1,1,1 | car1.CCU.sys1 | car5.LCU      | MDM9  |
+      | car8.LCU      | car8.CCU.sys2 | car5.LCU.RXC      | 1,1,1,1,1,1,1,1 | car1.CCU.sys1 | car5.LCU      | RXC   |
+      | car8.LCU      | car8.CCU.sys2 | car6.LCU.MDM9     | 1,1,1,1,1,2,1,1 | car1.CCU.sys1 | car6.LCU      | MDM9  |
+      | car8.LCU      | car8.CCU.sys2 | car6.LCU.RXC      | 1,1,1,1,1,1,1,1 | car1.CCU.sys1 | car6.LCU      | RXC   |
+      | car8.LCU      | car8.CCU.sys2 | car7.LCU.MDM9     | 1,1,1,1,1,1,2,1 | car1.CCU.sys1 | car7.LCU      | MDM9  |
+      | car8.LCU      | car8.CCU.sys2 | car7.LCU.RXC      | 1,1,1,1,1,1,1,1 | car1.CCU.sys1 | car7.LCU      | RXC   |
+      | car8.LCU      | car8.CCU.sys2 | car8.LCU.MDM9     | 1,1,1,1,1,1,1,2 | car1.CCU.sys1 | car8.LCU      | MDM9  |
+      | car8.LCU      | car8.CCU.sys2 | car8.LCU.RXC      | 1,1,1,1,1,1,1,1 | car1.CCU.sys1 | car8.LCU      | RXC   |
+      | car8.LCU      | car8.CCU.sys2 | car8.CCU.sys2.TXC | 1,1,1,1,1,1,1,1 | car1.CCU.sys1 | car8.CCU.sys2 | TXC   |
+      | car8.LCU      | car8.CCU.sys2 | car8.CCU.sys1.TXC | 1,1,1,1,1,1,1,1 | car1.CCU.sys1 | car8.CCU.sys1 | TXC   |
+      | car8.CCU.sys2 | car8.CCU.sys1 | car1.CCU.sys1.TXC | 1,1,1,1,1,1,1,1 | car1.CCU.sys2 | car1.CCU.sys1 | TXC   |
+      | car8.CCU.sys2 | car8.CCU.sys1 | car1.CCU.sys2.TXC | 1,1,1,1,1,1,1,1 | car1.CCU.sys1 | car1.CCU.sys2 | TXC   |
+      | car8.CCU.sys2 | car8.CCU.sys1 | car1.LCU.MDM9     | 2,1,1,1,1,1,1,1 | car1.CCU.sys1 | car1.LCU      | MDM9  |
+      | car8.CCU.sys2 | car8.CCU.sys1 | car1.LCU.RXC      | 1,1,1,1,1,1,1,1 | car1.CCU.sys1 | car1.LCU      | RXC   |
+      | car8.CCU.sys2 | car8.CCU.sys1 | car2.LCU.MDM9     | 1,2,1,1,1,1,1,1 | car1.CCU.sys1 | car2.LCU      | MDM9  |
+      | car8.CCU.sys2 | car8.CCU.sys1 | car2.LCU.RXC      | 1,1,1,1,1,1,1,1 | car1.CCU.sys1 | car2.LCU      | RXC   |
+      | car8.CCU.sys2 | car8.CCU.sys1 | car3.LCU.MDM9     | 1,1,2,1,1,1,1,1 | car1.CCU.sys1 | car3.LCU      | MDM9  |
+      | car8.CCU.sys2 | car8.CCU.sys1 | car3.LCU.RXC      | 1,1,1,1,1,1,1,1 | car1.CCU.sys1 | car3.LCU      | RXC   |
+      | car8.CCU.sys2 | car8.CCU.sys1 | car4.LCU.MDM9     | 1,1,1,2,1,1,1,1 | car1.CCU.sys1 | car4.LCU      | MDM9  |
+      | car8.CCU.sys2 | car8.CCU.sys1 | car4.LCU.RXC      | 1,1,1,1,1,1,1,1 | car1.CCU.sys1 | car4.LCU      | RXC   |
+      | car8.CCU.sys2 | car8.CCU.sys1 | car5.LCU.MDM9     | 1,1,1,1,2,1,1,1 | car1.CCU.sys1 | car5.LCU      | MDM9  |
+      | car8.CCU.sys2 | car8.CCU.sys1 | car5.LCU.RXC      | 1,1,1,1,1,1,1,1 | car1.CCU.sys1 | car5.LCU      | RXC   |
+      | car8.CCU.sys2 | car8.CCU.sys1 | car6.LCU.MDM9     | 1,1,1,1,1,2,1,1 | car1.CCU.sys1 | car6.LCU      | MDM9  |
+      | car8.CCU.sys2 | car8.CCU.sys1 | car6.LCU.RXC      | 1,1,1,1,1,1,1,1 | car1.CCU.sys1 | car6.LCU      | RXC   |
+      | car8.CCU.sys2 | car8.CCU.sys1 | car7.LCU.MDM9     | 1,1,1,1,1,1,2,1 | car1.CCU.sys1 | car7.LCU      | MDM9  |
+      | car8.CCU.sys2 | car8.CCU.sys1 | car7.LCU.RXC      | 1,1,1,1,1,1,1,1 | car1.CCU.sys1 | car7.LCU      | RXC   |
+      | car8.CCU.sys2 | car8.CCU.sys1 | car8.LCU.MDM9     | 1,1,1,1,1,1,1,2 | car1.CCU.sys1 | car8.LCU      | MDM9  |
+      | car8.CCU.sys2 | car8.CCU.sys1 | car8.LCU.RXC      | 1,1,1,1,1,1,1,1 | car1.CCU.sys1 | car8.LCU      | RXC   |
+      | car8.CCU.sys2 | car8.CCU.sys1 | car8.CCU.sys2.TXC | 1,1,1,1,1,1,1,1 | car1.CCU.sys1 | car8.CCU.sys2 | TXC   |
+      | car8.CCU.sys2 | car8.CCU.sys1 | car8.CCU.sys1.TXC | 1,1,1,1,1,1,1,1 | car1.CCU.sys1 | car8.CCU.sys1 | TXC   |
+      | car8.CCU.sys1 | car1.CCU.sys1 | car1.CCU.sys1.TXC | 1,1,1,1,1,1,1,1 | car1.CCU.sys2 | car1.CCU.sys1 | TXC   |
+      | car8.CCU.sys1 | car1.CCU.sys1 | car1.CCU.sys2.TXC | 1,1,1,1,1,1,1,1 | car1.CCU.sys1 | car1.CCU.sys2 | TXC   |
+      | car8.CCU.sys1 | car1.CCU.sys1 | car1.LCU.MDM9     | 2,1,1,1,1,1,1,1 | car1.CCU.sys1 | car1.LCU      | MDM9  |
+      | car8.CCU.sys1 | car1.CCU.sys1 | car1.LCU.RXC      | 1,1,1,1,1,1,1,1 | car1.CCU.sys1 | car1.LCU      | RXC   |
+      | car8.CCU.sys1 | car1.CCU.sys1 | car2.LCU.MDM9     | 1,2,1,1,1,1,1,1 | car1.CCU.sys1 | car2.LCU      | MDM9  |
+      | car8.CCU.sys1 | car1.CCU.sys1 | car2.LCU.RXC      | 1,1,1,1,1,1,1,1 | car1.CCU.sys1 | car2.LCU      | RXC   |
+      | car8.CCU.sys1 | car1.CCU.sys1 | car3.LCU.MDM9     | 1,1,2,1,1,1,1,1 | car1.CCU.sys1 | car3.LCU      | MDM9  |
+      | car8.CCU.sys1 | car1.CCU.sys1 | car3.LCU.RXC      | 1,1,1,1,1,1,1,1 | car1.CCU.sys1 | car3.LCU      | RXC   |
+      | car8.CCU.sys1 | car1.CCU.sys1 | car4.LCU.MDM9     | 1,1,1,2,1,1,1,1 | car1.CCU.sys1 | car4.LCU      | MDM9  |
+      | car8.CCU.sys1 | car1.CCU.sys1 | car4.LCU.RXC      | 1,1,1,1,1,1,1,1 | car1.CCU.sys1 | car4.LCU      | RXC   |
+      | car8.CCU.sys1 | car1.CCU.sys1 | car5.LCU.MDM9     | 1,1,1,1,2,1,1,1 | car1.CCU.sys1 | car5.LCU      | MDM9  |
+      | car8.CCU.sys1 | car1.CCU.sys1 | car5.LCU.RXC      | 1,1,1,1,1,1,1,1 | car1.CCU.sys1 | car5.LCU      | RXC   |
+      | car8.CCU.sys1 | car1.CCU.sys1 | car6.LCU.MDM9     | 1,1,1,1,1,2,1,1 | car1.CCU.sys1 | car6.LCU      | MDM9  |
+      | car8.CCU.sys1 | car1.CCU.sys1 | car6.LCU.RXC      | 1,1,1,1,1,1,1,1 | car1.CCU.sys1 | car6.LCU      | RXC   |
+      | car8.CCU.sys1 | car1.CCU.sys1 | car7.LCU.MDM9     | 1,1,1,1,1,1,2,1 | car1.CCU.sys1 | car7.LCU      | MDM9  |
+      | car8.CCU.sys1 | car1.CCU.sys1 | car7.LCU.RXC      | 1,1,1,1,1,1,1,1 | car1.CCU.sys1 | car7.LCU      | RXC   |
+      | car8.CCU.sys1 | car1.CCU.sys1 | car8.LCU.MDM9     | 1,1,1,1,1,1,1,2 | car1.CCU.sys1 | car8.LCU      | MDM9  |
+      | car8.CCU.sys1 | car1.CCU.sys1 | car8.LCU.RXC      | 1,1,1,1,1,1,1,1 | car1.CCU.sys1 | car8.LCU      | RXC   |
+      | car8.CCU.sys1 | car1.CCU.sys1 | car8.CCU.sys2.TXC | 1,1,1,1,1,1,1,1 | car1.CCU.sys1 | car8.CCU.sys2 | TXC   |
+      | car8.CCU.sys1 | car1.CCU.sys1 | car8.CCU.sys1.TXC | 1,1,1,1,1,1,1,1 | car1.CCU.sys1 | car8.CCU.sys1 | TXC   |
 
   @req:NET-03 @req:CMD-01 @req:CMD-02 @req:CMD-03 @req:CMD-04 @req:RED-01 @req:RED-02
   Scenario Outline: F-NET-32 The ring link <a>~<b> cut and supply <supply> off: each car by the path left to it
@@ -650,295 +672,310 @@ Feature: F-NET-32 Double-fault campaign, 8-car set
     And no command over path 2 or 3 ever carried more than the traction and brake steps A and B
 
     Examples:
-      | a             | b             | supply            | paths           |
-      | car1.CCU.sys1 | car1.CCU.sys2 | car1.CCU.sys1     | 1,1,1,1,1,1,1,1 |
-      | car1.CCU.sys1 | car1.CCU.sys2 | car1.CCU.sys2     | 1,1,1,1,1,1,1,1 |
-      | car1.CCU.sys1 | car1.CCU.sys2 | car1.CCU.sys1.TXC | 1,1,1,1,1,1,1,1 |
-      | car1.CCU.sys1 | car1.CCU.sys2 | car1.CCU.sys2.TXC | 1,1,1,1,1,1,1,1 |
-      | car1.CCU.sys1 | car1.CCU.sys2 | car8.CCU.sys1     | 1,1,1,1,1,1,1,1 |
-      | car1.CCU.sys1 | car1.CCU.sys2 | car8.CCU.sys2     | 1,1,1,1,1,1,1,1 |
-      | car1.CCU.sys1 | car1.CCU.sys2 | car8.CCU.sys1.TXC | 1,1,1,1,1,1,1,1 |
-      | car1.CCU.sys1 | car1.CCU.sys2 | car8.CCU.sys2.TXC | 1,1,1,1,1,1,1,1 |
-      | car1.CCU.sys1 | car1.CCU.sys2 | car1.LCU          | 3,1,1,1,1,1,1,1 |
-      | car1.CCU.sys1 | car1.CCU.sys2 | car1.LCU.RXC      | 1,1,1,1,1,1,1,1 |
-      | car1.CCU.sys1 | car1.CCU.sys2 | car2.LCU          | 1,3,1,1,1,1,1,1 |
-      | car1.CCU.sys1 | car1.CCU.sys2 | car2.LCU.RXC      | 1,1,1,1,1,1,1,1 |
-      | car1.CCU.sys1 | car1.CCU.sys2 | car3.LCU          | 1,1,3,1,1,1,1,1 |
-      | car1.CCU.sys1 | car1.CCU.sys2 | car3.LCU.RXC      | 1,1,1,1,1,1,1,1 |
-      | car1.CCU.sys1 | car1.CCU.sys2 | car4.LCU          | 1,1,1,3,1,1,1,1 |
-      | car1.CCU.sys1 | car1.CCU.sys2 | car4.LCU.RXC      | 1,1,1,1,1,1,1,1 |
-      | car1.CCU.sys1 | car1.CCU.sys2 | car5.LCU          | 1,1,1,1,3,1,1,1 |
-      | car1.CCU.sys1 | car1.CCU.sys2 | car5.LCU.RXC      | 1,1,1,1,1,1,1,1 |
-      | car1.CCU.sys1 | car1.CCU.sys2 | car6.LCU          | 1,1,1,1,1,3,1,1 |
-      | car1.CCU.sys1 | car1.CCU.sys2 | car6.LCU.RXC      | 1,1,1,1,1,1,1,1 |
-      | car1.CCU.sys1 | car1.CCU.sys2 | car7.LCU          | 1,1,1,1,1,1,3,1 |
-      | car1.CCU.sys1 | car1.CCU.sys2 | car7.LCU.RXC      | 1,1,1,1,1,1,1,1 |
-      | car1.CCU.sys1 | car1.CCU.sys2 | car8.LCU          | 1,1,1,1,1,1,1,3 |
-      | car1.CCU.sys1 | car1.CCU.sys2 | car8.LCU.RXC      | 1,1,1,1,1,1,1,1 |
-      | car1.CCU.sys2 | car1.LCU      | car1.CCU.sys1     | 3,3,3,3,3,3,3,3 |
-      | car1.CCU.sys2 | car1.LCU      | car1.CCU.sys2     | 1,1,1,1,1,1,1,1 |
-      | car1.CCU.sys2 | car1.LCU      | car1.CCU.sys1.TXC | 1,1,1,1,1,1,1,1 |
-      | car1.CCU.sys2 | car1.LCU      | car1.CCU.sys2.TXC | 1,1,1,1,1,1,1,1 |
-      | car1.CCU.sys2 | car1.LCU      | car8.CCU.sys1     | 3,3,3,3,3,3,3,3 |
-      | car1.CCU.sys2 | car1.LCU      | car8.CCU.sys2     | 3,3,3,3,3,3,3,3 |
-      | car1.CCU.sys2 | car1.LCU      | car8.CCU.sys1.TXC | 1,1,1,1,1,1,1,1 |
-      | car1.CCU.sys2 | car1.LCU      | car8.CCU.sys2.TXC | 1,1,1,1,1,1,1,1 |
-      | car1.CCU.sys2 | car1.LCU      | car1.LCU          | 3,1,1,1,1,1,1,1 |
-      | car1.CCU.sys2 | car1.LCU      | car1.LCU.RXC      | 1,1,1,1,1,1,1,1 |
-      | car1.CCU.sys2 | car1.LCU      | car2.LCU          | 3,3,1,1,1,1,1,1 |
-      | car1.CCU.sys2 | car1.LCU      | car2.LCU.RXC      | 1,1,1,1,1,1,1,1 |
-      | car1.CCU.sys2 | car1.LCU      | car3.LCU          | 3,3,3,1,1,1,1,1 |
-      | car1.CCU.sys2 | car1.LCU      | car3.LCU.RXC      | 1,1,1,1,1,1,1,1 |
-      | car1.CCU.sys2 | car1.LCU      | car4.LCU          | 3,3,3,3,1,1,1,1 |
-      | car1.CCU.sys2 | car1.LCU      | car4.LCU.RXC      | 1,1,1,1,1,1,1,1 |
-      | car1.CCU.sys2 | car1.LCU      | car5.LCU          | 3,3,3,3,3,1,1,1 |
-      | car1.CCU.sys2 | car1.LCU      | car5.LCU.RXC      | 1,1,1,1,1,1,1,1 |
-      | car1.CCU.sys2 | car1.LCU      | car6.LCU          | 3,3,3,3,3,3,1,1 |
-      | car1.CCU.sys2 | car1.LCU      | car6.LCU.RXC      | 1,1,1,1,1,1,1,1 |
-      | car1.CCU.sys2 | car1.LCU      | car7.LCU          | 3,3,3,3,3,3,3,1 |
-      | car1.CCU.sys2 | car1.LCU      | car7.LCU.RXC      | 1,1,1,1,1,1,1,1 |
-      | car1.CCU.sys2 | car1.LCU      | car8.LCU          | 3,3,3,3,3,3,3,3 |
-      | car1.CCU.sys2 | car1.LCU      | car8.LCU.RXC      | 1,1,1,1,1,1,1,1 |
-      | car1.LCU      | car2.LCU      | car1.CCU.sys1     | 1,3,3,3,3,3,3,3 |
-      | car1.LCU      | car2.LCU      | car1.CCU.sys2     | 3,1,1,1,1,1,1,1 |
-      | car1.LCU      | car2.LCU      | car1.CCU.sys1.TXC | 1,1,1,1,1,1,1,1 |
-      | car1.LCU      | car2.LCU      | car1.CCU.sys2.TXC | 1,1,1,1,1,1,1,1 |
-      | car1.LCU      | car2.LCU      | car8.CCU.sys1     | 1,3,3,3,3,3,3,3 |
-      | car1.LCU      | car2.LCU      | car8.CCU.sys2     | 1,3,3,3,3,3,3,3 |
-      | car1.LCU      | car2.LCU      | car8.CCU.sys1.TXC | 1,1,1,1,1,1,1,1 |
-      | car1.LCU      | car2.LCU      | car8.CCU.sys2.TXC | 1,1,1,1,1,1,1,1 |
-      | car1.LCU      | car2.LCU      | car1.LCU          | 3,1,1,1,1,1,1,1 |
-      | car1.LCU      | car2.LCU      | car1.LCU.RXC      | 1,1,1,1,1,1,1,1 |
-      | car1.LCU      | car2.LCU      | car2.LCU          | 1,3,1,1,1,1,1,1 |
-      | car1.LCU      | car2.LCU      | car2.LCU.RXC      | 1,1,1,1,1,1,1,1 |
-      | car1.LCU      | car2.LCU      | car3.LCU          | 1,3,3,1,1,1,1,1 |
-      | car1.LCU      | car2.LCU      | car3.LCU.RXC      | 1,1,1,1,1,1,1,1 |
-      | car1.LCU      | car2.LCU      | car4.LCU          | 1,3,3,3,1,1,1,1 |
-      | car1.LCU      | car2.LCU      | car4.LCU.RXC      | 1,1,1,1,1,1,1,1 |
-      | car1.LCU      | car2.LCU      | car5.LCU          | 1,3,3,3,3,1,1,1 |
-      | car1.LCU      | car2.LCU      | car5.LCU.RXC      | 1,1,1,1,1,1,1,1 |
-      | car1.LCU      | car2.LCU      | car6.LCU          | 1,3,3,3,3,3,1,1 |
-      | car1.LCU      | car2.LCU      | car6.LCU.RXC      | 1,1,1,1,1,1,1,1 |
-      | car1.LCU      | car2.LCU      | car7.LCU          | 1,3,3,3,3,3,3,1 |
-      | car1.LCU      | car2.LCU      | car7.LCU.RXC      | 1,1,1,1,1,1,1,1 |
-      | car1.LCU      | car2.LCU      | car8.LCU          | 1,3,3,3,3,3,3,3 |
-      | car1.LCU      | car2.LCU      | car8.LCU.RXC      | 1,1,1,1,1,1,1,1 |
-      | car2.LCU      | car3.LCU      | car1.CCU.sys1     | 1,1,3,3,3,3,3,3 |
-      | car2.LCU      | car3.LCU      | car1.CCU.sys2     | 3,3,1,1,1,1,1,1 |
-      | car2.LCU      | car3.LCU      | car1.CCU.sys1.TXC | 1,1,1,1,1,1,1,1 |
-      | car2.LCU      | car3.LCU      | car1.CCU.sys2.TXC | 1,1,1,1,1,1,1,1 |
-      | car2.LCU      | car3.LCU      | car8.CCU.sys1     | 1,1,3,3,3,3,3,3 |
-      | car2.LCU      | car3.LCU      | car8.CCU.sys2     | 1,1,3,3,3,3,3,3 |
-      | car2.LCU      | car3.LCU      | car8.CCU.sys1.TXC | 1,1,1,1,1,1,1,1 |
-      | car2.LCU      | car3.LCU      | car8.CCU.sys2.TXC | 1,1,1,1,1,1,1,1 |
-      | car2.LCU      | car3.LCU      | car1.LCU          | 3,3,1,1,1,1,1,1 |
-      | car2.LCU      | car3.LCU      | car1.LCU.RXC      | 1,1,1,1,1,1,1,1 |
-      | car2.LCU      | car3.LCU      | car2.LCU          | 1,3,1,1,1,1,1,1 |
-      | car2.LCU      | car3.LCU      | car2.LCU.RXC      | 1,1,1,1,1,1,1,1 |
-      | car2.LCU      | car3.LCU      | car3.LCU          | 1,1,3,1,1,1,1,1 |
-      | car2.LCU      | car3.LCU      | car3.LCU.RXC      | 1,1,1,1,1,1,1,1 |
-      | car2.LCU      | car3.LCU      | car4.LCU          | 1,1,3,3,1,1,1,1 |
-      | car2.LCU      | car3.LCU      | car4.LCU.RXC      | 1,1,1,1,1,1,1,1 |
-      | car2.LCU      | car3.LCU      | car5.LCU          | 1,1,3,3,3,1,1,1 |
-      | car2.LCU      | car3.LCU      | car5.LCU.RXC      | 1,1,1,1,1,1,1,1 |
-      | car2.LCU      | car3.LCU      | car6.LCU          | 1,1,3,3,3,3,1,1 |
-      | car2.LCU      | car3.LCU      | car6.LCU.RXC      | 1,1,1,1,1,1,1,1 |
-      | car2.LCU      | car3.LCU      | car7.LCU          | 1,1,3,3,3,3,3,1 |
-      | car2.LCU      | car3.LCU      | car7.LCU.RXC      | 1,1,1,1,1,1,1,1 |
-      | car2.LCU      | car3.LCU      | car8.LCU          | 1,1,3,3,3,3,3,3 |
-      | car2.LCU      | car3.LCU      | car8.LCU.RXC      | 1,1,1,1,1,1,1,1 |
-      | car3.LCU      | car4.LCU      | car1.CCU.sys1     | 1,1,1,3,3,3,3,3 |
-      | car3.LCU      | car4.LCU      | car1.CCU.sys2     | 3,3,3,1,1,1,1,1 |
-      | car3.LCU      | car4.LCU      | car1.CCU.sys1.TXC | 1,1,1,1,1,1,1,1 |
-      | car3.LCU      | car4.LCU      | car1.CCU.sys2.TXC | 1,1,1,1,1,1,1,1 |
-      | car3.LCU      | car4.LCU      | car8.CCU.sys1     | 1,1,1,3,3,3,3,3 |
-      | car3.LCU      | car4.LCU      | car8.CCU.sys2     | 1,1,1,3,3,3,3,3 |
-      | car3.LCU      | car4.LCU      | car8.CCU.sys1.TXC | 1,1,1,1,1,1,1,1 |
-      | car3.LCU      | car4.LCU      | car8.CCU.sys2.TXC | 1,1,1,1,1,1,1,1 |
-      | car3.LCU      | car4.LCU      | car1.LCU          | 3,3,3,1,1,1,1,1 |
-      | car3.LCU      | car4.LCU      | car1.LCU.RXC      | 1,1,1,1,1,1,1,1 |
-      | car3.LCU      | car4.LCU      | car2.LCU          | 1,3,3,1,1,1,1,1 |
-      | car3.LCU      | car4.LCU      | car2.LCU.RXC      | 1,1,1,1,1,1,1,1 |
-      | car3.LCU      | car4.LCU      | car3.LCU          | 1,1,3,1,1,1,1,1 |
-      | car3.LCU      | car4.LCU      | car3.LCU.RXC      | 1,1,1,1,1,1,1,1 |
-      | car3.LCU      | car4.LCU      | car4.LCU          | 1,1,1,3,1,1,1,1 |
-      | car3.LCU      | car4.LCU      | car4.LCU.RXC      | 1,1,1,1,1,1,1,1 |
-      | car3.LCU      | car4.LCU      | car5.LCU          | 1,1,1,3,3,1,1,1 |
-      | car3.LCU      | car4.LCU      | car5.LCU.RXC      | 1,1,1,1,1,1,1,1 |
-      | car3.LCU      | car4.LCU      | car6.LCU          | 1,1,1,3,3,3,1,1 |
-      | car3.LCU      | car4.LCU      | car6.LCU.RXC      | 1,1,1,1,1,1,1,1 |
-      | car3.LCU      | car4.LCU      | car7.LCU          | 1,1,1,3,3,3,3,1 |
-      | car3.LCU      | car4.LCU      | car7.LCU.RXC      | 1,1,1,1,1,1,1,1 |
-      | car3.LCU      | car4.LCU      | car8.LCU          | 1,1,1,3,3,3,3,3 |
-      | car3.LCU      | car4.LCU      | car8.LCU.RXC      | 1,1,1,1,1,1,1,1 |
-      | car4.LCU      | car5.LCU      | car1.CCU.sys1     | 1,1,1,1,3,3,3,3 |
-      | car4.LCU      | car5.LCU      | car1.CCU.sys2     | 3,3,3,3,1,1,1,1 |
-      | car4.LCU      | car5.LCU      | car1.CCU.sys1.TXC | 1,1,1,1,1,1,1,1 |
-      | car4.LCU      | car5.LCU      | car1.CCU.sys2.TXC | 1,1,1,1,1,1,1,1 |
-      | car4.LCU      | car5.LCU      | car8.CCU.sys1     | 1,1,1,1,3,3,3,3 |
-      | car4.LCU      | car5.LCU      | car8.CCU.sys2     | 1,1,1,1,3,3,3,3 |
-      | car4.LCU      | car5.LCU      | car8.CCU.sys1.TXC | 1,1,1,1,1,1,1,1 |
-      | car4.LCU      | car5.LCU      | car8.CCU.sys2.TXC | 1,1,1,1,1,1,1,1 |
-      | car4.LCU      | car5.LCU      | car1.LCU          | 3,3,3,3,1,1,1,1 |
-      | car4.LCU      | car5.LCU      | car1.LCU.RXC      | 1,1,1,1,1,1,1,1 |
-      | car4.LCU      | car5.LCU      | car2.LCU          | 1,3,3,3,1,1,1,1 |
-      | car4.LCU      | car5.LCU      | car2.LCU.RXC      | 1,1,1,1,1,1,1,1 |
-      | car4.LCU      | car5.LCU      | car3.LCU          | 1,1,3,3,1,1,1,1 |
-      | car4.LCU      | car5.LCU      | car3.LCU.RXC      | 1,1,1,1,1,1,1,1 |
-      | car4.LCU      | car5.LCU      | car4.LCU          | 1,1,1,3,1,1,1,1 |
-      | car4.LCU      | car5.LCU      | car4.LCU.RXC      | 1,1,1,1,1,1,1,1 |
-      | car4.LCU      | car5.LCU      | car5.LCU          | 1,1,1,1,3,1,1,1 |
-      | car4.LCU      | car5.LCU      | car5.LCU.RXC      | 1,1,1,1,1,1,1,1 |
-      | car4.LCU      | car5.LCU      | car6.LCU          | 1,1,1,1,3,3,1,1 |
-      | car4.LCU      | car5.LCU      | car6.LCU.RXC      | 1,1,1,1,1,1,1,1 |
-      | car4.LCU      | car5.LCU      | car7.LCU          | 1,1,1,1,3,3,3,1 |
-      | car4.LCU      | car5.LCU      | car7.LCU.RXC      | 1,1,1,1,1,1,1,1 |
-      | car4.LCU      | car5.LCU      | car8.LCU          | 1,1,1,1,3,3,3,3 |
-      | car4.LCU      | car5.LCU      | car8.LCU.RXC      | 1,1,1,1,1,1,1,1 |
-      | car5.LCU      | car6.LCU      | car1.CCU.sys1     | 1,1,1,1,1,3,3,3 |
-      | car5.LCU      | car6.LCU      | car1.CCU.sys2     | 3,3,3,3,3,1,1,1 |
-      | car5.LCU      | car6.LCU      | car1.CCU.sys1.TXC | 1,1,1,1,1,1,1,1 |
-      | car5.LCU      | car6.LCU      | car1.CCU.sys2.TXC | 1,1,1,1,1,1,1,1 |
-      | car5.LCU      | car6.LCU      | car8.CCU.sys1     | 1,1,1,1,1,3,3,3 |
-      | car5.LCU      | car6.LCU      | car8.CCU.sys2     | 1,1,1,1,1,3,3,3 |
-      | car5.LCU      | car6.LCU      | car8.CCU.sys1.TXC | 1,1,1,1,1,1,1,1 |
-      | car5.LCU      | car6.LCU      | car8.CCU.sys2.TXC | 1,1,1,1,1,1,1,1 |
-      | car5.LCU      | car6.LCU      | car1.LCU          | 3,3,3,3,3,1,1,1 |
-      | car5.LCU      | car6.LCU      | car1.LCU.RXC      | 1,1,1,1,1,1,1,1 |
-      | car5.LCU      | car6.LCU      | car2.LCU          | 1,3,3,3,3,1,1,1 |
-      | car5.LCU      | car6.LCU      | car2.LCU.RXC      | 1,1,1,1,1,1,1,1 |
-      | car5.LCU      | car6.LCU      | car3.LCU          | 1,1,3,3,3,1,1,1 |
-      | car5.LCU      | car6.LCU      | car3.LCU.RXC      | 1,1,1,1,1,1,1,1 |
-      | car5.LCU      | car6.LCU      | car4.LCU          | 1,1,1,3,3,1,1,1 |
-      | car5.LCU      | car6.LCU      | car4.LCU.RXC      | 1,1,1,1,1,1,1,1 |
-      | car5.LCU      | car6.LCU      | car5.LCU          | 1,1,1,1,3,1,1,1 |
-      | car5.LCU      | car6.LCU      | car5.LCU.RXC      | 1,1,1,1,1,1,1,1 |
-      | car5.LCU      | car6.LCU      | car6.LCU          | 1,1,1,1,1,3,1,1 |
-      | car5.LCU      | car6.LCU      | car6.LCU.RXC      | 1,1,1,1,1,1,1,1 |
-      | car5.LCU      | car6.LCU      | car7.LCU          | 1,1,1,1,1,3,3,1 |
-      | car5.LCU      | car6.LCU      | car7.LCU.RXC      | 1,1,1,1,1,1,1,1 |
-      | car5.LCU      | car6.LCU      | car8.LCU          | 1,1,1,1,1,3,3,3 |
-      | car5.LCU      | car6.LCU      | car8.LCU.RXC      | 1,1,1,1,1,1,1,1 |
-      | car6.LCU      | car7.LCU      | car1.CCU.sys1     | 1,1,1,1,1,1,3,3 |
-      | car6.LCU      | car7.LCU      | car1.CCU.sys2     | 3,3,3,3,3,3,1,1 |
-      | car6.LCU      | car7.LCU      | car1.CCU.sys1.TXC | 1,1,1,1,1,1,1,1 |
-      | car6.LCU      | car7.LCU      | car1.CCU.sys2.TXC | 1,1,1,1,1,1,1,1 |
-      | car6.LCU      | car7.LCU      | car8.CCU.sys1     | 1,1,1,1,1,1,3,3 |
-      | car6.LCU      | car7.LCU      | car8.CCU.sys2     | 1,1,1,1,1,1,3,3 |
-      | car6.LCU      | car7.LCU      | car8.CCU.sys1.TXC | 1,1,1,1,1,1,1,1 |
-      | car6.LCU      | car7.LCU      | car8.CCU.sys2.TXC | 1,1,1,1,1,1,1,1 |
-      | car6.LCU      | car7.LCU      | car1.LCU          | 3,3,3,3,3,3,1,1 |
-      | car6.LCU      | car7.LCU      | car1.LCU.RXC      | 1,1,1,1,1,1,1,1 |
-      | car6.LCU      | car7.LCU      | car2.LCU          | 1,3,3,3,3,3,1,1 |
-      | car6.LCU      | car7.LCU      | car2.LCU.RXC      | 1,1,1,1,1,1,1,1 |
-      | car6.LCU      | car7.LCU      | car3.LCU          | 1,1,3,3,3,3,1,1 |
-      | car6.LCU      | car7.LCU      | car3.LCU.RXC      | 1,1,1,1,1,1,1,1 |
-      | car6.LCU      | car7.LCU      | car4.LCU          | 1,1,1,3,3,3,1,1 |
-      | car6.LCU      | car7.LCU      | car4.LCU.RXC      | 1,1,1,1,1,1,1,1 |
-      | car6.LCU      | car7.LCU      | car5.LCU          | 1,1,1,1,3,3,1,1 |
-      | car6.LCU      | car7.LCU      | car5.LCU.RXC      | 1,1,1,1,1,1,1,1 |
-      | car6.LCU      | car7.LCU      | car6.LCU          | 1,1,1,1,1,3,1,1 |
-      | car6.LCU      | car7.LCU      | car6.LCU.RXC      | 1,1,1,1,1,1,1,1 |
-      | car6.LCU      | car7.LCU      | car7.LCU          | 1,1,1,1,1,1,3,1 |
-      | car6.LCU      | car7.LCU      | car7.LCU.RXC      | 1,1,1,1,1,1,1,1 |
-      | car6.LCU      | car7.LCU      | car8.LCU          | 1,1,1,1,1,1,3,3 |
-      | car6.LCU      | car7.LCU      | car8.LCU.RXC      | 1,1,1,1,1,1,1,1 |
-      | car7.LCU      | car8.LCU      | car1.CCU.sys1     | 1,1,1,1,1,1,1,3 |
-      | car7.LCU      | car8.LCU      | car1.CCU.sys2     | 3,3,3,3,3,3,3,1 |
-      | car7.LCU      | car8.LCU      | car1.CCU.sys1.TXC | 1,1,1,1,1,1,1,1 |
-      | car7.LCU      | car8.LCU      | car1.CCU.sys2.TXC | 1,1,1,1,1,1,1,1 |
-      | car7.LCU      | car8.LCU      | car8.CCU.sys1     | 1,1,1,1,1,1,1,3 |
-      | car7.LCU      | car8.LCU      | car8.CCU.sys2     | 1,1,1,1,1,1,1,3 |
-      | car7.LCU      | car8.LCU      | car8.CCU.sys1.TXC | 1,1,1,1,1,1,1,1 |
-      | car7.LCU      | car8.LCU      | car8.CCU.sys2.TXC | 1,1,1,1,1,1,1,1 |
-      | car7.LCU      | car8.LCU      | car1.LCU          | 3,3,3,3,3,3,3,1 |
-      | car7.LCU      | car8.LCU      | car1.LCU.RXC      | 1,1,1,1,1,1,1,1 |
-      | car7.LCU      | car8.LCU      | car2.LCU          | 1,3,3,3,3,3,3,1 |
-      | car7.LCU      | car8.LCU      | car2.LCU.RXC      | 1,1,1,1,1,1,1,1 |
-      | car7.LCU      | car8.LCU      | car3.LCU          | 1,1,3,3,3,3,3,1 |
-      | car7.LCU      | car8.LCU      | car3.LCU.RXC      | 1,1,1,1,1,1,1,1 |
-      | car7.LCU      | car8.LCU      | car4.LCU          | 1,1,1,3,3,3,3,1 |
-      | car7.LCU      | car8.LCU      | car4.LCU.RXC      | 1,1,1,1,1,1,1,1 |
-      | car7.LCU      | car8.LCU      | car5.LCU          | 1,1,1,1,3,3,3,1 |
-      | car7.LCU      | car8.LCU      | car5.LCU.RXC      | 1,1,1,1,1,1,1,1 |
-      | car7.LCU      | car8.LCU      | car6.LCU          | 1,1,1,1,1,3,3,1 |
-      | car7.LCU      | car8.LCU      | car6.LCU.RXC      | 1,1,1,1,1,1,1,1 |
-      | car7.LCU      | car8.LCU      | car7.LCU          | 1,1,1,1,1,1,3,1 |
-      | car7.LCU      | car8.LCU      | car7.LCU.RXC      | 1,1,1,1,1,1,1,1 |
-      | car7.LCU      | car8.LCU      | car8.LCU          | 1,1,1,1,1,1,1,3 |
-      | car7.LCU      | car8.LCU      | car8.LCU.RXC      | 1,1,1,1,1,1,1,1 |
-      | car8.LCU      | car8.CCU.sys2 | car1.CCU.sys1     | 1,1,1,1,1,1,1,1 |
-      | car8.LCU      | car8.CCU.sys2 | car1.CCU.sys2     | 3,3,3,3,3,3,3,3 |
-      | car8.LCU      | car8.CCU.sys2 | car1.CCU.sys1.TXC | 1,1,1,1,1,1,1,1 |
-      | car8.LCU      | car8.CCU.sys2 | car1.CCU.sys2.TXC | 1,1,1,1,1,1,1,1 |
-      | car8.LCU      | car8.CCU.sys2 | car8.CCU.sys1     | 1,1,1,1,1,1,1,1 |
-      | car8.LCU      | car8.CCU.sys2 | car8.CCU.sys2     | 1,1,1,1,1,1,1,1 |
-      | car8.LCU      | car8.CCU.sys2 | car8.CCU.sys1.TXC | 1,1,1,1,1,1,1,1 |
-      | car8.LCU      | car8.CCU.sys2 | car8.CCU.sys2.TXC | 1,1,1,1,1,1,1,1 |
-      | car8.LCU      | car8.CCU.sys2 | car1.LCU          | 3,3,3,3,3,3,3,3 |
-      | car8.LCU      | car8.CCU.sys2 | car1.LCU.RXC      | 1,1,1,1,1,1,1,1 |
-      | car8.LCU      | car8.CCU.sys2 | car2.LCU          | 1,3,3,3,3,3,3,3 |
-      | car8.LCU      | car8.CCU.sys2 | car2.LCU.RXC      | 1,1,1,1,1,1,1,1 |
-      | car8.LCU      | car8.CCU.sys2 | car3.LCU          | 1,1,3,3,3,3,3,3 |
-      | car8.LCU      | car8.CCU.sys2 | car3.LCU.RXC      | 1,1,1,1,1,1,1,1 |
-      | car8.LCU      | car8.CCU.sys2 | car4.LCU          | 1,1,1,3,3,3,3,3 |
-      | car8.LCU      | car8.CCU.sys2 | car4.LCU.RXC      | 1,1,1,1,1,1,1,1 |
-      | car8.LCU      | car8.CCU.sys2 | car5.LCU          | 1,1,1,1,3,3,3,3 |
-      | car8.LCU      | car8.CCU.sys2 | car5.LCU.RXC      | 1,1,1,1,1,1,1,1 |
-      | car8.LCU      | car8.CCU.sys2 | car6.LCU          | 1,1,1,1,1,3,3,3 |
-      | car8.LCU      | car8.CCU.sys2 | car6.LCU.RXC      | 1,1,1,1,1,1,1,1 |
-      | car8.LCU      | car8.CCU.sys2 | car7.LCU          | 1,1,1,1,1,1,3,3 |
-      | car8.LCU      | car8.CCU.sys2 | car7.LCU.RXC      | 1,1,1,1,1,1,1,1 |
-      | car8.LCU      | car8.CCU.sys2 | car8.LCU          | 1,1,1,1,1,1,1,3 |
-      | car8.LCU      | car8.CCU.sys2 | car8.LCU.RXC      | 1,1,1,1,1,1,1,1 |
-      | car8.CCU.sys2 | car8.CCU.sys1 | car1.CCU.sys1     | 1,1,1,1,1,1,1,1 |
-      | car8.CCU.sys2 | car8.CCU.sys1 | car1.CCU.sys2     | 3,3,3,3,3,3,3,3 |
-      | car8.CCU.sys2 | car8.CCU.sys1 | car1.CCU.sys1.TXC | 1,1,1,1,1,1,1,1 |
-      | car8.CCU.sys2 | car8.CCU.sys1 | car1.CCU.sys2.TXC | 1,1,1,1,1,1,1,1 |
-      | car8.CCU.sys2 | car8.CCU.sys1 | car8.CCU.sys1     | 1,1,1,1,1,1,1,1 |
-      | car8.CCU.sys2 | car8.CCU.sys1 | car8.CCU.sys2     | 1,1,1,1,1,1,1,1 |
-      | car8.CCU.sys2 | car8.CCU.sys1 | car8.CCU.sys1.TXC | 1,1,1,1,1,1,1,1 |
-      | car8.CCU.sys2 | car8.CCU.sys1 | car8.CCU.sys2.TXC | 1,1,1,1,1,1,1,1 |
-      | car8.CCU.sys2 | car8.CCU.sys1 | car1.LCU          | 3,3,3,3,3,3,3,3 |
-      | car8.CCU.sys2 | car8.CCU.sys1 | car1.LCU.RXC      | 1,1,1,1,1,1,1,1 |
-      | car8.CCU.sys2 | car8.CCU.sys1 | car2.LCU          | 1,3,3,3,3,3,3,3 |
-      | car8.CCU.sys2 | car8.CCU.sys1 | car2.LCU.RXC      | 1,1,1,1,1,1,1,1 |
-      | car8.CCU.sys2 | car8.CCU.sys1 | car3.LCU          | 1,1,3,3,3,3,3,3 |
-      | car8.CCU.sys2 | car8.CCU.sys1 | car3.LCU.RXC      | 1,1,1,1,1,1,1,1 |
-      | car8.CCU.sys2 | car8.CCU.sys1 | car4.LCU          | 1,1,1,3,3,3,3,3 |
-      | car8.CCU.sys2 | car8.CCU.sys1 | car4.LCU.RXC      | 1,1,1,1,1,1,1,1 |
-      | car8.CCU.sys2 | car8.CCU.sys1 | car5.LCU          | 1,1,1,1,3,3,3,3 |
-      | car8.CCU.sys2 | car8.CCU.sys1 | car5.LCU.RXC      | 1,1,1,1,1,1,1,1 |
-      | car8.CCU.sys2 | car8.CCU.sys1 | car6.LCU          | 1,1,1,1,1,3,3,3 |
-      | car8.CCU.sys2 | car8.CCU.sys1 | car6.LCU.RXC      | 1,1,1,1,1,1,1,1 |
-      | car8.CCU.sys2 | car8.CCU.sys1 | car7.LCU          | 1,1,1,1,1,1,3,3 |
-      | car8.CCU.sys2 | car8.CCU.sys1 | car7.LCU.RXC      | 1,1,1,1,1,1,1,1 |
-      | car8.CCU.sys2 | car8.CCU.sys1 | car8.LCU          | 1,1,1,1,1,1,1,3 |
-      | car8.CCU.sys2 | car8.CCU.sys1 | car8.LCU.RXC      | 1,1,1,1,1,1,1,1 |
-      | car8.CCU.sys1 | car1.CCU.sys1 | car1.CCU.sys1     | 1,1,1,1,1,1,1,1 |
-      | car8.CCU.sys1 | car1.CCU.sys1 | car1.CCU.sys2     | 3,3,3,3,3,3,3,3 |
-      | car8.CCU.sys1 | car1.CCU.sys1 | car1.CCU.sys1.TXC | 1,1,1,1,1,1,1,1 |
-      | car8.CCU.sys1 | car1.CCU.sys1 | car1.CCU.sys2.TXC | 1,1,1,1,1,1,1,1 |
-      | car8.CCU.sys1 | car1.CCU.sys1 | car8.CCU.sys1     | 1,1,1,1,1,1,1,1 |
-      | car8.CCU.sys1 | car1.CCU.sys1 | car8.CCU.sys2     | 1,1,1,1,1,1,1,1 |
-      | car8.CCU.sys1 | car1.CCU.sys1 | car8.CCU.sys1.TXC | 1,1,1,1,1,1,1,1 |
-      | car8.CCU.sys1 | car1.CCU.sys1 | car8.CCU.sys2.TXC | 1,1,1,1,1,1,1,1 |
-      | car8.CCU.sys1 | car1.CCU.sys1 | car1.LCU          | 3,3,3,3,3,3,3,3 |
-      | car8.CCU.sys1 | car1.CCU.sys1 | car1.LCU.RXC      | 1,1,1,1,1,1,1,1 |
-      | car8.CCU.sys1 | car1.CCU.sys1 | car2.LCU          | 1,3,3,3,3,3,3,3 |
-      | car8.CCU.sys1 | car1.CCU.sys1 | car2.LCU.RXC      | 1,1,1,1,1,1,1,1 |
-      | car8.CCU.sys1 | car1.CCU.sys1 | car3.LCU          | 1,1,3,3,3,3,3,3 |
-      | car8.CCU.sys1 | car1.CCU.sys1 | car3.LCU.RXC      | 1,1,1,1,1,1,1,1 |
-      | car8.CCU.sys1 | car1.CCU.sys1 | car4.LCU          | 1,1,1,3,3,3,3,3 |
-      | car8.CCU.sys1 | car1.CCU.sys1 | car4.LCU.RXC      | 1,1,1,1,1,1,1,1 |
-      | car8.CCU.sys1 | car1.CCU.sys1 | car5.LCU          | 1,1,1,1,3,3,3,3 |
-      | car8.CCU.sys1 | car1.CCU.sys1 | car5.LCU.RXC      | 1,1,1,1,1,1,1,1 |
-      | car8.CCU.sys1 | car1.CCU.sys1 | car6.LCU          | 1,1,1,1,1,3,3,3 |
-      | car8.CCU.sys1 | car1.CCU.sys1 | car6.LCU.RXC      | 1,1,1,1,1,1,1,1 |
-      | car8.CCU.sys1 | car1.CCU.sys1 | car7.LCU          | 1,1,1,1,1,1,3,3 |
-      | car8.CCU.sys1 | car1.CCU.sys1 | car7.LCU.RXC      | 1,1,1,1,1,1,1,1 |
-      | car8.CCU.sys1 | car1.CCU.sys1 | car8.LCU          | 1,1,1,1,1,1,1,3 |
-      | car8.CCU.sys1 | car1.CCU.sys1 | car8.LCU.RXC      | 1,1,1,1,1,1,1,1 |
+      | a             | b             | supply        | paths           |
+      | car1.CCU.sys1 | car1.CCU.sys2 | car1.CCU.sys1 | 1,1,1,1,1,1,1,1 |
+      | car1.CCU.sys1 | car1.CCU.sys2 | car1.CCU.sys2 | 1,1,1,1,1,1,1,1 |
+      | car1.CCU.sys1 | car1.CCU.sys2 | car8.CCU.sys1 | 1,1,1,1,1,1,1,1 |
+      | car1.CCU.sys1 | car1.CCU.sys2 | car8.CCU.sys2 | 1,1,1,1,1,1,1,1 |
+      | car1.CCU.sys1 | car1.CCU.sys2 | car1.LCU      | 3,1,1,1,1,1,1,1 |
+      | car1.CCU.sys1 | car1.CCU.sys2 | car2.LCU      | 1,3,1,1,1,1,1,1 |
+      | car1.CCU.sys1 | car1.CCU.sys2 | car3.LCU      | 1,1,3,1,1,1,1,1 |
+      | car1.CCU.sys1 | car1.CCU.sys2 | car4.LCU      | 1,1,1,3,1,1,1,1 |
+      | car1.CCU.sys1 | car1.CCU.sys2 | car5.LCU      | 1,1,1,1,3,1,1,1 |
+      | car1.CCU.sys1 | car1.CCU.sys2 | car6.LCU      | 1,1,1,1,1,3,1,1 |
+      | car1.CCU.sys1 | car1.CCU.sys2 | car7.LCU      | 1,1,1,1,1,1,3,1 |
+      | car1.CCU.sys1 | car1.CCU.sys2 | car8.LCU      | 1,1,1,1,1,1,1,3 |
+      | car1.CCU.sys2 | car1.LCU      | car1.CCU.sys1 | 3,3,3,3,3,3,3,3 |
+      | car1.CCU.sys2 | car1.LCU      | car1.CCU.sys2 | 1,1,1,1,1,1,1,1 |
+      | car1.CCU.sys2 | car1.LCU      | car8.CCU.sys1 | 3,3,3,3,3,3,3,3 |
+      | car1.CCU.sys2 | car1.LCU      | car8.CCU.sys2 | 3,3,3,3,3,3,3,3 |
+      | car1.CCU.sys2 | car1.LCU      | car1.LCU      | 3,1,1,1,1,1,1,1 |
+      | car1.CCU.sys2 | car1.LCU      | car2.LCU      | 3,3,1,1,1,1,1,1 |
+      | car1.CCU.sys2 | car1.LCU      | car3.LCU      | 3,3,3,1,1,1,1,1 |
+      | car1.CCU.sys2 | car1.LCU      | car4.LCU      | 3,3,3,3,1,1,1,1 |
+      | car1.CCU.sys2 | car1.LCU      | car5.LCU      | 3,3,3,3,3,1,1,1 |
+      | car1.CCU.sys2 | car1.LCU      | car6.LCU      | 3,3,3,3,3,3,1,1 |
+      | car1.CCU.sys2 | car1.LCU      | car7.LCU      | 3,3,3,3,3,3,3,1 |
+      | car1.CCU.sys2 | car1.LCU      | car8.LCU      | 3,3,3,3,3,3,3,3 |
+      | car1.LCU      | car2.LCU      | car1.CCU.sys1 | 1,3,3,3,3,3,3,3 |
+      | car1.LCU      | car2.LCU      | car1.CCU.sys2 | 3,1,1,1,1,1,1,1 |
+      | car1.LCU      | car2.LCU      | car8.CCU.sys1 | 1,3,3,3,3,3,3,3 |
+      | car1.LCU      | car2.LCU      | car8.CCU.sys2 | 1,3,3,3,3,3,3,3 |
+      | car1.LCU      | car2.LCU      | car1.LCU      | 3,1,1,1,1,1,1,1 |
+      | car1.LCU      | car2.LCU      | car2.LCU      | 1,3,1,1,1,1,1,1 |
+      | car1.LCU      | car2.LCU      | car3.LCU      | 1,3,3,1,1,1,1,1 |
+      | car1.LCU      | car2.LCU      | car4.LCU      | 1,3,3,3,1,1,1,1 |
+      | car1.LCU      | car2.LCU      | car5.LCU      | 1,3,3,3,3,1,1,1 |
+      | car1.LCU      | car2.LCU      | car6.LCU      | 1,3,3,3,3,3,1,1 |
+      | car1.LCU      | car2.LCU      | car7.LCU      | 1,3,3,3,3,3,3,1 |
+      | car1.LCU      | car2.LCU      | car8.LCU      | 1,3,3,3,3,3,3,3 |
+      | car2.LCU      | car3.LCU      | car1.CCU.sys1 | 1,1,3,3,3,3,3,3 |
+      | car2.LCU      | car3.LCU      | car1.CCU.sys2 | 3,3,1,1,1,1,1,1 |
+      | car2.LCU      | car3.LCU      | car8.CCU.sys1 | 1,1,3,3,3,3,3,3 |
+      | car2.LCU      | car3.LCU      | car8.CCU.sys2 | 1,1,3,3,3,3,3,3 |
+      | car2.LCU      | car3.LCU      | car1.LCU      | 3,3,1,1,1,1,1,1 |
+      | car2.LCU      | car3.LCU      | car2.LCU      | 1,3,1,1,1,1,1,1 |
+      | car2.LCU      | car3.LCU      | car3.LCU      | 1,1,3,1,1,1,1,1 |
+      | car2.LCU      | car3.LCU      | car4.LCU      | 1,1,3,3,1,1,1,1 |
+      | car2.LCU      | car3.LCU      | car5.LCU      | 1,1,3,3,3,1,1,1 |
+      | car2.LCU      | car3.LCU      | car6.LCU      | 1,1,3,3,3,3,1,1 |
+      | car2.LCU      | car3.LCU      | car7.LCU      | 1,1,3,3,3,3,3,1 |
+      | car2.LCU      | car3.LCU      | car8.LCU      | 1,1,3,3,3,3,3,3 |
+      | car3.LCU      | car4.LCU      | car1.CCU.sys1 | 1,1,1,3,3,3,3,3 |
+      | car3.LCU      | car4.LCU      | car1.CCU.sys2 | 3,3,3,1,1,1,1,1 |
+      | car3.LCU      | car4.LCU      | car8.CCU.sys1 | 1,1,1,3,3,3,3,3 |
+      | car3.LCU      | car4.LCU      | car8.CCU.sys2 | 1,1,1,3,3,3,3,3 |
+      | car3.LCU      | car4.LCU      | car1.LCU      | 3,3,3,1,1,1,1,1 |
+      | car3.LCU      | car4.LCU      | car2.LCU      | 1,3,3,1,1,1,1,1 |
+      | car3.LCU      | car4.LCU      | car3.LCU      | 1,1,3,1,1,1,1,1 |
+      | car3.LCU      | car4.LCU      | car4.LCU      | 1,1,1,3,1,1,1,1 |
+      | car3.LCU      | car4.LCU      | car5.LCU      | 1,1,1,3,3,1,1,1 |
+      | car3.LCU      | car4.LCU      | car6.LCU      | 1,1,1,3,3,3,1,1 |
+      | car3.LCU      | car4.LCU      | car7.LCU      | 1,1,1,3,3,3,3,1 |
+      | car3.LCU      | car4.LCU      | car8.LCU      | 1,1,1,3,3,3,3,3 |
+      | car4.LCU      | car5.LCU      | car1.CCU.sys1 | 1,1,1,1,3,3,3,3 |
+      | car4.LCU      | car5.LCU      | car1.CCU.sys2 | 3,3,3,3,1,1,1,1 |
+      | car4.LCU      | car5.LCU      | car8.CCU.sys1 | 1,1,1,1,3,3,3,3 |
+      | car4.LCU      | car5.LCU      | car8.CCU.sys2 | 1,1,1,1,3,3,3,3 |
+      | car4.LCU      | car5.LCU      | car1.LCU      | 3,3,3,3,1,1,1,1 |
+      | car4.LCU      | car5.LCU      | car2.LCU      | 1,3,3,3,1,1,1,1 |
+      | car4.LCU      | car5.LCU      | car3.LCU      | 1,1,3,3,1,1,1,1 |
+      | car4.LCU      | car5.LCU      | car4.LCU      | 1,1,1,3,1,1,1,1 |
+      | car4.LCU      | car5.LCU      | car5.LCU      | 1,1,1,1,3,1,1,1 |
+      | car4.LCU      | car5.LCU      | car6.LCU      | 1,1,1,1,3,3,1,1 |
+      | car4.LCU      | car5.LCU      | car7.LCU      | 1,1,1,1,3,3,3,1 |
+      | car4.LCU      | car5.LCU      | car8.LCU      | 1,1,1,1,3,3,3,3 |
+      | car5.LCU      | car6.LCU      | car1.CCU.sys1 | 1,1,1,1,1,3,3,3 |
+      | car5.LCU      | car6.LCU      | car1.CCU.sys2 | 3,3,3,3,3,1,1,1 |
+      | car5.LCU      | car6.LCU      | car8.CCU.sys1 | 1,1,1,1,1,3,3,3 |
+      | car5.LCU      | car6.LCU      | car8.CCU.sys2 | 1,1,1,1,1,3,3,3 |
+      | car5.LCU      | car6.LCU      | car1.LCU      | 3,3,3,3,3,1,1,1 |
+      | car5.LCU      | car6.LCU      | car2.LCU      | 1,3,3,3,3,1,1,1 |
+      | car5.LCU      | car6.LCU      | car3.LCU      | 1,1,3,3,3,1,1,1 |
+      | car5.LCU      | car6.LCU      | car4.LCU      | 1,1,1,3,3,1,1,1 |
+      | car5.LCU      | car6.LCU      | car5.LCU      | 1,1,1,1,3,1,1,1 |
+      | car5.LCU      | car6.LCU      | car6.LCU      | 1,1,1,1,1,3,1,1 |
+      | car5.LCU      | car6.LCU      | car7.LCU      | 1,1,1,1,1,3,3,1 |
+      | car5.LCU      | car6.LCU      | car8.LCU      | 1,1,1,1,1,3,3,3 |
+      | car6.LCU      | car7.LCU      | car1.CCU.sys1 | 1,1,1,1,1,1,3,3 |
+      | car6.LCU      | car7.LCU      | car1.CCU.sys2 | 3,3,3,3,3,3,1,1 |
+      | car6.LCU      | car7.LCU      | car8.CCU.sys1 | 1,1,1,1,1,1,3,3 |
+      | car6.LCU      | car7.LCU      | car8.CCU.sys2 | 1,1,1,1,1,1,3,3 |
+      | car6.LCU      | car7.LCU      | car1.LCU      | 3,3,3,3,3,3,1,1 |
+      | car6.LCU      | car7.LCU      | car2.LCU      | 1,3,3,3,3,3,1,1 |
+      | car6.LCU      | car7.LCU      | car3.LCU      | 1,1,3,3,3,3,1,1 |
+      | car6.LCU      | car7.LCU      | car4.LCU      | 1,1,1,3,3,3,1,1 |
+      | car6.LCU      | car7.LCU      | car5.LCU      | 1,1,1,1,3,3,1,1 |
+      | car6.LCU      | car7.LCU      | car6.LCU      | 1,1,1,1,1,3,1,1 |
+      | car6.LCU      | car7.LCU      | car7.LCU      | 1,1,1,1,1,1,3,1 |
+      | car6.LCU      | car7.LCU      | car8.LCU      | 1,1,1,1,1,1,3,3 |
+      | car7.LCU      | car8.LCU      | car1.CCU.sys1 | 1,1,1,1,1,1,1,3 |
+      | car7.LCU      | car8.LCU      | car1.CCU.sys2 | 3,3,3,3,3,3,3,1 |
+      | car7.LCU      | car8.LCU      | car8.CCU.sys1 | 1,1,1,1,1,1,1,3 |
+      | car7.LCU      | car8.LCU      | car8.CCU.sys2 | 1,1,1,1,1,1,1,3 |
+      | car7.LCU      | car8.LCU      | car1.LCU      | 3,3,3,3,3,3,3,1 |
+      | car7.LCU      | car8.LCU      | car2.LCU      | 1,3,3,3,3,3,3,1 |
+      | car7.LCU      | car8.LCU      | car3.LCU      | 1,1,3,3,3,3,3,1 |
+      | car7.LCU      | car8.LCU      | car4.LCU      | 1,1,1,3,3,3,3,1 |
+      | car7.LCU      | car8.LCU      | car5.LCU      | 1,1,1,1,3,3,3,1 |
+      | car7.LCU      | car8.LCU      | car6.LCU      | 1,1,1,1,1,3,3,1 |
+      | car7.LCU      | car8.LCU      | car7.LCU      | 1,1,1,1,1,1,3,1 |
+      | car7.LCU      | car8.LCU      | car8.LCU      | 1,1,1,1,1,1,1,3 |
+      | car8.LCU      | car8.CCU.sys2 | car1.CCU.sys1 | 1,1,1,1,1,1,1,1 |
+      | car8.LCU      | car8.CCU.sys2 | car1.CCU.sys2 | 3,3,3,3,3,3,3,3 |
+      | car8.LCU      | car8.CCU.sys2 | car8.CCU.sys1 | 1,1,1,1,1,1,1,1 |
+      | car8.LCU      | car8.CCU.sys2 | car8.CCU.sys2 | 1,1,1,1,1,1,1,1 |
+      | car8.LCU      | car8.CCU.sys2 | car1.LCU      | 3,3,3,3,3,3,3,3 |
+      | car8.LCU      | car8.CCU.sys2 | car2.LCU      | 1,3,3,3,3,3,3,3 |
+      | car8.LCU      | car8.CCU.sys2 | car3.LCU      | 1,1,3,3,3,3,3,3 |
+      | car8.LCU      | car8.CCU.sys2 | car4.LCU      | 1,1,1,3,3,3,3,3 |
+      | car8.LCU      | car8.CCU.sys2 | car5.LCU      | 1,1,1,1,3,3,3,3 |
+      | car8.LCU      | car8.CCU.sys2 | car6.LCU      | 1,1,1,1,1,3,3,3 |
+      | car8.LCU      | car8.CCU.sys2 | car7.LCU      | 1,1,1,1,1,1,3,3 |
+      | car8.LCU      | car8.CCU.sys2 | car8.LCU      | 1,1,1,1,1,1,1,3 |
+      | car8.CCU.sys2 | car8.CCU.sys1 | car1.CCU.sys1 | 1,1,1,1,1,1,1,1 |
+      | car8.CCU.sys2 | car8.CCU.sys1 | car1.CCU.sys2 | 3,3,3,3,3,3,3,3 |
+      | car8.CCU.sys2 | car8.CCU.sys1 | car8.CCU.sys1 | 1,1,1,1,1,1,1,1 |
+      | car8.CCU.sys2 | car8.CCU.sys1 | car8.CCU.sys2 | 1,1,1,1,1,1,1,1 |
+      | car8.CCU.sys2 | car8.CCU.sys1 | car1.LCU      | 3,3,3,3,3,3,3,3 |
+      | car8.CCU.sys2 | car8.CCU.sys1 | car2.LCU      | 1,3,3,3,3,3,3,3 |
+      | car8.CCU.sys2 | car8.CCU.sys1 | car3.LCU      | 1,1,3,3,3,3,3,3 |
+      | car8.CCU.sys2 | car8.CCU.sys1 | car4.LCU      | 1,1,1,3,3,3,3,3 |
+      | car8.CCU.sys2 | car8.CCU.sys1 | car5.LCU      | 1,1,1,1,3,3,3,3 |
+      | car8.CCU.sys2 | car8.CCU.sys1 | car6.LCU      | 1,1,1,1,1,3,3,3 |
+      | car8.CCU.sys2 | car8.CCU.sys1 | car7.LCU      | 1,1,1,1,1,1,3,3 |
+      | car8.CCU.sys2 | car8.CCU.sys1 | car8.LCU      | 1,1,1,1,1,1,1,3 |
+      | car8.CCU.sys1 | car1.CCU.sys1 | car1.CCU.sys1 | 1,1,1,1,1,1,1,1 |
+      | car8.CCU.sys1 | car1.CCU.sys1 | car1.CCU.sys2 | 3,3,3,3,3,3,3,3 |
+      | car8.CCU.sys1 | car1.CCU.sys1 | car8.CCU.sys1 | 1,1,1,1,1,1,1,1 |
+      | car8.CCU.sys1 | car1.CCU.sys1 | car8.CCU.sys2 | 1,1,1,1,1,1,1,1 |
+      | car8.CCU.sys1 | car1.CCU.sys1 | car1.LCU      | 3,3,3,3,3,3,3,3 |
+      | car8.CCU.sys1 | car1.CCU.sys1 | car2.LCU      | 1,3,3,3,3,3,3,3 |
+      | car8.CCU.sys1 | car1.CCU.sys1 | car3.LCU      | 1,1,3,3,3,3,3,3 |
+      | car8.CCU.sys1 | car1.CCU.sys1 | car4.LCU      | 1,1,1,3,3,3,3,3 |
+      | car8.CCU.sys1 | car1.CCU.sys1 | car5.LCU      | 1,1,1,1,3,3,3,3 |
+      | car8.CCU.sys1 | car1.CCU.sys1 | car6.LCU      | 1,1,1,1,1,3,3,3 |
+      | car8.CCU.sys1 | car1.CCU.sys1 | car7.LCU      | 1,1,1,1,1,1,3,3 |
+      | car8.CCU.sys1 | car1.CCU.sys1 | car8.LCU      | 1,1,1,1,1,1,1,3 |
+
+  @req:NET-03 @req:CMD-01 @req:CMD-02 @req:CMD-03 @req:CMD-04 @req:RED-01 @req:RED-02 @req:PRO-06
+  Scenario Outline: F-NET-32 The ring link <a>~<b> cut and supply <supply> off: each car by the path left to it, one fault recorded at the master
+    When the ring link between "<a>" and "<b>" is cut
+    And the supply "<supply>" is switched off
+    And the driver moves the traction notch of cab 1 to 6
+    And 200 ms pass
+    Then car by car the CI and BCU receive traction notch 6 or traction step "B" by the paths <paths> within 100 ms
+    And no CI or BCU of a car with a path in <paths> goes without a command for more than 100 ms
+    And no CI or BCU ever receives a traction notch other than 0 or 6
+    And no command over path 2 or 3 ever carried more than the traction and brake steps A and B
+    And "<master>" holds a fault record of "<node1>" saying "<part1>" failed at most 1330 ms after it
+
+    Examples:
+      | a             | b             | supply            | paths           | master        | node1         | part1 |
+      | car1.CCU.sys1 | car1.CCU.sys2 | car1.CCU.sys1.TXC | 1,1,1,1,1,1,1,1 | car1.CCU.sys2 | car1.CCU.sys1 | TXC   |
+      | car1.CCU.sys1 | car1.CCU.sys2 | car1.CCU.sys2.TXC | 1,1,1,1,1,1,1,1 | car1.CCU.sys1 | car1.CCU.sys2 | TXC   |
+      | car1.CCU.sys1 | car1.CCU.sys2 | car8.CCU.sys1.TXC | 1,1,1,1,1,1,1,1 | car1.CCU.sys1 | car8.CCU.sys1 | TXC   |
+      | car1.CCU.sys1 | car1.CCU.sys2 | car8.CCU.sys2.TXC | 1,1,1,1,1,1,1,1 | car1.CCU.sys1 | car8.CCU.sys2 | TXC   |
+      | car1.CCU.sys1 | car1.CCU.sys2 | car1.LCU.RXC      | 1,1,1,1,1,1,1,1 | car1.CCU.sys1 | car1.LCU      | RXC   |
+      | car1.CCU.sys1 | car1.CCU.sys2 | car2.LCU.RXC      | 1,1,1,1,1,1,1,1 | car1.CCU.sys1 | car2.LCU      | RXC   |
+      | car1.CCU.sys1 | car1.CCU.sys2 | car3.LCU.RXC      | 1,1,1,1,1,1,1,1 | car1.CCU.sys1 | car3.LCU      | RXC   |
+      | car1.CCU.sys1 | car1.CCU.sys2 | car4.LCU.RXC      | 1,1,1,1,1,1,1,1 | car1.CCU.sys1 | car4.LCU      | RXC   |
+      | car1.CCU.sys1 | car1.CCU.sys2 | car5.LCU.RXC      | 1,1,1,1,1,1,1,1 | car1.CCU.sys1 | car5.LCU      | RXC   |
+      | car1.CCU.sys1 | car1.CCU.sys2 | car6.LCU.RXC      | 1,1,1,1,1,1,1,1 | car1.CCU.sys1 | car6.LCU      | RXC   |
+      | car1.CCU.sys1 | car1.CCU.sys2 | car7.LCU.RXC      | 1,1,1,1,1,1,1,1 | car1.CCU.sys1 | car7.LCU      | RXC   |
+      | car1.CCU.sys1 | car1.CCU.sys2 | car8.LCU.RXC      | 1,1,1,1,1,1,1,1 | car1.CCU.sys1 | car8.LCU      | RXC   |
+      | car1.CCU.sys2 | car1.LCU      | car1.CCU.sys1.TXC | 1,1,1,1,1,1,1,1 | car1.CCU.sys2 | car1.CCU.sys1 | TXC   |
+      | car1.CCU.sys2 | car1.LCU      | car1.CCU.sys2.TXC | 1,1,1,1,1,1,1,1 | car1.CCU.sys1 | car1.CCU.sys2 | TXC   |
+      | car1.CCU.sys2 | car1.LCU      | car8.CCU.sys1.TXC | 1,1,1,1,1,1,1,1 | car1.CCU.sys1 | car8.CCU.sys1 | TXC   |
+      | car1.CCU.sys2 | car1.LCU      | car8.CCU.sys2.TXC | 1,1,1,1,1,1,1,1 | car1.CCU.sys1 | car8.CCU.sys2 | TXC   |
+      | car1.CCU.sys2 | car1.LCU      | car1.LCU.RXC      | 1,1,1,1,1,1,1,1 | car1.CCU.sys1 | car1.LCU      | RXC   |
+      | car1.CCU.sys2 | car1.LCU      | car2.LCU.RXC      | 1,1,1,1,1,1,1,1 | car1.CCU.sys1 | car2.LCU      | RXC   |
+      | car1.CCU.sys2 | car1.LCU      | car3.LCU.RXC      | 1,1,1,1,1,1,1,1 | car1.CCU.sys1 | car3.LCU      | RXC   |
+      | car1.CCU.sys2 | car1.LCU      | car4.LCU.RXC      | 1,1,1,1,1,1,1,1 | car1.CCU.sys1 | car4.LCU      | RXC   |
+      | car1.CCU.sys2 | car1.LCU      | car5.LCU.RXC      | 1,1,1,1,1,1,1,1 | car1.CCU.sys1 | car5.LCU      | RXC   |
+      | car1.CCU.sys2 | car1.LCU      | car6.LCU.RXC      | 1,1,1,1,1,1,1,1 | car1.CCU.sys1 | car6.LCU      | RXC   |
+      | car1.CCU.sys2 | car1.LCU      | car7.LCU.RXC      | 1,1,1,1,1,1,1,1 | car1.CCU.sys1 | car7.LCU      | RXC   |
+      | car1.CCU.sys2 | car1.LCU      | car8.LCU.RXC      | 1,1,1,1,1,1,1,1 | car1.CCU.sys1 | car8.LCU      | RXC   |
+      | car1.LCU      | car2.LCU      | car1.CCU.sys1.TXC | 1,1,1,1,1,1,1,1 | car1.CCU.sys2 | car1.CCU.sys1 | TXC   |
+      | car1.LCU      | car2.LCU      | car1.CCU.sys2.TXC | 1,1,1,1,1,1,1,1 | car1.CCU.sys1 | car1.CCU.sys2 | TXC   |
+      | car1.LCU      | car2.LCU      | car8.CCU.sys1.TXC | 1,1,1,1,1,1,1,1 | car1.CCU.sys1 | car8.CCU.sys1 | TXC   |
+      | car1.LCU      | car2.LCU      | car8.CCU.sys2.TXC | 1,1,1,1,1,1,1,1 | car1.CCU.sys1 | car8.CCU.sys2 | TXC   |
+      | car1.LCU      | car2.LCU      | car1.LCU.RXC      | 1,1,1,1,1,1,1,1 | car1.CCU.sys1 | car1.LCU      | RXC   |
+      | car1.LCU      | car2.LCU      | car2.LCU.RXC      | 1,1,1,1,1,1,1,1 | car1.CCU.sys1 | car2.LCU      | RXC   |
+      | car1.LCU      | car2.LCU      | car3.LCU.RXC      | 1,1,1,1,1,1,1,1 | car1.CCU.sys1 | car3.LCU      | RXC   |
+      | car1.LCU      | car2.LCU      | car4.LCU.RXC      | 1,1,1,1,1,1,1,1 | car1.CCU.sys1 | car4.LCU      | RXC   |
+      | car1.LCU      | car2.LCU      | car5.LCU.RXC      | 1,1,1,1,1,1,1,1 | car1.CCU.sys1 | car5.LCU      | RXC   |
+      | car1.LCU      | car2.LCU      | car6.LCU.RXC      | 1,1,1,1,1,1,1,1 | car1.CCU.sys1 | car6.LCU      | RXC   |
+      | car1.LCU      | car2.LCU      | car7.LCU.RXC      | 1,1,1,1,1,1,1,1 | car1.CCU.sys1 | car7.LCU      | RXC   |
+      | car1.LCU      | car2.LCU      | car8.LCU.RXC      | 1,1,1,1,1,1,1,1 | car1.CCU.sys1 | car8.LCU      | RXC   |
+      | car2.LCU      | car3.LCU      | car1.CCU.sys1.TXC | 1,1,1,1,1,1,1,1 | car1.CCU.sys2 | car1.CCU.sys1 | TXC   |
+      | car2.LCU      | car3.LCU      | car1.CCU.sys2.TXC | 1,1,1,1,1,1,1,1 | car1.CCU.sys1 | car1.CCU.sys2 | TXC   |
+      | car2.LCU      | car3.LCU      | car8.CCU.sys1.TXC | 1,1,1,1,1,1,1,1 | car1.CCU.sys1 | car8.CCU.sys1 | TXC   |
+      | car2.LCU      | car3.LCU      | car8.CCU.sys2.TXC | 1,1,1,1,1,1,1,1 | car1.CCU.sys1 | car8.CCU.sys2 | TXC   |
+      | car2.LCU      | car3.LCU      | car1.LCU.RXC      | 1,1,1,1,1,1,1,1 | car1.CCU.sys1 | car1.LCU      | RXC   |
+      | car2.LCU      | car3.LCU      | car2.LCU.RXC      | 1,1,1,1,1,1,1,1 | car1.CCU.sys1 | car2.LCU      | RXC   |
+      | car2.LCU      | car3.LCU      | car3.LCU.RXC      | 1,1,1,1,1,1,1,1 | car1.CCU.sys1 | car3.LCU      | RXC   |
+      | car2.LCU      | car3.LCU      | car4.LCU.RXC      | 1,1,1,1,1,1,1,1 | car1.CCU.sys1 | car4.LCU      | RXC   |
+      | car2.LCU      | car3.LCU      | car5.LCU.RXC      | 1,1,1,1,1,1,1,1 | car1.CCU.sys1 | car5.LCU      | RXC   |
+      | car2.LCU      | car3.LCU      | car6.LCU.RXC      | 1,1,1,1,1,1,1,1 | car1.CCU.sys1 | car6.LCU      | RXC   |
+      | car2.LCU      | car3.LCU      | car7.LCU.RXC      | 1,1,1,1,1,1,1,1 | car1.CCU.sys1 | car7.LCU      | RXC   |
+      | car2.LCU      | car3.LCU      | car8.LCU.RXC      | 1,1,1,1,1,1,1,1 | car1.CCU.sys1 | car8.LCU      | RXC   |
+      | car3.LCU      | car4.LCU      | car1.CCU.sys1.TXC | 1,1,1,1,1,1,1,1 | car1.CCU.sys2 | car1.CCU.sys1 | TXC   |
+      | car3.LCU      | car4.LCU      | car1.CCU.sys2.TXC | 1,1,1,1,1,1,1,1 | car1.CCU.sys1 | car1.CCU.sys2 | TXC   |
+      | car3.LCU      | car4.LCU      | car8.CCU.sys1.TXC | 1,1,1,1,1,1,1,1 | car1.CCU.sys1 | car8.CCU.sys1 | TXC   |
+      | car3.LCU      | car4.LCU      | car8.CCU.sys2.TXC | 1,1,1,1,1,1,1,1 | car1.CCU.sys1 | car8.CCU.sys2 | TXC   |
+      | car3.LCU      | car4.LCU      | car1.LCU.RXC      | 1,1,1,1,1,1,1,1 | car1.CCU.sys1 | car1.LCU      | RXC   |
+      | car3.LCU      | car4.LCU      | car2.LCU.RXC      | 1,1,1,1,1,1,1,1 | car1.CCU.sys1 | car2.LCU      | RXC   |
+      | car3.LCU      | car4.LCU      | car3.LCU.RXC      | 1,1,1,1,1,1,1,1 | car1.CCU.sys1 | car3.LCU      | RXC   |
+      | car3.LCU      | car4.LCU      | car4.LCU.RXC      | 1,1,1,1,1,1,1,1 | car1.CCU.sys1 | car4.LCU      | RXC   |
+      | car3.LCU      | car4.LCU      | car5.LCU.RXC      | 1,1,1,1,1,1,1,1 | car1.CCU.sys1 | car5.LCU      | RXC   |
+      | car3.LCU      | car4.LCU      | car6.LCU.RXC      | 1,1,1,1,1,1,1,1 | car1.CCU.sys1 | car6.LCU      | RXC   |
+      | car3.LCU      | car4.LCU      | car7.LCU.RXC      | 1,1,1,1,1,1,1,1 | car1.CCU.sys1 | car7.LCU      | RXC   |
+      | car3.LCU      | car4.LCU      | car8.LCU.RXC      | 1,1,1,1,1,1,1,1 | car1.CCU.sys1 | car8.LCU      | RXC   |
+      | car4.LCU      | car5.LCU      | car1.CCU.sys1.TXC | 1,1,1,1,1,1,1,1 | car1.CCU.sys2 | car1.CCU.sys1 | TXC   |
+      | car4.LCU      | car5.LCU      | car1.CCU.sys2.TXC | 1,1,1,1,1,1,1,1 | car1.CCU.sys1 | car1.CCU.sys2 | TXC   |
+      | car4.LCU      | car5.LCU      | car8.CCU.sys1.TXC | 1,1,1,1,1,1,1,1 | car1.CCU.sys1 | car8.CCU.sys1 | TXC   |
+      | car4.LCU      | car5.LCU      | car8.CCU.sys2.TXC | 1,1,1,1,1,1,1,1 | car1.CCU.sys1 | car8.CCU.sys2 | TXC   |
+      | car4.LCU      | car5.LCU      | car1.LCU.RXC      | 1,1,1,1,1,1,1,1 | car1.CCU.sys1 | car1.LCU      | RXC   |
+      | car4.LCU      | car5.LCU      | car2.LCU.RXC      | 1,1,1,1,1,1,1,1 | car1.CCU.sys1 | car2.LCU      | RXC   |
+      | car4.LCU      | car5.LCU      | car3.LCU.RXC      | 1,1,1,1,1,1,1,1 | car1.CCU.sys1 | car3.LCU      | RXC   |
+      | car4.LCU      | car5.LCU      | car4.LCU.RXC      | 1,1,1,1,1,1,1,1 | car1.CCU.sys1 | car4.LCU      | RXC   |
+      | car4.LCU      | car5.LCU      | car5.LCU.RXC      | 1,1,1,1,1,1,1,1 | car1.CCU.sys1 | car5.LCU      | RXC   |
+      | car4.LCU      | car5.LCU      | car6.LCU.RXC      | 1,1,1,1,1,1,1,1 | car1.CCU.sys1 | car6.LCU      | RXC   |
+      | car4.LCU      | car5.LCU      | car7.LCU.RXC      | 1,1,1,1,1,1,1,1 | car1.CCU.sys1 | car7.LCU      | RXC   |
+      | car4.LCU      | car5.LCU      | car8.LCU.RXC      | 1,1,1,1,1,1,1,1 | car1.CCU.sys1 | car8.LCU      | RXC   |
+      | car5.LCU      | car6.LCU      | car1.CCU.sys1.TXC | 1,1,1,1,1,1,1,1 | car1.CCU.sys2 | car1.CCU.sys1 | TXC   |
+      | car5.LCU      | car6.LCU      | car1.CCU.sys2.TXC | 1,1,1,1,1,1,1,1 | car1.CCU.sys1 | car1.CCU.sys2 | TXC   |
+      | car5.LCU      | car6.LCU      | car8.CCU.sys1.TXC | 1,1,1,1,1,1,1,1 | car1.CCU.sys1 | car8.CCU.sys1 | TXC   |
+      | car5.LCU      | car6.LCU      | car8.CCU.sys2.TXC | 1,1,1,1,1,1,1,1 | car1.CCU.sys1 | car8.CCU.sys2 | TXC   |
+      | car5.LCU      | car6.LCU      | car1.LCU.RXC      | 1,1,1,1,1,1,1,1 | car1.CCU.sys1 | car1.LCU      | RXC   |
+      | car5.LCU      | car6.LCU      | car2.LCU.RXC      | 1,1,1,1,1,1,1,1 | car1.CCU.sys1 | car2.LCU      | RXC   |
+      | car5.LCU      | car6.LCU      | car3.LCU.RXC      | 1,1,1,1,1,1,1,1 | car1.CCU.sys1 | car3.LCU      | RXC   |
+      | car5.LCU      | car6.LCU      | car4.LCU.RXC      | 1,1,1,1,1,1,1,1 | car1.CCU.sys1 | car4.LCU      | RXC   |
+      | car5.LCU      | car6.LCU      | car5.LCU.RXC      | 1,1,1,1,1,1,1,1 | car1.CCU.sys1 | car5.LCU      | RXC   |
+      | car5.LCU      | car6.LCU      | car6.LCU.RXC      | 1,1,1,1,1,1,1,1 | car1.CCU.sys1 | car6.LCU      | RXC   |
+      | car5.LCU      | car6.LCU      | car7.LCU.RXC      | 1,1,1,1,1,1,1,1 | car1.CCU.sys1 | car7.LCU      | RXC   |
+      | car5.LCU      | car6.LCU      | car8.LCU.RXC      | 1,1,1,1,1,1,1,1 | car1.CCU.sys1 | car8.LCU      | RXC   |
+      | car6.LCU      | car7.LCU      | car1.CCU.sys1.TXC | 1,1,1,1,1,1,1,1 | car1.CCU.sys2 | car1.CCU.sys1 | TXC   |
+      | car6.LCU      | car7.LCU      | car1.CCU.sys2.TXC | 1,1,1,1,1,1,1,1 | car1.CCU.sys1 | car1.CCU.sys2 | TXC   |
+      | car6.LCU      | car7.LCU      | car8.CCU.sys1.TXC | 1,1,1,1,1,1,1,1 | car1.CCU.sys1 | car8.CCU.sys1 | TXC   |
+      | car6.LCU      | car7.LCU      | car8.CCU.sys2.TXC | 1,1,1,1,1,1,1,1 | car1.CCU.sys1 | car8.CCU.sys2 | TXC   |
+      | car6.LCU      | car7.LCU      | car1.LCU.RXC      | 1,1,1,1,1,1,1,1 | car1.CCU.sys1 | car1.LCU      | RXC   |
+      | car6.LCU      | car7.LCU      | car2.LCU.RXC      | 1,1,1,1,1,1,1,1 | car1.CCU.sys1 | car2.LCU      | RXC   |
+      | car6.LCU      | car7.LCU      | car3.LCU.RXC      | 1,1,1,1,1,1,1,1 | car1.CCU.sys1 | car3.LCU      | RXC   |
+      | car6.LCU      | car7.LCU      | car4.LCU.RXC      | 1,1,1,1,1,1,1,1 | car1.CCU.sys1 | car4.LCU      | RXC   |
+      | car6.LCU      | car7.LCU      | car5.LCU.RXC      | 1,1,1,1,1,1,1,1 | car1.CCU.sys1 | car5.LCU      | RXC   |
+      | car6.LCU      | car7.LCU      | car6.LCU.RXC      | 1,1,1,1,1,1,1,1 | car1.CCU.sys1 | car6.LCU      | RXC   |
+      | car6.LCU      | car7.LCU      | car7.LCU.RXC      | 1,1,1,1,1,1,1,1 | car1.CCU.sys1 | car7.LCU      | RXC   |
+      | car6.LCU      | car7.LCU      | car8.LCU.RXC      | 1,1,1,1,1,1,1,1 | car1.CCU.sys1 | car8.LCU      | RXC   |
+      | car7.LCU      | car8.LCU      | car1.CCU.sys1.TXC | 1,1,1,1,1,1,1,1 | car1.CCU.sys2 | car1.CCU.sys1 | TXC   |
+      | car7.LCU      | car8.LCU      | car1.CCU.sys2.TXC | 1,1,1,1,1,1,1,1 | car1.CCU.sys1 | car1.CCU.sys2 | TXC   |
+      | car7.LCU      | car8.LCU      | car8.CCU.sys1.TXC | 1,1,1,1,1,1,1,1 | car1.CCU.sys1 | car8.CCU.sys1 | TXC   |
+      | car7.LCU      | car8.LCU      | car8.CCU.sys2.TXC | 1,1,1,1,1,1,1,1 | car1.CCU.sys1 | car8.CCU.sys2 | TXC   |
+      | car7.LCU      | car8.LCU      | car1.LCU.RXC      | 1,1,1,1,1,1,1,1 | car1.CCU.sys1 | car1.LCU      | RXC   |
+      | car7.LCU      | car8.LCU      | car2.LCU.RXC      | 1,1,1,1,1,1,1,1 | car1.CCU.sys1 | car2.LCU      | RXC   |
+      | car7.LCU      | car8.LCU      | car3.LCU.RXC      | 1,1,1,1,1,1,1,1 | car1.CCU.sys1 | car3.LCU      | RXC   |
+      | car7.LCU      | car8.LCU      | car4.LCU.RXC      | 1,1,1,1,1,1,1,1 | car1.CCU.sys1 | car4.LCU      | RXC   |
+      | car7.LCU      | car8.LCU      | car5.LCU.RXC      | 1,1,1,1,1,1,1,1 | car1.CCU.sys1 | car5.LCU      | RXC   |
+      | car7.LCU      | car8.LCU      | car6.LCU.RXC      | 1,1,1,1,1,1,1,1 | car1.CCU.sys1 | car6.LCU      | RXC   |
+      | car7.LCU      | car8.LCU      | car7.LCU.RXC      | 1,1,1,1,1,1,1,1 | car1.CCU.sys1 | car7.LCU      | RXC   |
+      | car7.LCU      | car8.LCU      | car8.LCU.RXC      | 1,1,1,1,1,1,1,1 | car1.CCU.sys1 | car8.LCU      | RXC   |
+      | car8.LCU      | car8.CCU.sys2 | car1.CCU.sys1.TXC | 1,1,1,1,1,1,1,1 | car1.CCU.sys2 | car1.CCU.sys1 | TXC   |
+      | car8.LCU      | car8.CCU.sys2 | car1.CCU.sys2.TXC | 1,1,1,1,1,1,1,1 | car1.CCU.sys1 | car1.CCU.sys2 | TXC   |
+      | car8.LCU      | car8.CCU.sys2 | car8.CCU.sys1.TXC | 1,1,1,1,1,1,1,1 | car1.CCU.sys1 | car8.CCU.sys1 | TXC   |
+      | car8.LCU      | car8.CCU.sys2 | car8.CCU.sys2.TXC | 1,1,1,1,1,1,1,1 | car1.CCU.sys1 | car8.CCU.sys2 | TXC   |
+      | car8.LCU      | car8.CCU.sys2 | car1.LCU.RXC      | 1,1,1,1,1,1,1,1 | car1.CCU.sys1 | car1.LCU      | RXC   |
+      | car8.LCU      | car8.CCU.sys2 | car2.LCU.RXC      | 1,1,1,1,1,1,1,1 | car1.CCU.sys1 | car2.LCU      | RXC   |
+      | car8.LCU      | car8.CCU.sys2 | car3.LCU.RXC      | 1,1,1,1,1,1,1,1 | car1.CCU.sys1 | car3.LCU      | RXC   |
+      | car8.LCU      | car8.CCU.sys2 | car4.LCU.RXC      | 1,1,1,1,1,1,1,1 | car1.CCU.sys1 | car4.LCU      | RXC   |
+      | car8.LCU      | car8.CCU.sys2 | car5.LCU.RXC      | 1,1,1,1,1,1,1,1 | car1.CCU.sys1 | car5.LCU      | RXC   |
+      | car8.LCU      | car8.CCU.sys2 | car6.LCU.RXC      | 1,1,1,1,1,1,1,1 | car1.CCU.sys1 | car6.LCU      | RXC   |
+      | car8.LCU      | car8.CCU.sys2 | car7.LCU.RXC      | 1,1,1,1,1,1,1,1 | car1.CCU.sys1 | car7.LCU      | RXC   |
+      | car8.LCU      | car8.CCU.sys2 | car8.LCU.RXC      | 1,1,1,1,1,1,1,1 | car1.CCU.sys1 | car8.LCU      | RXC   |
+      | car8.CCU.sys2 | car8.CCU.sys1 | car1.CCU.sys1.TXC | 1,1,1,1,1,1,1,1 | car1.CCU.sys2 | car1.CCU.sys1 | TXC   |
+      | car8.CCU.sys2 | car8.CCU.sys1 | car1.CCU.sys2.TXC | 1,1,1,1,1,1,1,1 | car1.CCU.sys1 | car1.CCU.sys2 | TXC   |
+      | car8.CCU.sys2 | car8.CCU.sys1 | car8.CCU.sys1.TXC | 1,1,1,1,1,1,1,1 | car1.CCU.sys1 | car8.CCU.sys1 | TXC   |
+      | car8.CCU.sys2 | car8.CCU.sys1 | car8.CCU.sys2.TXC | 1,1,1,1,1,1,1,1 | car1.CCU.sys1 | car8.CCU.sys2 | TXC   |
+      | car8.CCU.sys2 | car8.CCU.sys1 | car1.LCU.RXC      | 1,1,1,1,1,1,1,1 | car1.CCU.sys1 | car1.LCU      | RXC   |
+      | car8.CCU.sys2 | car8.CCU.sys1 | car2.LCU.RXC      | 1,1,1,1,1,1,1,1 | car1.CCU.sys1 | car2.LCU      | RXC   |
+      | car8.CCU.sys2 | car8.CCU.sys1 | car3.LCU.RXC      | 1,1,1,1,1,1,1,1 | car1.CCU.sys1 | car3.LCU      | RXC   |
+      | car8.CCU.sys2 | car8.CCU.sys1 | car4.LCU.RXC      | 1,1,1,1,1,1,1,1 | car1.CCU.sys1 | car4.LCU      | RXC   |
+      | car8.CCU.sys2 | car8.CCU.sys1 | car5.LCU.RXC      | 1,1,1,1,1,1,1,1 | car1.CCU.sys1 | car5.LCU      | RXC   |
+      | car8.CCU.sys2 | car8.CCU.sys1 | car6.LCU.RXC      | 1,1,1,1,1,1,1,1 | car1.CCU.sys1 | car6.LCU      | RXC   |
+      | car8.CCU.sys2 | car8.CCU.sys1 | car7.LCU.RXC      | 1,1,1,1,1,1,1,1 | car1.CCU.sys1 | car7.LCU      | RXC   |
+      | car8.CCU.sys2 | car8.CCU.sys1 | car8.LCU.RXC      | 1,1,1,1,1,1,1,1 | car1.CCU.sys1 | car8.LCU      | RXC   |
+      | car8.CCU.sys1 | car1.CCU.sys1 | car1.CCU.sys1.TXC | 1,1,1,1,1,1,1,1 | car1.CCU.sys2 | car1.CCU.sys1 | TXC   |
+      | car8.CCU.sys1 | car1.CCU.sys1 | car1.CCU.sys2.TXC | 1,1,1,1,1,1,1,1 | car1.CCU.sys1 | car1.CCU.sys2 | TXC   |
+      | car8.CCU.sys1 | car1.CCU.sys1 | car8.CCU.sys1.TXC | 1,1,1,1,1,1,1,1 | car1.CCU.sys1 | car8.CCU.sys1 | TXC   |
+      | car8.CCU.sys1 | car1.CCU.sys1 | car8.CCU.sys2.TXC | 1,1,1,1,1,1,1,1 | car1.CCU.sys1 | car8.CCU.sys2 | TXC   |
+      | car8.CCU.sys1 | car1.CCU.sys1 | car1.LCU.RXC      | 1,1,1,1,1,1,1,1 | car1.CCU.sys1 | car1.LCU      | RXC   |
+      | car8.CCU.sys1 | car1.CCU.sys1 | car2.LCU.RXC      | 1,1,1,1,1,1,1,1 | car1.CCU.sys1 | car2.LCU      | RXC   |
+      | car8.CCU.sys1 | car1.CCU.sys1 | car3.LCU.RXC      | 1,1,1,1,1,1,1,1 | car1.CCU.sys1 | car3.LCU      | RXC   |
+      | car8.CCU.sys1 | car1.CCU.sys1 | car4.LCU.RXC      | 1,1,1,1,1,1,1,1 | car1.CCU.sys1 | car4.LCU      | RXC   |
+      | car8.CCU.sys1 | car1.CCU.sys1 | car5.LCU.RXC      | 1,1,1,1,1,1,1,1 | car1.CCU.sys1 | car5.LCU      | RXC   |
+      | car8.CCU.sys1 | car1.CCU.sys1 | car6.LCU.RXC      | 1,1,1,1,1,1,1,1 | car1.CCU.sys1 | car6.LCU      | RXC   |
+      | car8.CCU.sys1 | car1.CCU.sys1 | car7.LCU.RXC      | 1,1,1,1,1,1,1,1 | car1.CCU.sys1 | car7.LCU      | RXC   |
+      | car8.CCU.sys1 | car1.CCU.sys1 | car8.LCU.RXC      | 1,1,1,1,1,1,1,1 | car1.CCU.sys1 | car8.LCU      | RXC   |
 
   @req:NET-03 @req:CMD-01 @req:CMD-02 @req:CMD-03 @req:CMD-04 @req:RED-01 @req:RED-02
   Scenario Outline: F-NET-32 Board <board1> failed and board <board2> failed: each car by the path left to it
@@ -1002,900 +1039,291 @@ Feature: F-NET-32 Double-fault campaign, 8-car set
       | car1.CCU.sys1.MDM8 | car1.CCU.sys2.TXC  | 3,3,3,3,3,3,3,3 |
       | car1.CCU.sys1.MDM8 | car1.LCU.CPU3      | 1,1,1,1,1,1,1,1 |
       | car1.CCU.sys1.MDM8 | car1.LCU.MDM8      | 3,3,3,3,3,3,3,3 |
-      | car1.CCU.sys1.MDM8 | car1.LCU.MDM9      | 2,1,1,1,1,1,1,1 |
-      | car1.CCU.sys1.MDM8 | car1.LCU.RXC       | 1,1,1,1,1,1,1,1 |
       | car1.CCU.sys1.MDM8 | car2.LCU.CPU3      | 1,1,1,1,1,1,1,1 |
       | car1.CCU.sys1.MDM8 | car2.LCU.MDM8      | 1,3,3,3,3,3,3,3 |
-      | car1.CCU.sys1.MDM8 | car2.LCU.MDM9      | 1,2,1,1,1,1,1,1 |
-      | car1.CCU.sys1.MDM8 | car2.LCU.RXC       | 1,1,1,1,1,1,1,1 |
       | car1.CCU.sys1.MDM8 | car3.LCU.CPU3      | 1,1,1,1,1,1,1,1 |
       | car1.CCU.sys1.MDM8 | car3.LCU.MDM8      | 1,1,3,3,3,3,3,3 |
-      | car1.CCU.sys1.MDM8 | car3.LCU.MDM9      | 1,1,2,1,1,1,1,1 |
-      | car1.CCU.sys1.MDM8 | car3.LCU.RXC       | 1,1,1,1,1,1,1,1 |
       | car1.CCU.sys1.MDM8 | car4.LCU.CPU3      | 1,1,1,1,1,1,1,1 |
       | car1.CCU.sys1.MDM8 | car4.LCU.MDM8      | 1,1,1,3,3,3,3,3 |
-      | car1.CCU.sys1.MDM8 | car4.LCU.MDM9      | 1,1,1,2,1,1,1,1 |
-      | car1.CCU.sys1.MDM8 | car4.LCU.RXC       | 1,1,1,1,1,1,1,1 |
       | car1.CCU.sys1.MDM8 | car5.LCU.CPU3      | 1,1,1,1,1,1,1,1 |
       | car1.CCU.sys1.MDM8 | car5.LCU.MDM8      | 1,1,1,1,3,3,3,3 |
-      | car1.CCU.sys1.MDM8 | car5.LCU.MDM9      | 1,1,1,1,2,1,1,1 |
-      | car1.CCU.sys1.MDM8 | car5.LCU.RXC       | 1,1,1,1,1,1,1,1 |
       | car1.CCU.sys1.MDM8 | car6.LCU.CPU3      | 1,1,1,1,1,1,1,1 |
       | car1.CCU.sys1.MDM8 | car6.LCU.MDM8      | 1,1,1,1,1,3,3,3 |
-      | car1.CCU.sys1.MDM8 | car6.LCU.MDM9      | 1,1,1,1,1,2,1,1 |
-      | car1.CCU.sys1.MDM8 | car6.LCU.RXC       | 1,1,1,1,1,1,1,1 |
       | car1.CCU.sys1.MDM8 | car7.LCU.CPU3      | 1,1,1,1,1,1,1,1 |
       | car1.CCU.sys1.MDM8 | car7.LCU.MDM8      | 1,1,1,1,1,1,3,3 |
-      | car1.CCU.sys1.MDM8 | car7.LCU.MDM9      | 1,1,1,1,1,1,2,1 |
-      | car1.CCU.sys1.MDM8 | car7.LCU.RXC       | 1,1,1,1,1,1,1,1 |
       | car1.CCU.sys1.MDM8 | car8.LCU.CPU3      | 1,1,1,1,1,1,1,1 |
       | car1.CCU.sys1.MDM8 | car8.LCU.MDM8      | 1,1,1,1,1,1,1,3 |
-      | car1.CCU.sys1.MDM8 | car8.LCU.MDM9      | 1,1,1,1,1,1,1,2 |
-      | car1.CCU.sys1.MDM8 | car8.LCU.RXC       | 1,1,1,1,1,1,1,1 |
       | car1.CCU.sys1.MDM8 | car8.CCU.sys2.CPU3 | 1,1,1,1,1,1,1,1 |
       | car1.CCU.sys1.MDM8 | car8.CCU.sys2.MDM8 | 1,1,1,1,1,1,1,1 |
-      | car1.CCU.sys1.MDM8 | car8.CCU.sys2.TXC  | 1,1,1,1,1,1,1,1 |
       | car1.CCU.sys1.MDM8 | car8.CCU.sys1.CPU3 | 1,1,1,1,1,1,1,1 |
       | car1.CCU.sys1.MDM8 | car8.CCU.sys1.MDM8 | 1,1,1,1,1,1,1,1 |
-      | car1.CCU.sys1.MDM8 | car8.CCU.sys1.TXC  | 1,1,1,1,1,1,1,1 |
       | car1.CCU.sys1.TXC  | car1.CCU.sys2.CPU3 | 1,1,1,1,1,1,1,1 |
-      | car1.CCU.sys1.TXC  | car1.CCU.sys2.MDM8 | -,-,-,-,-,-,-,- |
-      | car1.CCU.sys1.TXC  | car1.CCU.sys2.TXC  | -,-,-,-,-,-,-,- |
-      | car1.CCU.sys1.TXC  | car1.LCU.CPU3      | 1,1,1,1,1,1,1,1 |
-      | car1.CCU.sys1.TXC  | car1.LCU.MDM8      | 3,1,1,1,1,1,1,1 |
-      | car1.CCU.sys1.TXC  | car1.LCU.MDM9      | 2,1,1,1,1,1,1,1 |
-      | car1.CCU.sys1.TXC  | car1.LCU.RXC       | 1,1,1,1,1,1,1,1 |
-      | car1.CCU.sys1.TXC  | car2.LCU.CPU3      | 1,1,1,1,1,1,1,1 |
-      | car1.CCU.sys1.TXC  | car2.LCU.MDM8      | 1,3,1,1,1,1,1,1 |
-      | car1.CCU.sys1.TXC  | car2.LCU.MDM9      | 1,2,1,1,1,1,1,1 |
-      | car1.CCU.sys1.TXC  | car2.LCU.RXC       | 1,1,1,1,1,1,1,1 |
-      | car1.CCU.sys1.TXC  | car3.LCU.CPU3      | 1,1,1,1,1,1,1,1 |
-      | car1.CCU.sys1.TXC  | car3.LCU.MDM8      | 1,1,3,1,1,1,1,1 |
-      | car1.CCU.sys1.TXC  | car3.LCU.MDM9      | 1,1,2,1,1,1,1,1 |
-      | car1.CCU.sys1.TXC  | car3.LCU.RXC       | 1,1,1,1,1,1,1,1 |
-      | car1.CCU.sys1.TXC  | car4.LCU.CPU3      | 1,1,1,1,1,1,1,1 |
-      | car1.CCU.sys1.TXC  | car4.LCU.MDM8      | 1,1,1,3,1,1,1,1 |
-      | car1.CCU.sys1.TXC  | car4.LCU.MDM9      | 1,1,1,2,1,1,1,1 |
-      | car1.CCU.sys1.TXC  | car4.LCU.RXC       | 1,1,1,1,1,1,1,1 |
-      | car1.CCU.sys1.TXC  | car5.LCU.CPU3      | 1,1,1,1,1,1,1,1 |
-      | car1.CCU.sys1.TXC  | car5.LCU.MDM8      | 1,1,1,1,3,1,1,1 |
-      | car1.CCU.sys1.TXC  | car5.LCU.MDM9      | 1,1,1,1,2,1,1,1 |
-      | car1.CCU.sys1.TXC  | car5.LCU.RXC       | 1,1,1,1,1,1,1,1 |
-      | car1.CCU.sys1.TXC  | car6.LCU.CPU3      | 1,1,1,1,1,1,1,1 |
-      | car1.CCU.sys1.TXC  | car6.LCU.MDM8      | 1,1,1,1,1,3,1,1 |
-      | car1.CCU.sys1.TXC  | car6.LCU.MDM9      | 1,1,1,1,1,2,1,1 |
-      | car1.CCU.sys1.TXC  | car6.LCU.RXC       | 1,1,1,1,1,1,1,1 |
-      | car1.CCU.sys1.TXC  | car7.LCU.CPU3      | 1,1,1,1,1,1,1,1 |
-      | car1.CCU.sys1.TXC  | car7.LCU.MDM8      | 1,1,1,1,1,1,3,1 |
-      | car1.CCU.sys1.TXC  | car7.LCU.MDM9      | 1,1,1,1,1,1,2,1 |
-      | car1.CCU.sys1.TXC  | car7.LCU.RXC       | 1,1,1,1,1,1,1,1 |
-      | car1.CCU.sys1.TXC  | car8.LCU.CPU3      | 1,1,1,1,1,1,1,1 |
-      | car1.CCU.sys1.TXC  | car8.LCU.MDM8      | 1,1,1,1,1,1,1,3 |
-      | car1.CCU.sys1.TXC  | car8.LCU.MDM9      | 1,1,1,1,1,1,1,2 |
-      | car1.CCU.sys1.TXC  | car8.LCU.RXC       | 1,1,1,1,1,1,1,1 |
-      | car1.CCU.sys1.TXC  | car8.CCU.sys2.CPU3 | 1,1,1,1,1,1,1,1 |
-      | car1.CCU.sys1.TXC  | car8.CCU.sys2.MDM8 | 1,1,1,1,1,1,1,1 |
-      | car1.CCU.sys1.TXC  | car8.CCU.sys2.TXC  | 1,1,1,1,1,1,1,1 |
-      | car1.CCU.sys1.TXC  | car8.CCU.sys1.CPU3 | 1,1,1,1,1,1,1,1 |
-      | car1.CCU.sys1.TXC  | car8.CCU.sys1.MDM8 | 1,1,1,1,1,1,1,1 |
-      | car1.CCU.sys1.TXC  | car8.CCU.sys1.TXC  | 1,1,1,1,1,1,1,1 |
       | car1.CCU.sys2.CPU3 | car1.CCU.sys2.MDM8 | 1,1,1,1,1,1,1,1 |
       | car1.CCU.sys2.CPU3 | car1.CCU.sys2.TXC  | 1,1,1,1,1,1,1,1 |
       | car1.CCU.sys2.CPU3 | car1.LCU.CPU3      | 1,1,1,1,1,1,1,1 |
       | car1.CCU.sys2.CPU3 | car1.LCU.MDM8      | 3,1,1,1,1,1,1,1 |
-      | car1.CCU.sys2.CPU3 | car1.LCU.MDM9      | 2,1,1,1,1,1,1,1 |
-      | car1.CCU.sys2.CPU3 | car1.LCU.RXC       | 1,1,1,1,1,1,1,1 |
       | car1.CCU.sys2.CPU3 | car2.LCU.CPU3      | 1,1,1,1,1,1,1,1 |
       | car1.CCU.sys2.CPU3 | car2.LCU.MDM8      | 1,3,1,1,1,1,1,1 |
-      | car1.CCU.sys2.CPU3 | car2.LCU.MDM9      | 1,2,1,1,1,1,1,1 |
-      | car1.CCU.sys2.CPU3 | car2.LCU.RXC       | 1,1,1,1,1,1,1,1 |
       | car1.CCU.sys2.CPU3 | car3.LCU.CPU3      | 1,1,1,1,1,1,1,1 |
       | car1.CCU.sys2.CPU3 | car3.LCU.MDM8      | 1,1,3,1,1,1,1,1 |
-      | car1.CCU.sys2.CPU3 | car3.LCU.MDM9      | 1,1,2,1,1,1,1,1 |
-      | car1.CCU.sys2.CPU3 | car3.LCU.RXC       | 1,1,1,1,1,1,1,1 |
       | car1.CCU.sys2.CPU3 | car4.LCU.CPU3      | 1,1,1,1,1,1,1,1 |
       | car1.CCU.sys2.CPU3 | car4.LCU.MDM8      | 1,1,1,3,1,1,1,1 |
-      | car1.CCU.sys2.CPU3 | car4.LCU.MDM9      | 1,1,1,2,1,1,1,1 |
-      | car1.CCU.sys2.CPU3 | car4.LCU.RXC       | 1,1,1,1,1,1,1,1 |
       | car1.CCU.sys2.CPU3 | car5.LCU.CPU3      | 1,1,1,1,1,1,1,1 |
       | car1.CCU.sys2.CPU3 | car5.LCU.MDM8      | 1,1,1,1,3,1,1,1 |
-      | car1.CCU.sys2.CPU3 | car5.LCU.MDM9      | 1,1,1,1,2,1,1,1 |
-      | car1.CCU.sys2.CPU3 | car5.LCU.RXC       | 1,1,1,1,1,1,1,1 |
       | car1.CCU.sys2.CPU3 | car6.LCU.CPU3      | 1,1,1,1,1,1,1,1 |
       | car1.CCU.sys2.CPU3 | car6.LCU.MDM8      | 1,1,1,1,1,3,1,1 |
-      | car1.CCU.sys2.CPU3 | car6.LCU.MDM9      | 1,1,1,1,1,2,1,1 |
-      | car1.CCU.sys2.CPU3 | car6.LCU.RXC       | 1,1,1,1,1,1,1,1 |
       | car1.CCU.sys2.CPU3 | car7.LCU.CPU3      | 1,1,1,1,1,1,1,1 |
       | car1.CCU.sys2.CPU3 | car7.LCU.MDM8      | 1,1,1,1,1,1,3,1 |
-      | car1.CCU.sys2.CPU3 | car7.LCU.MDM9      | 1,1,1,1,1,1,2,1 |
-      | car1.CCU.sys2.CPU3 | car7.LCU.RXC       | 1,1,1,1,1,1,1,1 |
       | car1.CCU.sys2.CPU3 | car8.LCU.CPU3      | 1,1,1,1,1,1,1,1 |
       | car1.CCU.sys2.CPU3 | car8.LCU.MDM8      | 1,1,1,1,1,1,1,3 |
-      | car1.CCU.sys2.CPU3 | car8.LCU.MDM9      | 1,1,1,1,1,1,1,2 |
-      | car1.CCU.sys2.CPU3 | car8.LCU.RXC       | 1,1,1,1,1,1,1,1 |
       | car1.CCU.sys2.CPU3 | car8.CCU.sys2.CPU3 | 1,1,1,1,1,1,1,1 |
       | car1.CCU.sys2.CPU3 | car8.CCU.sys2.MDM8 | 1,1,1,1,1,1,1,1 |
-      | car1.CCU.sys2.CPU3 | car8.CCU.sys2.TXC  | 1,1,1,1,1,1,1,1 |
       | car1.CCU.sys2.CPU3 | car8.CCU.sys1.CPU3 | 1,1,1,1,1,1,1,1 |
       | car1.CCU.sys2.CPU3 | car8.CCU.sys1.MDM8 | 1,1,1,1,1,1,1,1 |
-      | car1.CCU.sys2.CPU3 | car8.CCU.sys1.TXC  | 1,1,1,1,1,1,1,1 |
       | car1.CCU.sys2.MDM8 | car1.CCU.sys2.TXC  | 1,1,1,1,1,1,1,1 |
       | car1.CCU.sys2.MDM8 | car1.LCU.CPU3      | 1,1,1,1,1,1,1,1 |
       | car1.CCU.sys2.MDM8 | car1.LCU.MDM8      | 3,1,1,1,1,1,1,1 |
-      | car1.CCU.sys2.MDM8 | car1.LCU.MDM9      | 2,1,1,1,1,1,1,1 |
-      | car1.CCU.sys2.MDM8 | car1.LCU.RXC       | 1,1,1,1,1,1,1,1 |
       | car1.CCU.sys2.MDM8 | car2.LCU.CPU3      | 1,1,1,1,1,1,1,1 |
       | car1.CCU.sys2.MDM8 | car2.LCU.MDM8      | 3,3,1,1,1,1,1,1 |
-      | car1.CCU.sys2.MDM8 | car2.LCU.MDM9      | 1,2,1,1,1,1,1,1 |
-      | car1.CCU.sys2.MDM8 | car2.LCU.RXC       | 1,1,1,1,1,1,1,1 |
       | car1.CCU.sys2.MDM8 | car3.LCU.CPU3      | 1,1,1,1,1,1,1,1 |
       | car1.CCU.sys2.MDM8 | car3.LCU.MDM8      | 3,3,3,1,1,1,1,1 |
-      | car1.CCU.sys2.MDM8 | car3.LCU.MDM9      | 1,1,2,1,1,1,1,1 |
-      | car1.CCU.sys2.MDM8 | car3.LCU.RXC       | 1,1,1,1,1,1,1,1 |
       | car1.CCU.sys2.MDM8 | car4.LCU.CPU3      | 1,1,1,1,1,1,1,1 |
       | car1.CCU.sys2.MDM8 | car4.LCU.MDM8      | 3,3,3,3,1,1,1,1 |
-      | car1.CCU.sys2.MDM8 | car4.LCU.MDM9      | 1,1,1,2,1,1,1,1 |
-      | car1.CCU.sys2.MDM8 | car4.LCU.RXC       | 1,1,1,1,1,1,1,1 |
       | car1.CCU.sys2.MDM8 | car5.LCU.CPU3      | 1,1,1,1,1,1,1,1 |
       | car1.CCU.sys2.MDM8 | car5.LCU.MDM8      | 3,3,3,3,3,1,1,1 |
-      | car1.CCU.sys2.MDM8 | car5.LCU.MDM9      | 1,1,1,1,2,1,1,1 |
-      | car1.CCU.sys2.MDM8 | car5.LCU.RXC       | 1,1,1,1,1,1,1,1 |
       | car1.CCU.sys2.MDM8 | car6.LCU.CPU3      | 1,1,1,1,1,1,1,1 |
       | car1.CCU.sys2.MDM8 | car6.LCU.MDM8      | 3,3,3,3,3,3,1,1 |
-      | car1.CCU.sys2.MDM8 | car6.LCU.MDM9      | 1,1,1,1,1,2,1,1 |
-      | car1.CCU.sys2.MDM8 | car6.LCU.RXC       | 1,1,1,1,1,1,1,1 |
       | car1.CCU.sys2.MDM8 | car7.LCU.CPU3      | 1,1,1,1,1,1,1,1 |
       | car1.CCU.sys2.MDM8 | car7.LCU.MDM8      | 3,3,3,3,3,3,3,1 |
-      | car1.CCU.sys2.MDM8 | car7.LCU.MDM9      | 1,1,1,1,1,1,2,1 |
-      | car1.CCU.sys2.MDM8 | car7.LCU.RXC       | 1,1,1,1,1,1,1,1 |
       | car1.CCU.sys2.MDM8 | car8.LCU.CPU3      | 1,1,1,1,1,1,1,1 |
       | car1.CCU.sys2.MDM8 | car8.LCU.MDM8      | 3,3,3,3,3,3,3,3 |
-      | car1.CCU.sys2.MDM8 | car8.LCU.MDM9      | 1,1,1,1,1,1,1,2 |
-      | car1.CCU.sys2.MDM8 | car8.LCU.RXC       | 1,1,1,1,1,1,1,1 |
       | car1.CCU.sys2.MDM8 | car8.CCU.sys2.CPU3 | 1,1,1,1,1,1,1,1 |
       | car1.CCU.sys2.MDM8 | car8.CCU.sys2.MDM8 | 3,3,3,3,3,3,3,3 |
-      | car1.CCU.sys2.MDM8 | car8.CCU.sys2.TXC  | 1,1,1,1,1,1,1,1 |
       | car1.CCU.sys2.MDM8 | car8.CCU.sys1.CPU3 | 1,1,1,1,1,1,1,1 |
       | car1.CCU.sys2.MDM8 | car8.CCU.sys1.MDM8 | 3,3,3,3,3,3,3,3 |
-      | car1.CCU.sys2.MDM8 | car8.CCU.sys1.TXC  | 1,1,1,1,1,1,1,1 |
-      | car1.CCU.sys2.TXC  | car1.LCU.CPU3      | 1,1,1,1,1,1,1,1 |
-      | car1.CCU.sys2.TXC  | car1.LCU.MDM8      | 3,1,1,1,1,1,1,1 |
-      | car1.CCU.sys2.TXC  | car1.LCU.MDM9      | 2,1,1,1,1,1,1,1 |
-      | car1.CCU.sys2.TXC  | car1.LCU.RXC       | 1,1,1,1,1,1,1,1 |
-      | car1.CCU.sys2.TXC  | car2.LCU.CPU3      | 1,1,1,1,1,1,1,1 |
-      | car1.CCU.sys2.TXC  | car2.LCU.MDM8      | 1,3,1,1,1,1,1,1 |
-      | car1.CCU.sys2.TXC  | car2.LCU.MDM9      | 1,2,1,1,1,1,1,1 |
-      | car1.CCU.sys2.TXC  | car2.LCU.RXC       | 1,1,1,1,1,1,1,1 |
-      | car1.CCU.sys2.TXC  | car3.LCU.CPU3      | 1,1,1,1,1,1,1,1 |
-      | car1.CCU.sys2.TXC  | car3.LCU.MDM8      | 1,1,3,1,1,1,1,1 |
-      | car1.CCU.sys2.TXC  | car3.LCU.MDM9      | 1,1,2,1,1,1,1,1 |
-      | car1.CCU.sys2.TXC  | car3.LCU.RXC       | 1,1,1,1,1,1,1,1 |
-      | car1.CCU.sys2.TXC  | car4.LCU.CPU3      | 1,1,1,1,1,1,1,1 |
-      | car1.CCU.sys2.TXC  | car4.LCU.MDM8      | 1,1,1,3,1,1,1,1 |
-      | car1.CCU.sys2.TXC  | car4.LCU.MDM9      | 1,1,1,2,1,1,1,1 |
-      | car1.CCU.sys2.TXC  | car4.LCU.RXC       | 1,1,1,1,1,1,1,1 |
-      | car1.CCU.sys2.TXC  | car5.LCU.CPU3      | 1,1,1,1,1,1,1,1 |
-      | car1.CCU.sys2.TXC  | car5.LCU.MDM8      | 1,1,1,1,3,1,1,1 |
-      | car1.CCU.sys2.TXC  | car5.LCU.MDM9      | 1,1,1,1,2,1,1,1 |
-      | car1.CCU.sys2.TXC  | car5.LCU.RXC       | 1,1,1,1,1,1,1,1 |
-      | car1.CCU.sys2.TXC  | car6.LCU.CPU3      | 1,1,1,1,1,1,1,1 |
-      | car1.CCU.sys2.TXC  | car6.LCU.MDM8      | 1,1,1,1,1,3,1,1 |
-      | car1.CCU.sys2.TXC  | car6.LCU.MDM9      | 1,1,1,1,1,2,1,1 |
-      | car1.CCU.sys2.TXC  | car6.LCU.RXC       | 1,1,1,1,1,1,1,1 |
-      | car1.CCU.sys2.TXC  | car7.LCU.CPU3      | 1,1,1,1,1,1,1,1 |
-      | car1.CCU.sys2.TXC  | car7.LCU.MDM8      | 1,1,1,1,1,1,3,1 |
-      | car1.CCU.sys2.TXC  | car7.LCU.MDM9      | 1,1,1,1,1,1,2,1 |
-      | car1.CCU.sys2.TXC  | car7.LCU.RXC       | 1,1,1,1,1,1,1,1 |
-      | car1.CCU.sys2.TXC  | car8.LCU.CPU3      | 1,1,1,1,1,1,1,1 |
-      | car1.CCU.sys2.TXC  | car8.LCU.MDM8      | 1,1,1,1,1,1,1,3 |
-      | car1.CCU.sys2.TXC  | car8.LCU.MDM9      | 1,1,1,1,1,1,1,2 |
-      | car1.CCU.sys2.TXC  | car8.LCU.RXC       | 1,1,1,1,1,1,1,1 |
-      | car1.CCU.sys2.TXC  | car8.CCU.sys2.CPU3 | 1,1,1,1,1,1,1,1 |
-      | car1.CCU.sys2.TXC  | car8.CCU.sys2.MDM8 | 1,1,1,1,1,1,1,1 |
-      | car1.CCU.sys2.TXC  | car8.CCU.sys2.TXC  | 1,1,1,1,1,1,1,1 |
-      | car1.CCU.sys2.TXC  | car8.CCU.sys1.CPU3 | 1,1,1,1,1,1,1,1 |
-      | car1.CCU.sys2.TXC  | car8.CCU.sys1.MDM8 | 1,1,1,1,1,1,1,1 |
-      | car1.CCU.sys2.TXC  | car8.CCU.sys1.TXC  | 1,1,1,1,1,1,1,1 |
       | car1.LCU.CPU3      | car1.LCU.MDM8      | 3,1,1,1,1,1,1,1 |
       | car1.LCU.CPU3      | car1.LCU.MDM9      | 2,1,1,1,1,1,1,1 |
       | car1.LCU.CPU3      | car1.LCU.RXC       | 1,1,1,1,1,1,1,1 |
       | car1.LCU.CPU3      | car2.LCU.CPU3      | 1,1,1,1,1,1,1,1 |
       | car1.LCU.CPU3      | car2.LCU.MDM8      | 1,3,1,1,1,1,1,1 |
-      | car1.LCU.CPU3      | car2.LCU.MDM9      | 1,2,1,1,1,1,1,1 |
-      | car1.LCU.CPU3      | car2.LCU.RXC       | 1,1,1,1,1,1,1,1 |
       | car1.LCU.CPU3      | car3.LCU.CPU3      | 1,1,1,1,1,1,1,1 |
       | car1.LCU.CPU3      | car3.LCU.MDM8      | 1,1,3,1,1,1,1,1 |
-      | car1.LCU.CPU3      | car3.LCU.MDM9      | 1,1,2,1,1,1,1,1 |
-      | car1.LCU.CPU3      | car3.LCU.RXC       | 1,1,1,1,1,1,1,1 |
       | car1.LCU.CPU3      | car4.LCU.CPU3      | 1,1,1,1,1,1,1,1 |
       | car1.LCU.CPU3      | car4.LCU.MDM8      | 1,1,1,3,1,1,1,1 |
-      | car1.LCU.CPU3      | car4.LCU.MDM9      | 1,1,1,2,1,1,1,1 |
-      | car1.LCU.CPU3      | car4.LCU.RXC       | 1,1,1,1,1,1,1,1 |
       | car1.LCU.CPU3      | car5.LCU.CPU3      | 1,1,1,1,1,1,1,1 |
       | car1.LCU.CPU3      | car5.LCU.MDM8      | 1,1,1,1,3,1,1,1 |
-      | car1.LCU.CPU3      | car5.LCU.MDM9      | 1,1,1,1,2,1,1,1 |
-      | car1.LCU.CPU3      | car5.LCU.RXC       | 1,1,1,1,1,1,1,1 |
       | car1.LCU.CPU3      | car6.LCU.CPU3      | 1,1,1,1,1,1,1,1 |
       | car1.LCU.CPU3      | car6.LCU.MDM8      | 1,1,1,1,1,3,1,1 |
-      | car1.LCU.CPU3      | car6.LCU.MDM9      | 1,1,1,1,1,2,1,1 |
-      | car1.LCU.CPU3      | car6.LCU.RXC       | 1,1,1,1,1,1,1,1 |
       | car1.LCU.CPU3      | car7.LCU.CPU3      | 1,1,1,1,1,1,1,1 |
       | car1.LCU.CPU3      | car7.LCU.MDM8      | 1,1,1,1,1,1,3,1 |
-      | car1.LCU.CPU3      | car7.LCU.MDM9      | 1,1,1,1,1,1,2,1 |
-      | car1.LCU.CPU3      | car7.LCU.RXC       | 1,1,1,1,1,1,1,1 |
       | car1.LCU.CPU3      | car8.LCU.CPU3      | 1,1,1,1,1,1,1,1 |
       | car1.LCU.CPU3      | car8.LCU.MDM8      | 1,1,1,1,1,1,1,3 |
-      | car1.LCU.CPU3      | car8.LCU.MDM9      | 1,1,1,1,1,1,1,2 |
-      | car1.LCU.CPU3      | car8.LCU.RXC       | 1,1,1,1,1,1,1,1 |
       | car1.LCU.CPU3      | car8.CCU.sys2.CPU3 | 1,1,1,1,1,1,1,1 |
       | car1.LCU.CPU3      | car8.CCU.sys2.MDM8 | 1,1,1,1,1,1,1,1 |
-      | car1.LCU.CPU3      | car8.CCU.sys2.TXC  | 1,1,1,1,1,1,1,1 |
       | car1.LCU.CPU3      | car8.CCU.sys1.CPU3 | 1,1,1,1,1,1,1,1 |
       | car1.LCU.CPU3      | car8.CCU.sys1.MDM8 | 1,1,1,1,1,1,1,1 |
-      | car1.LCU.CPU3      | car8.CCU.sys1.TXC  | 1,1,1,1,1,1,1,1 |
       | car1.LCU.MDM8      | car1.LCU.MDM9      | 3,1,1,1,1,1,1,1 |
       | car1.LCU.MDM8      | car1.LCU.RXC       | -,1,1,1,1,1,1,1 |
       | car1.LCU.MDM8      | car2.LCU.CPU3      | 3,1,1,1,1,1,1,1 |
       | car1.LCU.MDM8      | car2.LCU.MDM8      | 3,3,1,1,1,1,1,1 |
-      | car1.LCU.MDM8      | car2.LCU.MDM9      | 3,2,1,1,1,1,1,1 |
-      | car1.LCU.MDM8      | car2.LCU.RXC       | 3,1,1,1,1,1,1,1 |
       | car1.LCU.MDM8      | car3.LCU.CPU3      | 3,1,1,1,1,1,1,1 |
       | car1.LCU.MDM8      | car3.LCU.MDM8      | 3,3,3,1,1,1,1,1 |
-      | car1.LCU.MDM8      | car3.LCU.MDM9      | 3,1,2,1,1,1,1,1 |
-      | car1.LCU.MDM8      | car3.LCU.RXC       | 3,1,1,1,1,1,1,1 |
       | car1.LCU.MDM8      | car4.LCU.CPU3      | 3,1,1,1,1,1,1,1 |
       | car1.LCU.MDM8      | car4.LCU.MDM8      | 3,3,3,3,1,1,1,1 |
-      | car1.LCU.MDM8      | car4.LCU.MDM9      | 3,1,1,2,1,1,1,1 |
-      | car1.LCU.MDM8      | car4.LCU.RXC       | 3,1,1,1,1,1,1,1 |
       | car1.LCU.MDM8      | car5.LCU.CPU3      | 3,1,1,1,1,1,1,1 |
       | car1.LCU.MDM8      | car5.LCU.MDM8      | 3,3,3,3,3,1,1,1 |
-      | car1.LCU.MDM8      | car5.LCU.MDM9      | 3,1,1,1,2,1,1,1 |
-      | car1.LCU.MDM8      | car5.LCU.RXC       | 3,1,1,1,1,1,1,1 |
       | car1.LCU.MDM8      | car6.LCU.CPU3      | 3,1,1,1,1,1,1,1 |
       | car1.LCU.MDM8      | car6.LCU.MDM8      | 3,3,3,3,3,3,1,1 |
-      | car1.LCU.MDM8      | car6.LCU.MDM9      | 3,1,1,1,1,2,1,1 |
-      | car1.LCU.MDM8      | car6.LCU.RXC       | 3,1,1,1,1,1,1,1 |
       | car1.LCU.MDM8      | car7.LCU.CPU3      | 3,1,1,1,1,1,1,1 |
       | car1.LCU.MDM8      | car7.LCU.MDM8      | 3,3,3,3,3,3,3,1 |
-      | car1.LCU.MDM8      | car7.LCU.MDM9      | 3,1,1,1,1,1,2,1 |
-      | car1.LCU.MDM8      | car7.LCU.RXC       | 3,1,1,1,1,1,1,1 |
       | car1.LCU.MDM8      | car8.LCU.CPU3      | 3,1,1,1,1,1,1,1 |
       | car1.LCU.MDM8      | car8.LCU.MDM8      | 3,3,3,3,3,3,3,3 |
-      | car1.LCU.MDM8      | car8.LCU.MDM9      | 3,1,1,1,1,1,1,2 |
-      | car1.LCU.MDM8      | car8.LCU.RXC       | 3,1,1,1,1,1,1,1 |
       | car1.LCU.MDM8      | car8.CCU.sys2.CPU3 | 3,1,1,1,1,1,1,1 |
       | car1.LCU.MDM8      | car8.CCU.sys2.MDM8 | 3,3,3,3,3,3,3,3 |
-      | car1.LCU.MDM8      | car8.CCU.sys2.TXC  | 3,1,1,1,1,1,1,1 |
       | car1.LCU.MDM8      | car8.CCU.sys1.CPU3 | 3,1,1,1,1,1,1,1 |
       | car1.LCU.MDM8      | car8.CCU.sys1.MDM8 | 3,3,3,3,3,3,3,3 |
-      | car1.LCU.MDM8      | car8.CCU.sys1.TXC  | 3,1,1,1,1,1,1,1 |
-      | car1.LCU.MDM9      | car1.LCU.RXC       | -,1,1,1,1,1,1,1 |
-      | car1.LCU.MDM9      | car2.LCU.CPU3      | 2,1,1,1,1,1,1,1 |
-      | car1.LCU.MDM9      | car2.LCU.MDM8      | 2,3,1,1,1,1,1,1 |
-      | car1.LCU.MDM9      | car2.LCU.MDM9      | 2,2,1,1,1,1,1,1 |
-      | car1.LCU.MDM9      | car2.LCU.RXC       | 2,1,1,1,1,1,1,1 |
-      | car1.LCU.MDM9      | car3.LCU.CPU3      | 2,1,1,1,1,1,1,1 |
-      | car1.LCU.MDM9      | car3.LCU.MDM8      | 2,1,3,1,1,1,1,1 |
-      | car1.LCU.MDM9      | car3.LCU.MDM9      | 2,1,2,1,1,1,1,1 |
-      | car1.LCU.MDM9      | car3.LCU.RXC       | 2,1,1,1,1,1,1,1 |
-      | car1.LCU.MDM9      | car4.LCU.CPU3      | 2,1,1,1,1,1,1,1 |
-      | car1.LCU.MDM9      | car4.LCU.MDM8      | 2,1,1,3,1,1,1,1 |
-      | car1.LCU.MDM9      | car4.LCU.MDM9      | 2,1,1,2,1,1,1,1 |
-      | car1.LCU.MDM9      | car4.LCU.RXC       | 2,1,1,1,1,1,1,1 |
-      | car1.LCU.MDM9      | car5.LCU.CPU3      | 2,1,1,1,1,1,1,1 |
-      | car1.LCU.MDM9      | car5.LCU.MDM8      | 2,1,1,1,3,1,1,1 |
-      | car1.LCU.MDM9      | car5.LCU.MDM9      | 2,1,1,1,2,1,1,1 |
-      | car1.LCU.MDM9      | car5.LCU.RXC       | 2,1,1,1,1,1,1,1 |
-      | car1.LCU.MDM9      | car6.LCU.CPU3      | 2,1,1,1,1,1,1,1 |
-      | car1.LCU.MDM9      | car6.LCU.MDM8      | 2,1,1,1,1,3,1,1 |
-      | car1.LCU.MDM9      | car6.LCU.MDM9      | 2,1,1,1,1,2,1,1 |
-      | car1.LCU.MDM9      | car6.LCU.RXC       | 2,1,1,1,1,1,1,1 |
-      | car1.LCU.MDM9      | car7.LCU.CPU3      | 2,1,1,1,1,1,1,1 |
-      | car1.LCU.MDM9      | car7.LCU.MDM8      | 2,1,1,1,1,1,3,1 |
-      | car1.LCU.MDM9      | car7.LCU.MDM9      | 2,1,1,1,1,1,2,1 |
-      | car1.LCU.MDM9      | car7.LCU.RXC       | 2,1,1,1,1,1,1,1 |
-      | car1.LCU.MDM9      | car8.LCU.CPU3      | 2,1,1,1,1,1,1,1 |
-      | car1.LCU.MDM9      | car8.LCU.MDM8      | 2,1,1,1,1,1,1,3 |
-      | car1.LCU.MDM9      | car8.LCU.MDM9      | 2,1,1,1,1,1,1,2 |
-      | car1.LCU.MDM9      | car8.LCU.RXC       | 2,1,1,1,1,1,1,1 |
-      | car1.LCU.MDM9      | car8.CCU.sys2.CPU3 | 2,1,1,1,1,1,1,1 |
-      | car1.LCU.MDM9      | car8.CCU.sys2.MDM8 | 2,1,1,1,1,1,1,1 |
-      | car1.LCU.MDM9      | car8.CCU.sys2.TXC  | 2,1,1,1,1,1,1,1 |
-      | car1.LCU.MDM9      | car8.CCU.sys1.CPU3 | 2,1,1,1,1,1,1,1 |
-      | car1.LCU.MDM9      | car8.CCU.sys1.MDM8 | 2,1,1,1,1,1,1,1 |
-      | car1.LCU.MDM9      | car8.CCU.sys1.TXC  | 2,1,1,1,1,1,1,1 |
-      | car1.LCU.RXC       | car2.LCU.CPU3      | 1,1,1,1,1,1,1,1 |
-      | car1.LCU.RXC       | car2.LCU.MDM8      | 1,3,1,1,1,1,1,1 |
-      | car1.LCU.RXC       | car2.LCU.MDM9      | 1,2,1,1,1,1,1,1 |
-      | car1.LCU.RXC       | car2.LCU.RXC       | 1,1,1,1,1,1,1,1 |
-      | car1.LCU.RXC       | car3.LCU.CPU3      | 1,1,1,1,1,1,1,1 |
-      | car1.LCU.RXC       | car3.LCU.MDM8      | 1,1,3,1,1,1,1,1 |
-      | car1.LCU.RXC       | car3.LCU.MDM9      | 1,1,2,1,1,1,1,1 |
-      | car1.LCU.RXC       | car3.LCU.RXC       | 1,1,1,1,1,1,1,1 |
-      | car1.LCU.RXC       | car4.LCU.CPU3      | 1,1,1,1,1,1,1,1 |
-      | car1.LCU.RXC       | car4.LCU.MDM8      | 1,1,1,3,1,1,1,1 |
-      | car1.LCU.RXC       | car4.LCU.MDM9      | 1,1,1,2,1,1,1,1 |
-      | car1.LCU.RXC       | car4.LCU.RXC       | 1,1,1,1,1,1,1,1 |
-      | car1.LCU.RXC       | car5.LCU.CPU3      | 1,1,1,1,1,1,1,1 |
-      | car1.LCU.RXC       | car5.LCU.MDM8      | 1,1,1,1,3,1,1,1 |
-      | car1.LCU.RXC       | car5.LCU.MDM9      | 1,1,1,1,2,1,1,1 |
-      | car1.LCU.RXC       | car5.LCU.RXC       | 1,1,1,1,1,1,1,1 |
-      | car1.LCU.RXC       | car6.LCU.CPU3      | 1,1,1,1,1,1,1,1 |
-      | car1.LCU.RXC       | car6.LCU.MDM8      | 1,1,1,1,1,3,1,1 |
-      | car1.LCU.RXC       | car6.LCU.MDM9      | 1,1,1,1,1,2,1,1 |
-      | car1.LCU.RXC       | car6.LCU.RXC       | 1,1,1,1,1,1,1,1 |
-      | car1.LCU.RXC       | car7.LCU.CPU3      | 1,1,1,1,1,1,1,1 |
-      | car1.LCU.RXC       | car7.LCU.MDM8      | 1,1,1,1,1,1,3,1 |
-      | car1.LCU.RXC       | car7.LCU.MDM9      | 1,1,1,1,1,1,2,1 |
-      | car1.LCU.RXC       | car7.LCU.RXC       | 1,1,1,1,1,1,1,1 |
-      | car1.LCU.RXC       | car8.LCU.CPU3      | 1,1,1,1,1,1,1,1 |
-      | car1.LCU.RXC       | car8.LCU.MDM8      | 1,1,1,1,1,1,1,3 |
-      | car1.LCU.RXC       | car8.LCU.MDM9      | 1,1,1,1,1,1,1,2 |
-      | car1.LCU.RXC       | car8.LCU.RXC       | 1,1,1,1,1,1,1,1 |
-      | car1.LCU.RXC       | car8.CCU.sys2.CPU3 | 1,1,1,1,1,1,1,1 |
-      | car1.LCU.RXC       | car8.CCU.sys2.MDM8 | 1,1,1,1,1,1,1,1 |
-      | car1.LCU.RXC       | car8.CCU.sys2.TXC  | 1,1,1,1,1,1,1,1 |
-      | car1.LCU.RXC       | car8.CCU.sys1.CPU3 | 1,1,1,1,1,1,1,1 |
-      | car1.LCU.RXC       | car8.CCU.sys1.MDM8 | 1,1,1,1,1,1,1,1 |
-      | car1.LCU.RXC       | car8.CCU.sys1.TXC  | 1,1,1,1,1,1,1,1 |
       | car2.LCU.CPU3      | car2.LCU.MDM8      | 1,3,1,1,1,1,1,1 |
       | car2.LCU.CPU3      | car2.LCU.MDM9      | 1,2,1,1,1,1,1,1 |
       | car2.LCU.CPU3      | car2.LCU.RXC       | 1,1,1,1,1,1,1,1 |
       | car2.LCU.CPU3      | car3.LCU.CPU3      | 1,1,1,1,1,1,1,1 |
       | car2.LCU.CPU3      | car3.LCU.MDM8      | 1,1,3,1,1,1,1,1 |
-      | car2.LCU.CPU3      | car3.LCU.MDM9      | 1,1,2,1,1,1,1,1 |
-      | car2.LCU.CPU3      | car3.LCU.RXC       | 1,1,1,1,1,1,1,1 |
       | car2.LCU.CPU3      | car4.LCU.CPU3      | 1,1,1,1,1,1,1,1 |
       | car2.LCU.CPU3      | car4.LCU.MDM8      | 1,1,1,3,1,1,1,1 |
-      | car2.LCU.CPU3      | car4.LCU.MDM9      | 1,1,1,2,1,1,1,1 |
-      | car2.LCU.CPU3      | car4.LCU.RXC       | 1,1,1,1,1,1,1,1 |
       | car2.LCU.CPU3      | car5.LCU.CPU3      | 1,1,1,1,1,1,1,1 |
       | car2.LCU.CPU3      | car5.LCU.MDM8      | 1,1,1,1,3,1,1,1 |
-      | car2.LCU.CPU3      | car5.LCU.MDM9      | 1,1,1,1,2,1,1,1 |
-      | car2.LCU.CPU3      | car5.LCU.RXC       | 1,1,1,1,1,1,1,1 |
       | car2.LCU.CPU3      | car6.LCU.CPU3      | 1,1,1,1,1,1,1,1 |
       | car2.LCU.CPU3      | car6.LCU.MDM8      | 1,1,1,1,1,3,1,1 |
-      | car2.LCU.CPU3      | car6.LCU.MDM9      | 1,1,1,1,1,2,1,1 |
-      | car2.LCU.CPU3      | car6.LCU.RXC       | 1,1,1,1,1,1,1,1 |
       | car2.LCU.CPU3      | car7.LCU.CPU3      | 1,1,1,1,1,1,1,1 |
       | car2.LCU.CPU3      | car7.LCU.MDM8      | 1,1,1,1,1,1,3,1 |
-      | car2.LCU.CPU3      | car7.LCU.MDM9      | 1,1,1,1,1,1,2,1 |
-      | car2.LCU.CPU3      | car7.LCU.RXC       | 1,1,1,1,1,1,1,1 |
       | car2.LCU.CPU3      | car8.LCU.CPU3      | 1,1,1,1,1,1,1,1 |
       | car2.LCU.CPU3      | car8.LCU.MDM8      | 1,1,1,1,1,1,1,3 |
-      | car2.LCU.CPU3      | car8.LCU.MDM9      | 1,1,1,1,1,1,1,2 |
-      | car2.LCU.CPU3      | car8.LCU.RXC       | 1,1,1,1,1,1,1,1 |
       | car2.LCU.CPU3      | car8.CCU.sys2.CPU3 | 1,1,1,1,1,1,1,1 |
       | car2.LCU.CPU3      | car8.CCU.sys2.MDM8 | 1,1,1,1,1,1,1,1 |
-      | car2.LCU.CPU3      | car8.CCU.sys2.TXC  | 1,1,1,1,1,1,1,1 |
       | car2.LCU.CPU3      | car8.CCU.sys1.CPU3 | 1,1,1,1,1,1,1,1 |
       | car2.LCU.CPU3      | car8.CCU.sys1.MDM8 | 1,1,1,1,1,1,1,1 |
-      | car2.LCU.CPU3      | car8.CCU.sys1.TXC  | 1,1,1,1,1,1,1,1 |
       | car2.LCU.MDM8      | car2.LCU.MDM9      | 1,3,1,1,1,1,1,1 |
       | car2.LCU.MDM8      | car2.LCU.RXC       | 1,-,1,1,1,1,1,1 |
       | car2.LCU.MDM8      | car3.LCU.CPU3      | 1,3,1,1,1,1,1,1 |
       | car2.LCU.MDM8      | car3.LCU.MDM8      | 1,3,3,1,1,1,1,1 |
-      | car2.LCU.MDM8      | car3.LCU.MDM9      | 1,3,2,1,1,1,1,1 |
-      | car2.LCU.MDM8      | car3.LCU.RXC       | 1,3,1,1,1,1,1,1 |
       | car2.LCU.MDM8      | car4.LCU.CPU3      | 1,3,1,1,1,1,1,1 |
       | car2.LCU.MDM8      | car4.LCU.MDM8      | 1,3,3,3,1,1,1,1 |
-      | car2.LCU.MDM8      | car4.LCU.MDM9      | 1,3,1,2,1,1,1,1 |
-      | car2.LCU.MDM8      | car4.LCU.RXC       | 1,3,1,1,1,1,1,1 |
       | car2.LCU.MDM8      | car5.LCU.CPU3      | 1,3,1,1,1,1,1,1 |
       | car2.LCU.MDM8      | car5.LCU.MDM8      | 1,3,3,3,3,1,1,1 |
-      | car2.LCU.MDM8      | car5.LCU.MDM9      | 1,3,1,1,2,1,1,1 |
-      | car2.LCU.MDM8      | car5.LCU.RXC       | 1,3,1,1,1,1,1,1 |
       | car2.LCU.MDM8      | car6.LCU.CPU3      | 1,3,1,1,1,1,1,1 |
       | car2.LCU.MDM8      | car6.LCU.MDM8      | 1,3,3,3,3,3,1,1 |
-      | car2.LCU.MDM8      | car6.LCU.MDM9      | 1,3,1,1,1,2,1,1 |
-      | car2.LCU.MDM8      | car6.LCU.RXC       | 1,3,1,1,1,1,1,1 |
       | car2.LCU.MDM8      | car7.LCU.CPU3      | 1,3,1,1,1,1,1,1 |
       | car2.LCU.MDM8      | car7.LCU.MDM8      | 1,3,3,3,3,3,3,1 |
-      | car2.LCU.MDM8      | car7.LCU.MDM9      | 1,3,1,1,1,1,2,1 |
-      | car2.LCU.MDM8      | car7.LCU.RXC       | 1,3,1,1,1,1,1,1 |
       | car2.LCU.MDM8      | car8.LCU.CPU3      | 1,3,1,1,1,1,1,1 |
       | car2.LCU.MDM8      | car8.LCU.MDM8      | 1,3,3,3,3,3,3,3 |
-      | car2.LCU.MDM8      | car8.LCU.MDM9      | 1,3,1,1,1,1,1,2 |
-      | car2.LCU.MDM8      | car8.LCU.RXC       | 1,3,1,1,1,1,1,1 |
       | car2.LCU.MDM8      | car8.CCU.sys2.CPU3 | 1,3,1,1,1,1,1,1 |
       | car2.LCU.MDM8      | car8.CCU.sys2.MDM8 | 1,3,3,3,3,3,3,3 |
-      | car2.LCU.MDM8      | car8.CCU.sys2.TXC  | 1,3,1,1,1,1,1,1 |
       | car2.LCU.MDM8      | car8.CCU.sys1.CPU3 | 1,3,1,1,1,1,1,1 |
       | car2.LCU.MDM8      | car8.CCU.sys1.MDM8 | 1,3,3,3,3,3,3,3 |
-      | car2.LCU.MDM8      | car8.CCU.sys1.TXC  | 1,3,1,1,1,1,1,1 |
-      | car2.LCU.MDM9      | car2.LCU.RXC       | 1,-,1,1,1,1,1,1 |
-      | car2.LCU.MDM9      | car3.LCU.CPU3      | 1,2,1,1,1,1,1,1 |
-      | car2.LCU.MDM9      | car3.LCU.MDM8      | 1,2,3,1,1,1,1,1 |
-      | car2.LCU.MDM9      | car3.LCU.MDM9      | 1,2,2,1,1,1,1,1 |
-      | car2.LCU.MDM9      | car3.LCU.RXC       | 1,2,1,1,1,1,1,1 |
-      | car2.LCU.MDM9      | car4.LCU.CPU3      | 1,2,1,1,1,1,1,1 |
-      | car2.LCU.MDM9      | car4.LCU.MDM8      | 1,2,1,3,1,1,1,1 |
-      | car2.LCU.MDM9      | car4.LCU.MDM9      | 1,2,1,2,1,1,1,1 |
-      | car2.LCU.MDM9      | car4.LCU.RXC       | 1,2,1,1,1,1,1,1 |
-      | car2.LCU.MDM9      | car5.LCU.CPU3      | 1,2,1,1,1,1,1,1 |
-      | car2.LCU.MDM9      | car5.LCU.MDM8      | 1,2,1,1,3,1,1,1 |
-      | car2.LCU.MDM9      | car5.LCU.MDM9      | 1,2,1,1,2,1,1,1 |
-      | car2.LCU.MDM9      | car5.LCU.RXC       | 1,2,1,1,1,1,1,1 |
-      | car2.LCU.MDM9      | car6.LCU.CPU3      | 1,2,1,1,1,1,1,1 |
-      | car2.LCU.MDM9      | car6.LCU.MDM8      | 1,2,1,1,1,3,1,1 |
-      | car2.LCU.MDM9      | car6.LCU.MDM9      | 1,2,1,1,1,2,1,1 |
-      | car2.LCU.MDM9      | car6.LCU.RXC       | 1,2,1,1,1,1,1,1 |
-      | car2.LCU.MDM9      | car7.LCU.CPU3      | 1,2,1,1,1,1,1,1 |
-      | car2.LCU.MDM9      | car7.LCU.MDM8      | 1,2,1,1,1,1,3,1 |
-      | car2.LCU.MDM9      | car7.LCU.MDM9      | 1,2,1,1,1,1,2,1 |
-      | car2.LCU.MDM9      | car7.LCU.RXC       | 1,2,1,1,1,1,1,1 |
-      | car2.LCU.MDM9      | car8.LCU.CPU3      | 1,2,1,1,1,1,1,1 |
-      | car2.LCU.MDM9      | car8.LCU.MDM8      | 1,2,1,1,1,1,1,3 |
-      | car2.LCU.MDM9      | car8.LCU.MDM9      | 1,2,1,1,1,1,1,2 |
-      | car2.LCU.MDM9      | car8.LCU.RXC       | 1,2,1,1,1,1,1,1 |
-      | car2.LCU.MDM9      | car8.CCU.sys2.CPU3 | 1,2,1,1,1,1,1,1 |
-      | car2.LCU.MDM9      | car8.CCU.sys2.MDM8 | 1,2,1,1,1,1,1,1 |
-      | car2.LCU.MDM9      | car8.CCU.sys2.TXC  | 1,2,1,1,1,1,1,1 |
-      | car2.LCU.MDM9      | car8.CCU.sys1.CPU3 | 1,2,1,1,1,1,1,1 |
-      | car2.LCU.MDM9      | car8.CCU.sys1.MDM8 | 1,2,1,1,1,1,1,1 |
-      | car2.LCU.MDM9      | car8.CCU.sys1.TXC  | 1,2,1,1,1,1,1,1 |
-      | car2.LCU.RXC       | car3.LCU.CPU3      | 1,1,1,1,1,1,1,1 |
-      | car2.LCU.RXC       | car3.LCU.MDM8      | 1,1,3,1,1,1,1,1 |
-      | car2.LCU.RXC       | car3.LCU.MDM9      | 1,1,2,1,1,1,1,1 |
-      | car2.LCU.RXC       | car3.LCU.RXC       | 1,1,1,1,1,1,1,1 |
-      | car2.LCU.RXC       | car4.LCU.CPU3      | 1,1,1,1,1,1,1,1 |
-      | car2.LCU.RXC       | car4.LCU.MDM8      | 1,1,1,3,1,1,1,1 |
-      | car2.LCU.RXC       | car4.LCU.MDM9      | 1,1,1,2,1,1,1,1 |
-      | car2.LCU.RXC       | car4.LCU.RXC       | 1,1,1,1,1,1,1,1 |
-      | car2.LCU.RXC       | car5.LCU.CPU3      | 1,1,1,1,1,1,1,1 |
-      | car2.LCU.RXC       | car5.LCU.MDM8      | 1,1,1,1,3,1,1,1 |
-      | car2.LCU.RXC       | car5.LCU.MDM9      | 1,1,1,1,2,1,1,1 |
-      | car2.LCU.RXC       | car5.LCU.RXC       | 1,1,1,1,1,1,1,1 |
-      | car2.LCU.RXC       | car6.LCU.CPU3      | 1,1,1,1,1,1,1,1 |
-      | car2.LCU.RXC       | car6.LCU.MDM8      | 1,1,1,1,1,3,1,1 |
-      | car2.LCU.RXC       | car6.LCU.MDM9      | 1,1,1,1,1,2,1,1 |
-      | car2.LCU.RXC       | car6.LCU.RXC       | 1,1,1,1,1,1,1,1 |
-      | car2.LCU.RXC       | car7.LCU.CPU3      | 1,1,1,1,1,1,1,1 |
-      | car2.LCU.RXC       | car7.LCU.MDM8      | 1,1,1,1,1,1,3,1 |
-      | car2.LCU.RXC       | car7.LCU.MDM9      | 1,1,1,1,1,1,2,1 |
-      | car2.LCU.RXC       | car7.LCU.RXC       | 1,1,1,1,1,1,1,1 |
-      | car2.LCU.RXC       | car8.LCU.CPU3      | 1,1,1,1,1,1,1,1 |
-      | car2.LCU.RXC       | car8.LCU.MDM8      | 1,1,1,1,1,1,1,3 |
-      | car2.LCU.RXC       | car8.LCU.MDM9      | 1,1,1,1,1,1,1,2 |
-      | car2.LCU.RXC       | car8.LCU.RXC       | 1,1,1,1,1,1,1,1 |
-      | car2.LCU.RXC       | car8.CCU.sys2.CPU3 | 1,1,1,1,1,1,1,1 |
-      | car2.LCU.RXC       | car8.CCU.sys2.MDM8 | 1,1,1,1,1,1,1,1 |
-      | car2.LCU.RXC       | car8.CCU.sys2.TXC  | 1,1,1,1,1,1,1,1 |
-      | car2.LCU.RXC       | car8.CCU.sys1.CPU3 | 1,1,1,1,1,1,1,1 |
-      | car2.LCU.RXC       | car8.CCU.sys1.MDM8 | 1,1,1,1,1,1,1,1 |
-      | car2.LCU.RXC       | car8.CCU.sys1.TXC  | 1,1,1,1,1,1,1,1 |
       | car3.LCU.CPU3      | car3.LCU.MDM8      | 1,1,3,1,1,1,1,1 |
       | car3.LCU.CPU3      | car3.LCU.MDM9      | 1,1,2,1,1,1,1,1 |
       | car3.LCU.CPU3      | car3.LCU.RXC       | 1,1,1,1,1,1,1,1 |
       | car3.LCU.CPU3      | car4.LCU.CPU3      | 1,1,1,1,1,1,1,1 |
       | car3.LCU.CPU3      | car4.LCU.MDM8      | 1,1,1,3,1,1,1,1 |
-      | car3.LCU.CPU3      | car4.LCU.MDM9      | 1,1,1,2,1,1,1,1 |
-      | car3.LCU.CPU3      | car4.LCU.RXC       | 1,1,1,1,1,1,1,1 |
       | car3.LCU.CPU3      | car5.LCU.CPU3      | 1,1,1,1,1,1,1,1 |
       | car3.LCU.CPU3      | car5.LCU.MDM8      | 1,1,1,1,3,1,1,1 |
-      | car3.LCU.CPU3      | car5.LCU.MDM9      | 1,1,1,1,2,1,1,1 |
-      | car3.LCU.CPU3      | car5.LCU.RXC       | 1,1,1,1,1,1,1,1 |
       | car3.LCU.CPU3      | car6.LCU.CPU3      | 1,1,1,1,1,1,1,1 |
       | car3.LCU.CPU3      | car6.LCU.MDM8      | 1,1,1,1,1,3,1,1 |
-      | car3.LCU.CPU3      | car6.LCU.MDM9      | 1,1,1,1,1,2,1,1 |
-      | car3.LCU.CPU3      | car6.LCU.RXC       | 1,1,1,1,1,1,1,1 |
       | car3.LCU.CPU3      | car7.LCU.CPU3      | 1,1,1,1,1,1,1,1 |
       | car3.LCU.CPU3      | car7.LCU.MDM8      | 1,1,1,1,1,1,3,1 |
-      | car3.LCU.CPU3      | car7.LCU.MDM9      | 1,1,1,1,1,1,2,1 |
-      | car3.LCU.CPU3      | car7.LCU.RXC       | 1,1,1,1,1,1,1,1 |
       | car3.LCU.CPU3      | car8.LCU.CPU3      | 1,1,1,1,1,1,1,1 |
       | car3.LCU.CPU3      | car8.LCU.MDM8      | 1,1,1,1,1,1,1,3 |
-      | car3.LCU.CPU3      | car8.LCU.MDM9      | 1,1,1,1,1,1,1,2 |
-      | car3.LCU.CPU3      | car8.LCU.RXC       | 1,1,1,1,1,1,1,1 |
       | car3.LCU.CPU3      | car8.CCU.sys2.CPU3 | 1,1,1,1,1,1,1,1 |
       | car3.LCU.CPU3      | car8.CCU.sys2.MDM8 | 1,1,1,1,1,1,1,1 |
-      | car3.LCU.CPU3      | car8.CCU.sys2.TXC  | 1,1,1,1,1,1,1,1 |
       | car3.LCU.CPU3      | car8.CCU.sys1.CPU3 | 1,1,1,1,1,1,1,1 |
       | car3.LCU.CPU3      | car8.CCU.sys1.MDM8 | 1,1,1,1,1,1,1,1 |
-      | car3.LCU.CPU3      | car8.CCU.sys1.TXC  | 1,1,1,1,1,1,1,1 |
       | car3.LCU.MDM8      | car3.LCU.MDM9      | 1,1,3,1,1,1,1,1 |
       | car3.LCU.MDM8      | car3.LCU.RXC       | 1,1,-,1,1,1,1,1 |
       | car3.LCU.MDM8      | car4.LCU.CPU3      | 1,1,3,1,1,1,1,1 |
       | car3.LCU.MDM8      | car4.LCU.MDM8      | 1,1,3,3,1,1,1,1 |
-      | car3.LCU.MDM8      | car4.LCU.MDM9      | 1,1,3,2,1,1,1,1 |
-      | car3.LCU.MDM8      | car4.LCU.RXC       | 1,1,3,1,1,1,1,1 |
       | car3.LCU.MDM8      | car5.LCU.CPU3      | 1,1,3,1,1,1,1,1 |
       | car3.LCU.MDM8      | car5.LCU.MDM8      | 1,1,3,3,3,1,1,1 |
-      | car3.LCU.MDM8      | car5.LCU.MDM9      | 1,1,3,1,2,1,1,1 |
-      | car3.LCU.MDM8      | car5.LCU.RXC       | 1,1,3,1,1,1,1,1 |
       | car3.LCU.MDM8      | car6.LCU.CPU3      | 1,1,3,1,1,1,1,1 |
       | car3.LCU.MDM8      | car6.LCU.MDM8      | 1,1,3,3,3,3,1,1 |
-      | car3.LCU.MDM8      | car6.LCU.MDM9      | 1,1,3,1,1,2,1,1 |
-      | car3.LCU.MDM8      | car6.LCU.RXC       | 1,1,3,1,1,1,1,1 |
       | car3.LCU.MDM8      | car7.LCU.CPU3      | 1,1,3,1,1,1,1,1 |
       | car3.LCU.MDM8      | car7.LCU.MDM8      | 1,1,3,3,3,3,3,1 |
-      | car3.LCU.MDM8      | car7.LCU.MDM9      | 1,1,3,1,1,1,2,1 |
-      | car3.LCU.MDM8      | car7.LCU.RXC       | 1,1,3,1,1,1,1,1 |
       | car3.LCU.MDM8      | car8.LCU.CPU3      | 1,1,3,1,1,1,1,1 |
       | car3.LCU.MDM8      | car8.LCU.MDM8      | 1,1,3,3,3,3,3,3 |
-      | car3.LCU.MDM8      | car8.LCU.MDM9      | 1,1,3,1,1,1,1,2 |
-      | car3.LCU.MDM8      | car8.LCU.RXC       | 1,1,3,1,1,1,1,1 |
       | car3.LCU.MDM8      | car8.CCU.sys2.CPU3 | 1,1,3,1,1,1,1,1 |
       | car3.LCU.MDM8      | car8.CCU.sys2.MDM8 | 1,1,3,3,3,3,3,3 |
-      | car3.LCU.MDM8      | car8.CCU.sys2.TXC  | 1,1,3,1,1,1,1,1 |
       | car3.LCU.MDM8      | car8.CCU.sys1.CPU3 | 1,1,3,1,1,1,1,1 |
       | car3.LCU.MDM8      | car8.CCU.sys1.MDM8 | 1,1,3,3,3,3,3,3 |
-      | car3.LCU.MDM8      | car8.CCU.sys1.TXC  | 1,1,3,1,1,1,1,1 |
-      | car3.LCU.MDM9      | car3.LCU.RXC       | 1,1,-,1,1,1,1,1 |
-      | car3.LCU.MDM9      | car4.LCU.CPU3      | 1,1,2,1,1,1,1,1 |
-      | car3.LCU.MDM9      | car4.LCU.MDM8      | 1,1,2,3,1,1,1,1 |
-      | car3.LCU.MDM9      | car4.LCU.MDM9      | 1,1,2,2,1,1,1,1 |
-      | car3.LCU.MDM9      | car4.LCU.RXC       | 1,1,2,1,1,1,1,1 |
-      | car3.LCU.MDM9      | car5.LCU.CPU3      | 1,1,2,1,1,1,1,1 |
-      | car3.LCU.MDM9      | car5.LCU.MDM8      | 1,1,2,1,3,1,1,1 |
-      | car3.LCU.MDM9      | car5.LCU.MDM9      | 1,1,2,1,2,1,1,1 |
-      | car3.LCU.MDM9      | car5.LCU.RXC       | 1,1,2,1,1,1,1,1 |
-      | car3.LCU.MDM9      | car6.LCU.CPU3      | 1,1,2,1,1,1,1,1 |
-      | car3.LCU.MDM9      | car6.LCU.MDM8      | 1,1,2,1,1,3,1,1 |
-      | car3.LCU.MDM9      | car6.LCU.MDM9      | 1,1,2,1,1,2,1,1 |
-      | car3.LCU.MDM9      | car6.LCU.RXC       | 1,1,2,1,1,1,1,1 |
-      | car3.LCU.MDM9      | car7.LCU.CPU3      | 1,1,2,1,1,1,1,1 |
-      | car3.LCU.MDM9      | car7.LCU.MDM8      | 1,1,2,1,1,1,3,1 |
-      | car3.LCU.MDM9      | car7.LCU.MDM9      | 1,1,2,1,1,1,2,1 |
-      | car3.LCU.MDM9      | car7.LCU.RXC       | 1,1,2,1,1,1,1,1 |
-      | car3.LCU.MDM9      | car8.LCU.CPU3      | 1,1,2,1,1,1,1,1 |
-      | car3.LCU.MDM9      | car8.LCU.MDM8      | 1,1,2,1,1,1,1,3 |
-      | car3.LCU.MDM9      | car8.LCU.MDM9      | 1,1,2,1,1,1,1,2 |
-      | car3.LCU.MDM9      | car8.LCU.RXC       | 1,1,2,1,1,1,1,1 |
-      | car3.LCU.MDM9      | car8.CCU.sys2.CPU3 | 1,1,2,1,1,1,1,1 |
-      | car3.LCU.MDM9      | car8.CCU.sys2.MDM8 | 1,1,2,1,1,1,1,1 |
-      | car3.LCU.MDM9      | car8.CCU.sys2.TXC  | 1,1,2,1,1,1,1,1 |
-      | car3.LCU.MDM9      | car8.CCU.sys1.CPU3 | 1,1,2,1,1,1,1,1 |
-      | car3.LCU.MDM9      | car8.CCU.sys1.MDM8 | 1,1,2,1,1,1,1,1 |
-      | car3.LCU.MDM9      | car8.CCU.sys1.TXC  | 1,1,2,1,1,1,1,1 |
-      | car3.LCU.RXC       | car4.LCU.CPU3      | 1,1,1,1,1,1,1,1 |
-      | car3.LCU.RXC       | car4.LCU.MDM8      | 1,1,1,3,1,1,1,1 |
-      | car3.LCU.RXC       | car4.LCU.MDM9      | 1,1,1,2,1,1,1,1 |
-      | car3.LCU.RXC       | car4.LCU.RXC       | 1,1,1,1,1,1,1,1 |
-      | car3.LCU.RXC       | car5.LCU.CPU3      | 1,1,1,1,1,1,1,1 |
-      | car3.LCU.RXC       | car5.LCU.MDM8      | 1,1,1,1,3,1,1,1 |
-      | car3.LCU.RXC       | car5.LCU.MDM9      | 1,1,1,1,2,1,1,1 |
-      | car3.LCU.RXC       | car5.LCU.RXC       | 1,1,1,1,1,1,1,1 |
-      | car3.LCU.RXC       | car6.LCU.CPU3      | 1,1,1,1,1,1,1,1 |
-      | car3.LCU.RXC       | car6.LCU.MDM8      | 1,1,1,1,1,3,1,1 |
-      | car3.LCU.RXC       | car6.LCU.MDM9      | 1,1,1,1,1,2,1,1 |
-      | car3.LCU.RXC       | car6.LCU.RXC       | 1,1,1,1,1,1,1,1 |
-      | car3.LCU.RXC       | car7.LCU.CPU3      | 1,1,1,1,1,1,1,1 |
-      | car3.LCU.RXC       | car7.LCU.MDM8      | 1,1,1,1,1,1,3,1 |
-      | car3.LCU.RXC       | car7.LCU.MDM9      | 1,1,1,1,1,1,2,1 |
-      | car3.LCU.RXC       | car7.LCU.RXC       | 1,1,1,1,1,1,1,1 |
-      | car3.LCU.RXC       | car8.LCU.CPU3      | 1,1,1,1,1,1,1,1 |
-      | car3.LCU.RXC       | car8.LCU.MDM8      | 1,1,1,1,1,1,1,3 |
-      | car3.LCU.RXC       | car8.LCU.MDM9      | 1,1,1,1,1,1,1,2 |
-      | car3.LCU.RXC       | car8.LCU.RXC       | 1,1,1,1,1,1,1,1 |
-      | car3.LCU.RXC       | car8.CCU.sys2.CPU3 | 1,1,1,1,1,1,1,1 |
-      | car3.LCU.RXC       | car8.CCU.sys2.MDM8 | 1,1,1,1,1,1,1,1 |
-      | car3.LCU.RXC       | car8.CCU.sys2.TXC  | 1,1,1,1,1,1,1,1 |
-      | car3.LCU.RXC       | car8.CCU.sys1.CPU3 | 1,1,1,1,1,1,1,1 |
-      | car3.LCU.RXC       | car8.CCU.sys1.MDM8 | 1,1,1,1,1,1,1,1 |
-      | car3.LCU.RXC       | car8.CCU.sys1.TXC  | 1,1,1,1,1,1,1,1 |
       | car4.LCU.CPU3      | car4.LCU.MDM8      | 1,1,1,3,1,1,1,1 |
       | car4.LCU.CPU3      | car4.LCU.MDM9      | 1,1,1,2,1,1,1,1 |
       | car4.LCU.CPU3      | car4.LCU.RXC       | 1,1,1,1,1,1,1,1 |
       | car4.LCU.CPU3      | car5.LCU.CPU3      | 1,1,1,1,1,1,1,1 |
       | car4.LCU.CPU3      | car5.LCU.MDM8      | 1,1,1,1,3,1,1,1 |
-      | car4.LCU.CPU3      | car5.LCU.MDM9      | 1,1,1,1,2,1,1,1 |
-      | car4.LCU.CPU3      | car5.LCU.RXC       | 1,1,1,1,1,1,1,1 |
       | car4.LCU.CPU3      | car6.LCU.CPU3      | 1,1,1,1,1,1,1,1 |
       | car4.LCU.CPU3      | car6.LCU.MDM8      | 1,1,1,1,1,3,1,1 |
-      | car4.LCU.CPU3      | car6.LCU.MDM9      | 1,1,1,1,1,2,1,1 |
-      | car4.LCU.CPU3      | car6.LCU.RXC       | 1,1,1,1,1,1,1,1 |
       | car4.LCU.CPU3      | car7.LCU.CPU3      | 1,1,1,1,1,1,1,1 |
       | car4.LCU.CPU3      | car7.LCU.MDM8      | 1,1,1,1,1,1,3,1 |
-      | car4.LCU.CPU3      | car7.LCU.MDM9      | 1,1,1,1,1,1,2,1 |
-      | car4.LCU.CPU3      | car7.LCU.RXC       | 1,1,1,1,1,1,1,1 |
       | car4.LCU.CPU3      | car8.LCU.CPU3      | 1,1,1,1,1,1,1,1 |
       | car4.LCU.CPU3      | car8.LCU.MDM8      | 1,1,1,1,1,1,1,3 |
-      | car4.LCU.CPU3      | car8.LCU.MDM9      | 1,1,1,1,1,1,1,2 |
-      | car4.LCU.CPU3      | car8.LCU.RXC       | 1,1,1,1,1,1,1,1 |
       | car4.LCU.CPU3      | car8.CCU.sys2.CPU3 | 1,1,1,1,1,1,1,1 |
       | car4.LCU.CPU3      | car8.CCU.sys2.MDM8 | 1,1,1,1,1,1,1,1 |
-      | car4.LCU.CPU3      | car8.CCU.sys2.TXC  | 1,1,1,1,1,1,1,1 |
       | car4.LCU.CPU3      | car8.CCU.sys1.CPU3 | 1,1,1,1,1,1,1,1 |
       | car4.LCU.CPU3      | car8.CCU.sys1.MDM8 | 1,1,1,1,1,1,1,1 |
-      | car4.LCU.CPU3      | car8.CCU.sys1.TXC  | 1,1,1,1,1,1,1,1 |
       | car4.LCU.MDM8      | car4.LCU.MDM9      | 1,1,1,3,1,1,1,1 |
       | car4.LCU.MDM8      | car4.LCU.RXC       | 1,1,1,-,1,1,1,1 |
       | car4.LCU.MDM8      | car5.LCU.CPU3      | 1,1,1,3,1,1,1,1 |
       | car4.LCU.MDM8      | car5.LCU.MDM8      | 1,1,1,3,3,1,1,1 |
-      | car4.LCU.MDM8      | car5.LCU.MDM9      | 1,1,1,3,2,1,1,1 |
-      | car4.LCU.MDM8      | car5.LCU.RXC       | 1,1,1,3,1,1,1,1 |
       | car4.LCU.MDM8      | car6.LCU.CPU3      | 1,1,1,3,1,1,1,1 |
       | car4.LCU.MDM8      | car6.LCU.MDM8      | 1,1,1,3,3,3,1,1 |
-      | car4.LCU.MDM8      | car6.LCU.MDM9      | 1,1,1,3,1,2,1,1 |
-      | car4.LCU.MDM8      | car6.LCU.RXC       | 1,1,1,3,1,1,1,1 |
       | car4.LCU.MDM8      | car7.LCU.CPU3      | 1,1,1,3,1,1,1,1 |
       | car4.LCU.MDM8      | car7.LCU.MDM8      | 1,1,1,3,3,3,3,1 |
-      | car4.LCU.MDM8      | car7.LCU.MDM9      | 1,1,1,3,1,1,2,1 |
-      | car4.LCU.MDM8      | car7.LCU.RXC       | 1,1,1,3,1,1,1,1 |
       | car4.LCU.MDM8      | car8.LCU.CPU3      | 1,1,1,3,1,1,1,1 |
       | car4.LCU.MDM8      | car8.LCU.MDM8      | 1,1,1,3,3,3,3,3 |
-      | car4.LCU.MDM8      | car8.LCU.MDM9      | 1,1,1,3,1,1,1,2 |
-      | car4.LCU.MDM8      | car8.LCU.RXC       | 1,1,1,3,1,1,1,1 |
       | car4.LCU.MDM8      | car8.CCU.sys2.CPU3 | 1,1,1,3,1,1,1,1 |
       | car4.LCU.MDM8      | car8.CCU.sys2.MDM8 | 1,1,1,3,3,3,3,3 |
-      | car4.LCU.MDM8      | car8.CCU.sys2.TXC  | 1,1,1,3,1,1,1,1 |
       | car4.LCU.MDM8      | car8.CCU.sys1.CPU3 | 1,1,1,3,1,1,1,1 |
       | car4.LCU.MDM8      | car8.CCU.sys1.MDM8 | 1,1,1,3,3,3,3,3 |
-      | car4.LCU.MDM8      | car8.CCU.sys1.TXC  | 1,1,1,3,1,1,1,1 |
-      | car4.LCU.MDM9      | car4.LCU.RXC       | 1,1,1,-,1,1,1,1 |
-      | car4.LCU.MDM9      | car5.LCU.CPU3      | 1,1,1,2,1,1,1,1 |
-      | car4.LCU.MDM9      | car5.LCU.MDM8      | 1,1,1,2,3,1,1,1 |
-      | car4.LCU.MDM9      | car5.LCU.MDM9      | 1,1,1,2,2,1,1,1 |
-      | car4.LCU.MDM9      | car5.LCU.RXC       | 1,1,1,2,1,1,1,1 |
-      | car4.LCU.MDM9      | car6.LCU.CPU3      | 1,1,1,2,1,1,1,1 |
-      | car4.LCU.MDM9      | car6.LCU.MDM8      | 1,1,1,2,1,3,1,1 |
-      | car4.LCU.MDM9      | car6.LCU.MDM9      | 1,1,1,2,1,2,1,1 |
-      | car4.LCU.MDM9      | car6.LCU.RXC       | 1,1,1,2,1,1,1,1 |
-      | car4.LCU.MDM9      | car7.LCU.CPU3      | 1,1,1,2,1,1,1,1 |
-      | car4.LCU.MDM9      | car7.LCU.MDM8      | 1,1,1,2,1,1,3,1 |
-      | car4.LCU.MDM9      | car7.LCU.MDM9      | 1,1,1,2,1,1,2,1 |
-      | car4.LCU.MDM9      | car7.LCU.RXC       | 1,1,1,2,1,1,1,1 |
-      | car4.LCU.MDM9      | car8.LCU.CPU3      | 1,1,1,2,1,1,1,1 |
-      | car4.LCU.MDM9      | car8.LCU.MDM8      | 1,1,1,2,1,1,1,3 |
-      | car4.LCU.MDM9      | car8.LCU.MDM9      | 1,1,1,2,1,1,1,2 |
-      | car4.LCU.MDM9      | car8.LCU.RXC       | 1,1,1,2,1,1,1,1 |
-      | car4.LCU.MDM9      | car8.CCU.sys2.CPU3 | 1,1,1,2,1,1,1,1 |
-      | car4.LCU.MDM9      | car8.CCU.sys2.MDM8 | 1,1,1,2,1,1,1,1 |
-      | car4.LCU.MDM9      | car8.CCU.sys2.TXC  | 1,1,1,2,1,1,1,1 |
-      | car4.LCU.MDM9      | car8.CCU.sys1.CPU3 | 1,1,1,2,1,1,1,1 |
-      | car4.LCU.MDM9      | car8.CCU.sys1.MDM8 | 1,1,1,2,1,1,1,1 |
-      | car4.LCU.MDM9      | car8.CCU.sys1.TXC  | 1,1,1,2,1,1,1,1 |
-      | car4.LCU.RXC       | car5.LCU.CPU3      | 1,1,1,1,1,1,1,1 |
-      | car4.LCU.RXC       | car5.LCU.MDM8      | 1,1,1,1,3,1,1,1 |
-      | car4.LCU.RXC       | car5.LCU.MDM9      | 1,1,1,1,2,1,1,1 |
-      | car4.LCU.RXC       | car5.LCU.RXC       | 1,1,1,1,1,1,1,1 |
-      | car4.LCU.RXC       | car6.LCU.CPU3      | 1,1,1,1,1,1,1,1 |
-      | car4.LCU.RXC       | car6.LCU.MDM8      | 1,1,1,1,1,3,1,1 |
-      | car4.LCU.RXC       | car6.LCU.MDM9      | 1,1,1,1,1,2,1,1 |
-      | car4.LCU.RXC       | car6.LCU.RXC       | 1,1,1,1,1,1,1,1 |
-      | car4.LCU.RXC       | car7.LCU.CPU3      | 1,1,1,1,1,1,1,1 |
-      | car4.LCU.RXC       | car7.LCU.MDM8      | 1,1,1,1,1,1,3,1 |
-      | car4.LCU.RXC       | car7.LCU.MDM9      | 1,1,1,1,1,1,2,1 |
-      | car4.LCU.RXC       | car7.LCU.RXC       | 1,1,1,1,1,1,1,1 |
-      | car4.LCU.RXC       | car8.LCU.CPU3      | 1,1,1,1,1,1,1,1 |
-      | car4.LCU.RXC       | car8.LCU.MDM8      | 1,1,1,1,1,1,1,3 |
-      | car4.LCU.RXC       | car8.LCU.MDM9      | 1,1,1,1,1,1,1,2 |
-      | car4.LCU.RXC       | car8.LCU.RXC       | 1,1,1,1,1,1,1,1 |
-      | car4.LCU.RXC       | car8.CCU.sys2.CPU3 | 1,1,1,1,1,1,1,1 |
-      | car4.LCU.RXC       | car8.CCU.sys2.MDM8 | 1,1,1,1,1,1,1,1 |
-      | car4.LCU.RXC       | car8.CCU.sys2.TXC  | 1,1,1,1,1,1,1,1 |
-      | car4.LCU.RXC       | car8.CCU.sys1.CPU3 | 1,1,1,1,1,1,1,1 |
-      | car4.LCU.RXC       | car8.CCU.sys1.MDM8 | 1,1,1,1,1,1,1,1 |
-      | car4.LCU.RXC       | car8.CCU.sys1.TXC  | 1,1,1,1,1,1,1,1 |
       | car5.LCU.CPU3      | car5.LCU.MDM8      | 1,1,1,1,3,1,1,1 |
       | car5.LCU.CPU3      | car5.LCU.MDM9      | 1,1,1,1,2,1,1,1 |
       | car5.LCU.CPU3      | car5.LCU.RXC       | 1,1,1,1,1,1,1,1 |
       | car5.LCU.CPU3      | car6.LCU.CPU3      | 1,1,1,1,1,1,1,1 |
       | car5.LCU.CPU3      | car6.LCU.MDM8      | 1,1,1,1,1,3,1,1 |
-      | car5.LCU.CPU3      | car6.LCU.MDM9      | 1,1,1,1,1,2,1,1 |
-      | car5.LCU.CPU3      | car6.LCU.RXC       | 1,1,1,1,1,1,1,1 |
       | car5.LCU.CPU3      | car7.LCU.CPU3      | 1,1,1,1,1,1,1,1 |
       | car5.LCU.CPU3      | car7.LCU.MDM8      | 1,1,1,1,1,1,3,1 |
-      | car5.LCU.CPU3      | car7.LCU.MDM9      | 1,1,1,1,1,1,2,1 |
-      | car5.LCU.CPU3      | car7.LCU.RXC       | 1,1,1,1,1,1,1,1 |
       | car5.LCU.CPU3      | car8.LCU.CPU3      | 1,1,1,1,1,1,1,1 |
       | car5.LCU.CPU3      | car8.LCU.MDM8      | 1,1,1,1,1,1,1,3 |
-      | car5.LCU.CPU3      | car8.LCU.MDM9      | 1,1,1,1,1,1,1,2 |
-      | car5.LCU.CPU3      | car8.LCU.RXC       | 1,1,1,1,1,1,1,1 |
       | car5.LCU.CPU3      | car8.CCU.sys2.CPU3 | 1,1,1,1,1,1,1,1 |
       | car5.LCU.CPU3      | car8.CCU.sys2.MDM8 | 1,1,1,1,1,1,1,1 |
-      | car5.LCU.CPU3      | car8.CCU.sys2.TXC  | 1,1,1,1,1,1,1,1 |
       | car5.LCU.CPU3      | car8.CCU.sys1.CPU3 | 1,1,1,1,1,1,1,1 |
       | car5.LCU.CPU3      | car8.CCU.sys1.MDM8 | 1,1,1,1,1,1,1,1 |
-      | car5.LCU.CPU3      | car8.CCU.sys1.TXC  | 1,1,1,1,1,1,1,1 |
       | car5.LCU.MDM8      | car5.LCU.MDM9      | 1,1,1,1,3,1,1,1 |
       | car5.LCU.MDM8      | car5.LCU.RXC       | 1,1,1,1,-,1,1,1 |
       | car5.LCU.MDM8      | car6.LCU.CPU3      | 1,1,1,1,3,1,1,1 |
       | car5.LCU.MDM8      | car6.LCU.MDM8      | 1,1,1,1,3,3,1,1 |
-      | car5.LCU.MDM8      | car6.LCU.MDM9      | 1,1,1,1,3,2,1,1 |
-      | car5.LCU.MDM8      | car6.LCU.RXC       | 1,1,1,1,3,1,1,1 |
       | car5.LCU.MDM8      | car7.LCU.CPU3      | 1,1,1,1,3,1,1,1 |
       | car5.LCU.MDM8      | car7.LCU.MDM8      | 1,1,1,1,3,3,3,1 |
-      | car5.LCU.MDM8      | car7.LCU.MDM9      | 1,1,1,1,3,1,2,1 |
-      | car5.LCU.MDM8      | car7.LCU.RXC       | 1,1,1,1,3,1,1,1 |
       | car5.LCU.MDM8      | car8.LCU.CPU3      | 1,1,1,1,3,1,1,1 |
       | car5.LCU.MDM8      | car8.LCU.MDM8      | 1,1,1,1,3,3,3,3 |
-      | car5.LCU.MDM8      | car8.LCU.MDM9      | 1,1,1,1,3,1,1,2 |
-      | car5.LCU.MDM8      | car8.LCU.RXC       | 1,1,1,1,3,1,1,1 |
       | car5.LCU.MDM8      | car8.CCU.sys2.CPU3 | 1,1,1,1,3,1,1,1 |
       | car5.LCU.MDM8      | car8.CCU.sys2.MDM8 | 1,1,1,1,3,3,3,3 |
-      | car5.LCU.MDM8      | car8.CCU.sys2.TXC  | 1,1,1,1,3,1,1,1 |
       | car5.LCU.MDM8      | car8.CCU.sys1.CPU3 | 1,1,1,1,3,1,1,1 |
       | car5.LCU.MDM8      | car8.CCU.sys1.MDM8 | 1,1,1,1,3,3,3,3 |
-      | car5.LCU.MDM8      | car8.CCU.sys1.TXC  | 1,1,1,1,3,1,1,1 |
-      | car5.LCU.MDM9      | car5.LCU.RXC       | 1,1,1,1,-,1,1,1 |
-      | car5.LCU.MDM9      | car6.LCU.CPU3      | 1,1,1,1,2,1,1,1 |
-      | car5.LCU.MDM9      | car6.LCU.MDM8      | 1,1,1,1,2,3,1,1 |
-      | car5.LCU.MDM9      | car6.LCU.MDM9      | 1,1,1,1,2,2,1,1 |
-      | car5.LCU.MDM9      | car6.LCU.RXC       | 1,1,1,1,2,1,1,1 |
-      | car5.LCU.MDM9      | car7.LCU.CPU3      | 1,1,1,1,2,1,1,1 |
-      | car5.LCU.MDM9      | car7.LCU.MDM8      | 1,1,1,1,2,1,3,1 |
-      | car5.LCU.MDM9      | car7.LCU.MDM9      | 1,1,1,1,2,1,2,1 |
-      | car5.LCU.MDM9      | car7.LCU.RXC       | 1,1,1,1,2,1,1,1 |
-      | car5.LCU.MDM9      | car8.LCU.CPU3      | 1,1,1,1,2,1,1,1 |
-      | car5.LCU.MDM9      | car8.LCU.MDM8      | 1,1,1,1,2,1,1,3 |
-      | car5.LCU.MDM9      | car8.LCU.MDM9      | 1,1,1,1,2,1,1,2 |
-      | car5.LCU.MDM9      | car8.LCU.RXC       | 1,1,1,1,2,1,1,1 |
-      | car5.LCU.MDM9      | car8.CCU.sys2.CPU3 | 1,1,1,1,2,1,1,1 |
-      | car5.LCU.MDM9      | car8.CCU.sys2.MDM8 | 1,1,1,1,2,1,1,1 |
-      | car5.LCU.MDM9      | car8.CCU.sys2.TXC  | 1,1,1,1,2,1,1,1 |
-      | car5.LCU.MDM9      | car8.CCU.sys1.CPU3 | 1,1,1,1,2,1,1,1 |
-      | car5.LCU.MDM9      | car8.CCU.sys1.MDM8 | 1,1,1,1,2,1,1,1 |
-      | car5.LCU.MDM9      | car8.CCU.sys1.TXC  | 1,1,1,1,2,1,1,1 |
-      | car5.LCU.RXC       | car6.LCU.CPU3      | 1,1,1,1,1,1,1,1 |
-      | car5.LCU.RXC       | car6.LCU.MDM8      | 1,1,1,1,1,3,1,1 |
-      | car5.LCU.RXC       | car6.LCU.MDM9      | 1,1,1,1,1,2,1,1 |
-      | car5.LCU.RXC       | car6.LCU.RXC       | 1,1,1,1,1,1,1,1 |
-      | car5.LCU.RXC       | car7.LCU.CPU3      | 1,1,1,1,1,1,1,1 |
-      | car5.LCU.RXC       | car7.LCU.MDM8      | 1,1,1,1,1,1,3,1 |
-      | car5.LCU.RXC       | car7.LCU.MDM9      | 1,1,1,1,1,1,2,1 |
-      | car5.LCU.RXC       | car7.LCU.RXC       | 1,1,1,1,1,1,1,1 |
-      | car5.LCU.RXC       | car8.LCU.CPU3      | 1,1,1,1,1,1,1,1 |
-      | car5.LCU.RXC       | car8.LCU.MDM8      | 1,1,1,1,1,1,1,3 |
-      | car5.LCU.RXC       | car8.LCU.MDM9      | 1,1,1,1,1,1,1,2 |
-      | car5.LCU.RXC       | car8.LCU.RXC       | 1,1,1,1,1,1,1,1 |
-      | car5.LCU.RXC       | car8.CCU.sys2.CPU3 | 1,1,1,1,1,1,1,1 |
-      | car5.LCU.RXC       | car8.CCU.sys2.MDM8 | 1,1,1,1,1,1,1,1 |
-      | car5.LCU.RXC       | car8.CCU.sys2.TXC  | 1,1,1,1,1,1,1,1 |
-      | car5.LCU.RXC       | car8.CCU.sys1.CPU3 | 1,1,1,1,1,1,1,1 |
-      | car5.LCU.RXC       | car8.CCU.sys1.MDM8 | 1,1,1,1,1,1,1,1 |
-      | car5.LCU.RXC       | car8.CCU.sys1.TXC  | 1,1,1,1,1,1,1,1 |
       | car6.LCU.CPU3      | car6.LCU.MDM8      | 1,1,1,1,1,3,1,1 |
       | car6.LCU.CPU3      | car6.LCU.MDM9      | 1,1,1,1,1,2,1,1 |
       | car6.LCU.CPU3      | car6.LCU.RXC       | 1,1,1,1,1,1,1,1 |
       | car6.LCU.CPU3      | car7.LCU.CPU3      | 1,1,1,1,1,1,1,1 |
       | car6.LCU.CPU3      | car7.LCU.MDM8      | 1,1,1,1,1,1,3,1 |
-      | car6.LCU.CPU3      | car7.LCU.MDM9      | 1,1,1,1,1,1,2,1 |
-      | car6.LCU.CPU3      | car7.LCU.RXC       | 1,1,1,1,1,1,1,1 |
       | car6.LCU.CPU3      | car8.LCU.CPU3      | 1,1,1,1,1,1,1,1 |
       | car6.LCU.CPU3      | car8.LCU.MDM8      | 1,1,1,1,1,1,1,3 |
-      | car6.LCU.CPU3      | car8.LCU.MDM9      | 1,1,1,1,1,1,1,2 |
-      | car6.LCU.CPU3      | car8.LCU.RXC       | 1,1,1,1,1,1,1,1 |
       | car6.LCU.CPU3      | car8.CCU.sys2.CPU3 | 1,1,1,1,1,1,1,1 |
       | car6.LCU.CPU3      | car8.CCU.sys2.MDM8 | 1,1,1,1,1,1,1,1 |
-      | car6.LCU.CPU3      | car8.CCU.sys2.TXC  | 1,1,1,1,1,1,1,1 |
       | car6.LCU.CPU3      | car8.CCU.sys1.CPU3 | 1,1,1,1,1,1,1,1 |
       | car6.LCU.CPU3      | car8.CCU.sys1.MDM8 | 1,1,1,1,1,1,1,1 |
-      | car6.LCU.CPU3      | car8.CCU.sys1.TXC  | 1,1,1,1,1,1,1,1 |
       | car6.LCU.MDM8      | car6.LCU.MDM9      | 1,1,1,1,1,3,1,1 |
       | car6.LCU.MDM8      | car6.LCU.RXC       | 1,1,1,1,1,-,1,1 |
       | car6.LCU.MDM8      | car7.LCU.CPU3      | 1,1,1,1,1,3,1,1 |
       | car6.LCU.MDM8      | car7.LCU.MDM8      | 1,1,1,1,1,3,3,1 |
-      | car6.LCU.MDM8      | car7.LCU.MDM9      | 1,1,1,1,1,3,2,1 |
-      | car6.LCU.MDM8      | car7.LCU.RXC       | 1,1,1,1,1,3,1,1 |
       | car6.LCU.MDM8      | car8.LCU.CPU3      | 1,1,1,1,1,3,1,1 |
       | car6.LCU.MDM8      | car8.LCU.MDM8      | 1,1,1,1,1,3,3,3 |
-      | car6.LCU.MDM8      | car8.LCU.MDM9      | 1,1,1,1,1,3,1,2 |
-      | car6.LCU.MDM8      | car8.LCU.RXC       | 1,1,1,1,1,3,1,1 |
       | car6.LCU.MDM8      | car8.CCU.sys2.CPU3 | 1,1,1,1,1,3,1,1 |
       | car6.LCU.MDM8      | car8.CCU.sys2.MDM8 | 1,1,1,1,1,3,3,3 |
-      | car6.LCU.MDM8      | car8.CCU.sys2.TXC  | 1,1,1,1,1,3,1,1 |
       | car6.LCU.MDM8      | car8.CCU.sys1.CPU3 | 1,1,1,1,1,3,1,1 |
       | car6.LCU.MDM8      | car8.CCU.sys1.MDM8 | 1,1,1,1,1,3,3,3 |
-      | car6.LCU.MDM8      | car8.CCU.sys1.TXC  | 1,1,1,1,1,3,1,1 |
-      | car6.LCU.MDM9      | car6.LCU.RXC       | 1,1,1,1,1,-,1,1 |
-      | car6.LCU.MDM9      | car7.LCU.CPU3      | 1,1,1,1,1,2,1,1 |
-      | car6.LCU.MDM9      | car7.LCU.MDM8      | 1,1,1,1,1,2,3,1 |
-      | car6.LCU.MDM9      | car7.LCU.MDM9      | 1,1,1,1,1,2,2,1 |
-      | car6.LCU.MDM9      | car7.LCU.RXC       | 1,1,1,1,1,2,1,1 |
-      | car6.LCU.MDM9      | car8.LCU.CPU3      | 1,1,1,1,1,2,1,1 |
-      | car6.LCU.MDM9      | car8.LCU.MDM8      | 1,1,1,1,1,2,1,3 |
-      | car6.LCU.MDM9      | car8.LCU.MDM9      | 1,1,1,1,1,2,1,2 |
-      | car6.LCU.MDM9      | car8.LCU.RXC       | 1,1,1,1,1,2,1,1 |
-      | car6.LCU.MDM9      | car8.CCU.sys2.CPU3 | 1,1,1,1,1,2,1,1 |
-      | car6.LCU.MDM9      | car8.CCU.sys2.MDM8 | 1,1,1,1,1,2,1,1 |
-      | car6.LCU.MDM9      | car8.CCU.sys2.TXC  | 1,1,1,1,1,2,1,1 |
-      | car6.LCU.MDM9      | car8.CCU.sys1.CPU3 | 1,1,1,1,1,2,1,1 |
-      | car6.LCU.MDM9      | car8.CCU.sys1.MDM8 | 1,1,1,1,1,2,1,1 |
-      | car6.LCU.MDM9      | car8.CCU.sys1.TXC  | 1,1,1,1,1,2,1,1 |
-      | car6.LCU.RXC       | car7.LCU.CPU3      | 1,1,1,1,1,1,1,1 |
-      | car6.LCU.RXC       | car7.LCU.MDM8      | 1,1,1,1,1,1,3,1 |
-      | car6.LCU.RXC       | car7.LCU.MDM9      | 1,1,1,1,1,1,2,1 |
-      | car6.LCU.RXC       | car7.LCU.RXC       | 1,1,1,1,1,1,1,1 |
-      | car6.LCU.RXC       | car8.LCU.CPU3      | 1,1,1,1,1,1,1,1 |
-      | car6.LCU.RXC       | car8.LCU.MDM8      | 1,1,1,1,1,1,1,3 |
-      | car6.LCU.RXC       | car8.LCU.MDM9      | 1,1,1,1,1,1,1,2 |
-      | car6.LCU.RXC       | car8.LCU.RXC       | 1,1,1,1,1,1,1,1 |
-      | car6.LCU.RXC       | car8.CCU.sys2.CPU3 | 1,1,1,1,1,1,1,1 |
-      | car6.LCU.RXC       | car8.CCU.sys2.MDM8 | 1,1,1,1,1,1,1,1 |
-      | car6.LCU.RXC       | car8.CCU.sys2.TXC  | 1,1,1,1,1,1,1,1 |
-      | car6.LCU.RXC       | car8.CCU.sys1.CPU3 | 1,1,1,1,1,1,1,1 |
-      | car6.LCU.RXC       | car8.CCU.sys1.MDM8 | 1,1,1,1,1,1,1,1 |
-      | car6.LCU.RXC       | car8.CCU.sys1.TXC  | 1,1,1,1,1,1,1,1 |
       | car7.LCU.CPU3      | car7.LCU.MDM8      | 1,1,1,1,1,1,3,1 |
       | car7.LCU.CPU3      | car7.LCU.MDM9      | 1,1,1,1,1,1,2,1 |
       | car7.LCU.CPU3      | car7.LCU.RXC       | 1,1,1,1,1,1,1,1 |
       | car7.LCU.CPU3      | car8.LCU.CPU3      | 1,1,1,1,1,1,1,1 |
       | car7.LCU.CPU3      | car8.LCU.MDM8      | 1,1,1,1,1,1,1,3 |
-      | car7.LCU.CPU3      | car8.LCU.MDM9      | 1,1,1,1,1,1,1,2 |
-      | car7.LCU.CPU3      | car8.LCU.RXC       | 1,1,1,1,1,1,1,1 |
       | car7.LCU.CPU3      | car8.CCU.sys2.CPU3 | 1,1,1,1,1,1,1,1 |
       | car7.LCU.CPU3      | car8.CCU.sys2.MDM8 | 1,1,1,1,1,1,1,1 |
-      | car7.LCU.CPU3      | car8.CCU.sys2.TXC  | 1,1,1,1,1,1,1,1 |
       | car7.LCU.CPU3      | car8.CCU.sys1.CPU3 | 1,1,1,1,1,1,1,1 |
       | car7.LCU.CPU3      | car8.CCU.sys1.MDM8 | 1,1,1,1,1,1,1,1 |
-      | car7.LCU.CPU3      | car8.CCU.sys1.TXC  | 1,1,1,1,1,1,1,1 |
       | car7.LCU.MDM8      | car7.LCU.MDM9      | 1,1,1,1,1,1,3,1 |
       | car7.LCU.MDM8      | car7.LCU.RXC       | 1,1,1,1,1,1,-,1 |
       | car7.LCU.MDM8      | car8.LCU.CPU3      | 1,1,1,1,1,1,3,1 |
       | car7.LCU.MDM8      | car8.LCU.MDM8      | 1,1,1,1,1,1,3,3 |
-      | car7.LCU.MDM8      | car8.LCU.MDM9      | 1,1,1,1,1,1,3,2 |
-      | car7.LCU.MDM8      | car8.LCU.RXC       | 1,1,1,1,1,1,3,1 |
       | car7.LCU.MDM8      | car8.CCU.sys2.CPU3 | 1,1,1,1,1,1,3,1 |
       | car7.LCU.MDM8      | car8.CCU.sys2.MDM8 | 1,1,1,1,1,1,3,3 |
-      | car7.LCU.MDM8      | car8.CCU.sys2.TXC  | 1,1,1,1,1,1,3,1 |
       | car7.LCU.MDM8      | car8.CCU.sys1.CPU3 | 1,1,1,1,1,1,3,1 |
       | car7.LCU.MDM8      | car8.CCU.sys1.MDM8 | 1,1,1,1,1,1,3,3 |
-      | car7.LCU.MDM8      | car8.CCU.sys1.TXC  | 1,1,1,1,1,1,3,1 |
-      | car7.LCU.MDM9      | car7.LCU.RXC       | 1,1,1,1,1,1,-,1 |
-      | car7.LCU.MDM9      | car8.LCU.CPU3      | 1,1,1,1,1,1,2,1 |
-      | car7.LCU.MDM9      | car8.LCU.MDM8      | 1,1,1,1,1,1,2,3 |
-      | car7.LCU.MDM9      | car8.LCU.MDM9      | 1,1,1,1,1,1,2,2 |
-      | car7.LCU.MDM9      | car8.LCU.RXC       | 1,1,1,1,1,1,2,1 |
-      | car7.LCU.MDM9      | car8.CCU.sys2.CPU3 | 1,1,1,1,1,1,2,1 |
-      | car7.LCU.MDM9      | car8.CCU.sys2.MDM8 | 1,1,1,1,1,1,2,1 |
-      | car7.LCU.MDM9      | car8.CCU.sys2.TXC  | 1,1,1,1,1,1,2,1 |
-      | car7.LCU.MDM9      | car8.CCU.sys1.CPU3 | 1,1,1,1,1,1,2,1 |
-      | car7.LCU.MDM9      | car8.CCU.sys1.MDM8 | 1,1,1,1,1,1,2,1 |
-      | car7.LCU.MDM9      | car8.CCU.sys1.TXC  | 1,1,1,1,1,1,2,1 |
-      | car7.LCU.RXC       | car8.LCU.CPU3      | 1,1,1,1,1,1,1,1 |
-      | car7.LCU.RXC       | car8.LCU.MDM8      | 1,1,1,1,1,1,1,3 |
-      | car7.LCU.RXC       | car8.LCU.MDM9      | 1,1,1,1,1,1,1,2 |
-      | car7.LCU.RXC       | car8.LCU.RXC       | 1,1,1,1,1,1,1,1 |
-      | car7.LCU.RXC       | car8.CCU.sys2.CPU3 | 1,1,1,1,1,1,1,1 |
-      | car7.LCU.RXC       | car8.CCU.sys2.MDM8 | 1,1,1,1,1,1,1,1 |
-      | car7.LCU.RXC       | car8.CCU.sys2.TXC  | 1,1,1,1,1,1,1,1 |
-      | car7.LCU.RXC       | car8.CCU.sys1.CPU3 | 1,1,1,1,1,1,1,1 |
-      | car7.LCU.RXC       | car8.CCU.sys1.MDM8 | 1,1,1,1,1,1,1,1 |
-      | car7.LCU.RXC       | car8.CCU.sys1.TXC  | 1,1,1,1,1,1,1,1 |
       | car8.LCU.CPU3      | car8.LCU.MDM8      | 1,1,1,1,1,1,1,3 |
       | car8.LCU.CPU3      | car8.LCU.MDM9      | 1,1,1,1,1,1,1,2 |
       | car8.LCU.CPU3      | car8.LCU.RXC       | 1,1,1,1,1,1,1,1 |
       | car8.LCU.CPU3      | car8.CCU.sys2.CPU3 | 1,1,1,1,1,1,1,1 |
       | car8.LCU.CPU3      | car8.CCU.sys2.MDM8 | 1,1,1,1,1,1,1,1 |
-      | car8.LCU.CPU3      | car8.CCU.sys2.TXC  | 1,1,1,1,1,1,1,1 |
       | car8.LCU.CPU3      | car8.CCU.sys1.CPU3 | 1,1,1,1,1,1,1,1 |
       | car8.LCU.CPU3      | car8.CCU.sys1.MDM8 | 1,1,1,1,1,1,1,1 |
-      | car8.LCU.CPU3      | car8.CCU.sys1.TXC  | 1,1,1,1,1,1,1,1 |
       | car8.LCU.MDM8      | car8.LCU.MDM9      | 1,1,1,1,1,1,1,3 |
       | car8.LCU.MDM8      | car8.LCU.RXC       | 1,1,1,1,1,1,1,- |
       | car8.LCU.MDM8      | car8.CCU.sys2.CPU3 | 1,1,1,1,1,1,1,3 |
       | car8.LCU.MDM8      | car8.CCU.sys2.MDM8 | 1,1,1,1,1,1,1,3 |
-      | car8.LCU.MDM8      | car8.CCU.sys2.TXC  | 1,1,1,1,1,1,1,3 |
       | car8.LCU.MDM8      | car8.CCU.sys1.CPU3 | 1,1,1,1,1,1,1,3 |
       | car8.LCU.MDM8      | car8.CCU.sys1.MDM8 | 1,1,1,1,1,1,1,3 |
-      | car8.LCU.MDM8      | car8.CCU.sys1.TXC  | 1,1,1,1,1,1,1,3 |
-      | car8.LCU.MDM9      | car8.LCU.RXC       | 1,1,1,1,1,1,1,- |
-      | car8.LCU.MDM9      | car8.CCU.sys2.CPU3 | 1,1,1,1,1,1,1,2 |
-      | car8.LCU.MDM9      | car8.CCU.sys2.MDM8 | 1,1,1,1,1,1,1,2 |
-      | car8.LCU.MDM9      | car8.CCU.sys2.TXC  | 1,1,1,1,1,1,1,2 |
-      | car8.LCU.MDM9      | car8.CCU.sys1.CPU3 | 1,1,1,1,1,1,1,2 |
-      | car8.LCU.MDM9      | car8.CCU.sys1.MDM8 | 1,1,1,1,1,1,1,2 |
-      | car8.LCU.MDM9      | car8.CCU.sys1.TXC  | 1,1,1,1,1,1,1,2 |
-      | car8.LCU.RXC       | car8.CCU.sys2.CPU3 | 1,1,1,1,1,1,1,1 |
-      | car8.LCU.RXC       | car8.CCU.sys2.MDM8 | 1,1,1,1,1,1,1,1 |
-      | car8.LCU.RXC       | car8.CCU.sys2.TXC  | 1,1,1,1,1,1,1,1 |
-      | car8.LCU.RXC       | car8.CCU.sys1.CPU3 | 1,1,1,1,1,1,1,1 |
-      | car8.LCU.RXC       | car8.CCU.sys1.MDM8 | 1,1,1,1,1,1,1,1 |
-      | car8.LCU.RXC       | car8.CCU.sys1.TXC  | 1,1,1,1,1,1,1,1 |
       | car8.CCU.sys2.CPU3 | car8.CCU.sys2.MDM8 | 1,1,1,1,1,1,1,1 |
       | car8.CCU.sys2.CPU3 | car8.CCU.sys2.TXC  | 1,1,1,1,1,1,1,1 |
       | car8.CCU.sys2.CPU3 | car8.CCU.sys1.CPU3 | 1,1,1,1,1,1,1,1 |
       | car8.CCU.sys2.CPU3 | car8.CCU.sys1.MDM8 | 1,1,1,1,1,1,1,1 |
-      | car8.CCU.sys2.CPU3 | car8.CCU.sys1.TXC  | 1,1,1,1,1,1,1,1 |
       | car8.CCU.sys2.MDM8 | car8.CCU.sys2.TXC  | 1,1,1,1,1,1,1,1 |
       | car8.CCU.sys2.MDM8 | car8.CCU.sys1.CPU3 | 1,1,1,1,1,1,1,1 |
       | car8.CCU.sys2.MDM8 | car8.CCU.sys1.MDM8 | 1,1,1,1,1,1,1,1 |
-      | car8.CCU.sys2.MDM8 | car8.CCU.sys1.TXC  | 1,1,1,1,1,1,1,1 |
-      | car8.CCU.sys2.TXC  | car8.CCU.sys1.CPU3 | 1,1,1,1,1,1,1,1 |
-      | car8.CCU.sys2.TXC  | car8.CCU.sys1.MDM8 | 1,1,1,1,1,1,1,1 |
-      | car8.CCU.sys2.TXC  | car8.CCU.sys1.TXC  | 1,1,1,1,1,1,1,1 |
       | car8.CCU.sys1.CPU3 | car8.CCU.sys1.MDM8 | 1,1,1,1,1,1,1,1 |
       | car8.CCU.sys1.CPU3 | car8.CCU.sys1.TXC  | 1,1,1,1,1,1,1,1 |
       | car8.CCU.sys1.MDM8 | car8.CCU.sys1.TXC  | 1,1,1,1,1,1,1,1 |
@@ -1943,1032 +1371,1703 @@ Feature: F-NET-32 Double-fault campaign, 8-car set
       | car1.CCU.sys1.MDM8 | car1.CCU.sys2.TXC | 3,3,3,3,3,3,3,3 |
       | car1.CCU.sys1.MDM8 | car8.CCU.sys1     | 1,1,1,1,1,1,1,1 |
       | car1.CCU.sys1.MDM8 | car8.CCU.sys2     | 1,1,1,1,1,1,1,1 |
-      | car1.CCU.sys1.MDM8 | car8.CCU.sys1.TXC | 1,1,1,1,1,1,1,1 |
-      | car1.CCU.sys1.MDM8 | car8.CCU.sys2.TXC | 1,1,1,1,1,1,1,1 |
       | car1.CCU.sys1.MDM8 | car1.LCU          | 3,3,3,3,3,3,3,3 |
-      | car1.CCU.sys1.MDM8 | car1.LCU.RXC      | 1,1,1,1,1,1,1,1 |
       | car1.CCU.sys1.MDM8 | car2.LCU          | 1,3,3,3,3,3,3,3 |
-      | car1.CCU.sys1.MDM8 | car2.LCU.RXC      | 1,1,1,1,1,1,1,1 |
       | car1.CCU.sys1.MDM8 | car3.LCU          | 1,1,3,3,3,3,3,3 |
-      | car1.CCU.sys1.MDM8 | car3.LCU.RXC      | 1,1,1,1,1,1,1,1 |
       | car1.CCU.sys1.MDM8 | car4.LCU          | 1,1,1,3,3,3,3,3 |
-      | car1.CCU.sys1.MDM8 | car4.LCU.RXC      | 1,1,1,1,1,1,1,1 |
       | car1.CCU.sys1.MDM8 | car5.LCU          | 1,1,1,1,3,3,3,3 |
-      | car1.CCU.sys1.MDM8 | car5.LCU.RXC      | 1,1,1,1,1,1,1,1 |
       | car1.CCU.sys1.MDM8 | car6.LCU          | 1,1,1,1,1,3,3,3 |
-      | car1.CCU.sys1.MDM8 | car6.LCU.RXC      | 1,1,1,1,1,1,1,1 |
       | car1.CCU.sys1.MDM8 | car7.LCU          | 1,1,1,1,1,1,3,3 |
-      | car1.CCU.sys1.MDM8 | car7.LCU.RXC      | 1,1,1,1,1,1,1,1 |
       | car1.CCU.sys1.MDM8 | car8.LCU          | 1,1,1,1,1,1,1,3 |
-      | car1.CCU.sys1.MDM8 | car8.LCU.RXC      | 1,1,1,1,1,1,1,1 |
       | car1.CCU.sys1.TXC  | car1.CCU.sys1     | 1,1,1,1,1,1,1,1 |
-      | car1.CCU.sys1.TXC  | car1.CCU.sys2     | -,-,-,-,-,-,-,- |
-      | car1.CCU.sys1.TXC  | car1.CCU.sys1.TXC | 1,1,1,1,1,1,1,1 |
-      | car1.CCU.sys1.TXC  | car1.CCU.sys2.TXC | -,-,-,-,-,-,-,- |
-      | car1.CCU.sys1.TXC  | car8.CCU.sys1     | 1,1,1,1,1,1,1,1 |
-      | car1.CCU.sys1.TXC  | car8.CCU.sys2     | 1,1,1,1,1,1,1,1 |
-      | car1.CCU.sys1.TXC  | car8.CCU.sys1.TXC | 1,1,1,1,1,1,1,1 |
-      | car1.CCU.sys1.TXC  | car8.CCU.sys2.TXC | 1,1,1,1,1,1,1,1 |
-      | car1.CCU.sys1.TXC  | car1.LCU          | 3,1,1,1,1,1,1,1 |
-      | car1.CCU.sys1.TXC  | car1.LCU.RXC      | 1,1,1,1,1,1,1,1 |
-      | car1.CCU.sys1.TXC  | car2.LCU          | 1,3,1,1,1,1,1,1 |
-      | car1.CCU.sys1.TXC  | car2.LCU.RXC      | 1,1,1,1,1,1,1,1 |
-      | car1.CCU.sys1.TXC  | car3.LCU          | 1,1,3,1,1,1,1,1 |
-      | car1.CCU.sys1.TXC  | car3.LCU.RXC      | 1,1,1,1,1,1,1,1 |
-      | car1.CCU.sys1.TXC  | car4.LCU          | 1,1,1,3,1,1,1,1 |
-      | car1.CCU.sys1.TXC  | car4.LCU.RXC      | 1,1,1,1,1,1,1,1 |
-      | car1.CCU.sys1.TXC  | car5.LCU          | 1,1,1,1,3,1,1,1 |
-      | car1.CCU.sys1.TXC  | car5.LCU.RXC      | 1,1,1,1,1,1,1,1 |
-      | car1.CCU.sys1.TXC  | car6.LCU          | 1,1,1,1,1,3,1,1 |
-      | car1.CCU.sys1.TXC  | car6.LCU.RXC      | 1,1,1,1,1,1,1,1 |
-      | car1.CCU.sys1.TXC  | car7.LCU          | 1,1,1,1,1,1,3,1 |
-      | car1.CCU.sys1.TXC  | car7.LCU.RXC      | 1,1,1,1,1,1,1,1 |
-      | car1.CCU.sys1.TXC  | car8.LCU          | 1,1,1,1,1,1,1,3 |
-      | car1.CCU.sys1.TXC  | car8.LCU.RXC      | 1,1,1,1,1,1,1,1 |
       | car1.CCU.sys2.CPU3 | car1.CCU.sys1     | 1,1,1,1,1,1,1,1 |
       | car1.CCU.sys2.CPU3 | car1.CCU.sys2     | 1,1,1,1,1,1,1,1 |
       | car1.CCU.sys2.CPU3 | car1.CCU.sys1.TXC | 1,1,1,1,1,1,1,1 |
       | car1.CCU.sys2.CPU3 | car1.CCU.sys2.TXC | 1,1,1,1,1,1,1,1 |
       | car1.CCU.sys2.CPU3 | car8.CCU.sys1     | 1,1,1,1,1,1,1,1 |
       | car1.CCU.sys2.CPU3 | car8.CCU.sys2     | 1,1,1,1,1,1,1,1 |
-      | car1.CCU.sys2.CPU3 | car8.CCU.sys1.TXC | 1,1,1,1,1,1,1,1 |
-      | car1.CCU.sys2.CPU3 | car8.CCU.sys2.TXC | 1,1,1,1,1,1,1,1 |
       | car1.CCU.sys2.CPU3 | car1.LCU          | 3,1,1,1,1,1,1,1 |
-      | car1.CCU.sys2.CPU3 | car1.LCU.RXC      | 1,1,1,1,1,1,1,1 |
       | car1.CCU.sys2.CPU3 | car2.LCU          | 1,3,1,1,1,1,1,1 |
-      | car1.CCU.sys2.CPU3 | car2.LCU.RXC      | 1,1,1,1,1,1,1,1 |
       | car1.CCU.sys2.CPU3 | car3.LCU          | 1,1,3,1,1,1,1,1 |
-      | car1.CCU.sys2.CPU3 | car3.LCU.RXC      | 1,1,1,1,1,1,1,1 |
       | car1.CCU.sys2.CPU3 | car4.LCU          | 1,1,1,3,1,1,1,1 |
-      | car1.CCU.sys2.CPU3 | car4.LCU.RXC      | 1,1,1,1,1,1,1,1 |
       | car1.CCU.sys2.CPU3 | car5.LCU          | 1,1,1,1,3,1,1,1 |
-      | car1.CCU.sys2.CPU3 | car5.LCU.RXC      | 1,1,1,1,1,1,1,1 |
       | car1.CCU.sys2.CPU3 | car6.LCU          | 1,1,1,1,1,3,1,1 |
-      | car1.CCU.sys2.CPU3 | car6.LCU.RXC      | 1,1,1,1,1,1,1,1 |
       | car1.CCU.sys2.CPU3 | car7.LCU          | 1,1,1,1,1,1,3,1 |
-      | car1.CCU.sys2.CPU3 | car7.LCU.RXC      | 1,1,1,1,1,1,1,1 |
       | car1.CCU.sys2.CPU3 | car8.LCU          | 1,1,1,1,1,1,1,3 |
-      | car1.CCU.sys2.CPU3 | car8.LCU.RXC      | 1,1,1,1,1,1,1,1 |
       | car1.CCU.sys2.MDM8 | car1.CCU.sys1     | 3,3,3,3,3,3,3,3 |
       | car1.CCU.sys2.MDM8 | car1.CCU.sys2     | 1,1,1,1,1,1,1,1 |
-      | car1.CCU.sys2.MDM8 | car1.CCU.sys1.TXC | -,-,-,-,-,-,-,- |
       | car1.CCU.sys2.MDM8 | car1.CCU.sys2.TXC | 1,1,1,1,1,1,1,1 |
       | car1.CCU.sys2.MDM8 | car8.CCU.sys1     | 3,3,3,3,3,3,3,3 |
       | car1.CCU.sys2.MDM8 | car8.CCU.sys2     | 3,3,3,3,3,3,3,3 |
-      | car1.CCU.sys2.MDM8 | car8.CCU.sys1.TXC | 1,1,1,1,1,1,1,1 |
-      | car1.CCU.sys2.MDM8 | car8.CCU.sys2.TXC | 1,1,1,1,1,1,1,1 |
       | car1.CCU.sys2.MDM8 | car1.LCU          | 3,1,1,1,1,1,1,1 |
-      | car1.CCU.sys2.MDM8 | car1.LCU.RXC      | 1,1,1,1,1,1,1,1 |
       | car1.CCU.sys2.MDM8 | car2.LCU          | 3,3,1,1,1,1,1,1 |
-      | car1.CCU.sys2.MDM8 | car2.LCU.RXC      | 1,1,1,1,1,1,1,1 |
       | car1.CCU.sys2.MDM8 | car3.LCU          | 3,3,3,1,1,1,1,1 |
-      | car1.CCU.sys2.MDM8 | car3.LCU.RXC      | 1,1,1,1,1,1,1,1 |
       | car1.CCU.sys2.MDM8 | car4.LCU          | 3,3,3,3,1,1,1,1 |
-      | car1.CCU.sys2.MDM8 | car4.LCU.RXC      | 1,1,1,1,1,1,1,1 |
       | car1.CCU.sys2.MDM8 | car5.LCU          | 3,3,3,3,3,1,1,1 |
-      | car1.CCU.sys2.MDM8 | car5.LCU.RXC      | 1,1,1,1,1,1,1,1 |
       | car1.CCU.sys2.MDM8 | car6.LCU          | 3,3,3,3,3,3,1,1 |
-      | car1.CCU.sys2.MDM8 | car6.LCU.RXC      | 1,1,1,1,1,1,1,1 |
       | car1.CCU.sys2.MDM8 | car7.LCU          | 3,3,3,3,3,3,3,1 |
-      | car1.CCU.sys2.MDM8 | car7.LCU.RXC      | 1,1,1,1,1,1,1,1 |
       | car1.CCU.sys2.MDM8 | car8.LCU          | 3,3,3,3,3,3,3,3 |
-      | car1.CCU.sys2.MDM8 | car8.LCU.RXC      | 1,1,1,1,1,1,1,1 |
       | car1.CCU.sys2.TXC  | car1.CCU.sys1     | 3,3,3,3,3,3,3,3 |
       | car1.CCU.sys2.TXC  | car1.CCU.sys2     | 1,1,1,1,1,1,1,1 |
-      | car1.CCU.sys2.TXC  | car1.CCU.sys1.TXC | -,-,-,-,-,-,-,- |
-      | car1.CCU.sys2.TXC  | car1.CCU.sys2.TXC | 1,1,1,1,1,1,1,1 |
-      | car1.CCU.sys2.TXC  | car8.CCU.sys1     | 1,1,1,1,1,1,1,1 |
-      | car1.CCU.sys2.TXC  | car8.CCU.sys2     | 1,1,1,1,1,1,1,1 |
-      | car1.CCU.sys2.TXC  | car8.CCU.sys1.TXC | 1,1,1,1,1,1,1,1 |
-      | car1.CCU.sys2.TXC  | car8.CCU.sys2.TXC | 1,1,1,1,1,1,1,1 |
-      | car1.CCU.sys2.TXC  | car1.LCU          | 3,1,1,1,1,1,1,1 |
-      | car1.CCU.sys2.TXC  | car1.LCU.RXC      | 1,1,1,1,1,1,1,1 |
-      | car1.CCU.sys2.TXC  | car2.LCU          | 1,3,1,1,1,1,1,1 |
-      | car1.CCU.sys2.TXC  | car2.LCU.RXC      | 1,1,1,1,1,1,1,1 |
-      | car1.CCU.sys2.TXC  | car3.LCU          | 1,1,3,1,1,1,1,1 |
-      | car1.CCU.sys2.TXC  | car3.LCU.RXC      | 1,1,1,1,1,1,1,1 |
-      | car1.CCU.sys2.TXC  | car4.LCU          | 1,1,1,3,1,1,1,1 |
-      | car1.CCU.sys2.TXC  | car4.LCU.RXC      | 1,1,1,1,1,1,1,1 |
-      | car1.CCU.sys2.TXC  | car5.LCU          | 1,1,1,1,3,1,1,1 |
-      | car1.CCU.sys2.TXC  | car5.LCU.RXC      | 1,1,1,1,1,1,1,1 |
-      | car1.CCU.sys2.TXC  | car6.LCU          | 1,1,1,1,1,3,1,1 |
-      | car1.CCU.sys2.TXC  | car6.LCU.RXC      | 1,1,1,1,1,1,1,1 |
-      | car1.CCU.sys2.TXC  | car7.LCU          | 1,1,1,1,1,1,3,1 |
-      | car1.CCU.sys2.TXC  | car7.LCU.RXC      | 1,1,1,1,1,1,1,1 |
-      | car1.CCU.sys2.TXC  | car8.LCU          | 1,1,1,1,1,1,1,3 |
-      | car1.CCU.sys2.TXC  | car8.LCU.RXC      | 1,1,1,1,1,1,1,1 |
       | car1.LCU.CPU3      | car1.CCU.sys1     | 1,1,1,1,1,1,1,1 |
       | car1.LCU.CPU3      | car1.CCU.sys2     | 1,1,1,1,1,1,1,1 |
-      | car1.LCU.CPU3      | car1.CCU.sys1.TXC | 1,1,1,1,1,1,1,1 |
-      | car1.LCU.CPU3      | car1.CCU.sys2.TXC | 1,1,1,1,1,1,1,1 |
       | car1.LCU.CPU3      | car8.CCU.sys1     | 1,1,1,1,1,1,1,1 |
       | car1.LCU.CPU3      | car8.CCU.sys2     | 1,1,1,1,1,1,1,1 |
-      | car1.LCU.CPU3      | car8.CCU.sys1.TXC | 1,1,1,1,1,1,1,1 |
-      | car1.LCU.CPU3      | car8.CCU.sys2.TXC | 1,1,1,1,1,1,1,1 |
       | car1.LCU.CPU3      | car1.LCU          | 3,1,1,1,1,1,1,1 |
       | car1.LCU.CPU3      | car1.LCU.RXC      | 1,1,1,1,1,1,1,1 |
       | car1.LCU.CPU3      | car2.LCU          | 1,3,1,1,1,1,1,1 |
-      | car1.LCU.CPU3      | car2.LCU.RXC      | 1,1,1,1,1,1,1,1 |
       | car1.LCU.CPU3      | car3.LCU          | 1,1,3,1,1,1,1,1 |
-      | car1.LCU.CPU3      | car3.LCU.RXC      | 1,1,1,1,1,1,1,1 |
       | car1.LCU.CPU3      | car4.LCU          | 1,1,1,3,1,1,1,1 |
-      | car1.LCU.CPU3      | car4.LCU.RXC      | 1,1,1,1,1,1,1,1 |
       | car1.LCU.CPU3      | car5.LCU          | 1,1,1,1,3,1,1,1 |
-      | car1.LCU.CPU3      | car5.LCU.RXC      | 1,1,1,1,1,1,1,1 |
       | car1.LCU.CPU3      | car6.LCU          | 1,1,1,1,1,3,1,1 |
-      | car1.LCU.CPU3      | car6.LCU.RXC      | 1,1,1,1,1,1,1,1 |
       | car1.LCU.CPU3      | car7.LCU          | 1,1,1,1,1,1,3,1 |
-      | car1.LCU.CPU3      | car7.LCU.RXC      | 1,1,1,1,1,1,1,1 |
       | car1.LCU.CPU3      | car8.LCU          | 1,1,1,1,1,1,1,3 |
-      | car1.LCU.CPU3      | car8.LCU.RXC      | 1,1,1,1,1,1,1,1 |
       | car1.LCU.MDM8      | car1.CCU.sys1     | 3,3,3,3,3,3,3,3 |
       | car1.LCU.MDM8      | car1.CCU.sys2     | 3,1,1,1,1,1,1,1 |
-      | car1.LCU.MDM8      | car1.CCU.sys1.TXC | 3,1,1,1,1,1,1,1 |
-      | car1.LCU.MDM8      | car1.CCU.sys2.TXC | 3,1,1,1,1,1,1,1 |
       | car1.LCU.MDM8      | car8.CCU.sys1     | 3,3,3,3,3,3,3,3 |
       | car1.LCU.MDM8      | car8.CCU.sys2     | 3,3,3,3,3,3,3,3 |
-      | car1.LCU.MDM8      | car8.CCU.sys1.TXC | 3,1,1,1,1,1,1,1 |
-      | car1.LCU.MDM8      | car8.CCU.sys2.TXC | 3,1,1,1,1,1,1,1 |
       | car1.LCU.MDM8      | car1.LCU          | 3,1,1,1,1,1,1,1 |
       | car1.LCU.MDM8      | car1.LCU.RXC      | -,1,1,1,1,1,1,1 |
       | car1.LCU.MDM8      | car2.LCU          | 3,3,1,1,1,1,1,1 |
-      | car1.LCU.MDM8      | car2.LCU.RXC      | 3,1,1,1,1,1,1,1 |
       | car1.LCU.MDM8      | car3.LCU          | 3,3,3,1,1,1,1,1 |
-      | car1.LCU.MDM8      | car3.LCU.RXC      | 3,1,1,1,1,1,1,1 |
       | car1.LCU.MDM8      | car4.LCU          | 3,3,3,3,1,1,1,1 |
-      | car1.LCU.MDM8      | car4.LCU.RXC      | 3,1,1,1,1,1,1,1 |
       | car1.LCU.MDM8      | car5.LCU          | 3,3,3,3,3,1,1,1 |
-      | car1.LCU.MDM8      | car5.LCU.RXC      | 3,1,1,1,1,1,1,1 |
       | car1.LCU.MDM8      | car6.LCU          | 3,3,3,3,3,3,1,1 |
-      | car1.LCU.MDM8      | car6.LCU.RXC      | 3,1,1,1,1,1,1,1 |
       | car1.LCU.MDM8      | car7.LCU          | 3,3,3,3,3,3,3,1 |
-      | car1.LCU.MDM8      | car7.LCU.RXC      | 3,1,1,1,1,1,1,1 |
       | car1.LCU.MDM8      | car8.LCU          | 3,3,3,3,3,3,3,3 |
-      | car1.LCU.MDM8      | car8.LCU.RXC      | 3,1,1,1,1,1,1,1 |
-      | car1.LCU.MDM9      | car1.CCU.sys1     | 2,1,1,1,1,1,1,1 |
-      | car1.LCU.MDM9      | car1.CCU.sys2     | 2,1,1,1,1,1,1,1 |
-      | car1.LCU.MDM9      | car1.CCU.sys1.TXC | 2,1,1,1,1,1,1,1 |
-      | car1.LCU.MDM9      | car1.CCU.sys2.TXC | 2,1,1,1,1,1,1,1 |
-      | car1.LCU.MDM9      | car8.CCU.sys1     | 2,1,1,1,1,1,1,1 |
-      | car1.LCU.MDM9      | car8.CCU.sys2     | 2,1,1,1,1,1,1,1 |
-      | car1.LCU.MDM9      | car8.CCU.sys1.TXC | 2,1,1,1,1,1,1,1 |
-      | car1.LCU.MDM9      | car8.CCU.sys2.TXC | 2,1,1,1,1,1,1,1 |
       | car1.LCU.MDM9      | car1.LCU          | 3,1,1,1,1,1,1,1 |
-      | car1.LCU.MDM9      | car1.LCU.RXC      | -,1,1,1,1,1,1,1 |
-      | car1.LCU.MDM9      | car2.LCU          | 2,3,1,1,1,1,1,1 |
-      | car1.LCU.MDM9      | car2.LCU.RXC      | 2,1,1,1,1,1,1,1 |
-      | car1.LCU.MDM9      | car3.LCU          | 2,1,3,1,1,1,1,1 |
-      | car1.LCU.MDM9      | car3.LCU.RXC      | 2,1,1,1,1,1,1,1 |
-      | car1.LCU.MDM9      | car4.LCU          | 2,1,1,3,1,1,1,1 |
-      | car1.LCU.MDM9      | car4.LCU.RXC      | 2,1,1,1,1,1,1,1 |
-      | car1.LCU.MDM9      | car5.LCU          | 2,1,1,1,3,1,1,1 |
-      | car1.LCU.MDM9      | car5.LCU.RXC      | 2,1,1,1,1,1,1,1 |
-      | car1.LCU.MDM9      | car6.LCU          | 2,1,1,1,1,3,1,1 |
-      | car1.LCU.MDM9      | car6.LCU.RXC      | 2,1,1,1,1,1,1,1 |
-      | car1.LCU.MDM9      | car7.LCU          | 2,1,1,1,1,1,3,1 |
-      | car1.LCU.MDM9      | car7.LCU.RXC      | 2,1,1,1,1,1,1,1 |
-      | car1.LCU.MDM9      | car8.LCU          | 2,1,1,1,1,1,1,3 |
-      | car1.LCU.MDM9      | car8.LCU.RXC      | 2,1,1,1,1,1,1,1 |
-      | car1.LCU.RXC       | car1.CCU.sys1     | 1,1,1,1,1,1,1,1 |
-      | car1.LCU.RXC       | car1.CCU.sys2     | 1,1,1,1,1,1,1,1 |
-      | car1.LCU.RXC       | car1.CCU.sys1.TXC | 1,1,1,1,1,1,1,1 |
-      | car1.LCU.RXC       | car1.CCU.sys2.TXC | 1,1,1,1,1,1,1,1 |
-      | car1.LCU.RXC       | car8.CCU.sys1     | 1,1,1,1,1,1,1,1 |
-      | car1.LCU.RXC       | car8.CCU.sys2     | 1,1,1,1,1,1,1,1 |
-      | car1.LCU.RXC       | car8.CCU.sys1.TXC | 1,1,1,1,1,1,1,1 |
-      | car1.LCU.RXC       | car8.CCU.sys2.TXC | 1,1,1,1,1,1,1,1 |
       | car1.LCU.RXC       | car1.LCU          | -,1,1,1,1,1,1,1 |
-      | car1.LCU.RXC       | car1.LCU.RXC      | 1,1,1,1,1,1,1,1 |
-      | car1.LCU.RXC       | car2.LCU          | 1,3,1,1,1,1,1,1 |
-      | car1.LCU.RXC       | car2.LCU.RXC      | 1,1,1,1,1,1,1,1 |
-      | car1.LCU.RXC       | car3.LCU          | 1,1,3,1,1,1,1,1 |
-      | car1.LCU.RXC       | car3.LCU.RXC      | 1,1,1,1,1,1,1,1 |
-      | car1.LCU.RXC       | car4.LCU          | 1,1,1,3,1,1,1,1 |
-      | car1.LCU.RXC       | car4.LCU.RXC      | 1,1,1,1,1,1,1,1 |
-      | car1.LCU.RXC       | car5.LCU          | 1,1,1,1,3,1,1,1 |
-      | car1.LCU.RXC       | car5.LCU.RXC      | 1,1,1,1,1,1,1,1 |
-      | car1.LCU.RXC       | car6.LCU          | 1,1,1,1,1,3,1,1 |
-      | car1.LCU.RXC       | car6.LCU.RXC      | 1,1,1,1,1,1,1,1 |
-      | car1.LCU.RXC       | car7.LCU          | 1,1,1,1,1,1,3,1 |
-      | car1.LCU.RXC       | car7.LCU.RXC      | 1,1,1,1,1,1,1,1 |
-      | car1.LCU.RXC       | car8.LCU          | 1,1,1,1,1,1,1,3 |
-      | car1.LCU.RXC       | car8.LCU.RXC      | 1,1,1,1,1,1,1,1 |
       | car2.LCU.CPU3      | car1.CCU.sys1     | 1,1,1,1,1,1,1,1 |
       | car2.LCU.CPU3      | car1.CCU.sys2     | 1,1,1,1,1,1,1,1 |
-      | car2.LCU.CPU3      | car1.CCU.sys1.TXC | 1,1,1,1,1,1,1,1 |
-      | car2.LCU.CPU3      | car1.CCU.sys2.TXC | 1,1,1,1,1,1,1,1 |
       | car2.LCU.CPU3      | car8.CCU.sys1     | 1,1,1,1,1,1,1,1 |
       | car2.LCU.CPU3      | car8.CCU.sys2     | 1,1,1,1,1,1,1,1 |
-      | car2.LCU.CPU3      | car8.CCU.sys1.TXC | 1,1,1,1,1,1,1,1 |
-      | car2.LCU.CPU3      | car8.CCU.sys2.TXC | 1,1,1,1,1,1,1,1 |
       | car2.LCU.CPU3      | car1.LCU          | 3,1,1,1,1,1,1,1 |
-      | car2.LCU.CPU3      | car1.LCU.RXC      | 1,1,1,1,1,1,1,1 |
       | car2.LCU.CPU3      | car2.LCU          | 1,3,1,1,1,1,1,1 |
       | car2.LCU.CPU3      | car2.LCU.RXC      | 1,1,1,1,1,1,1,1 |
       | car2.LCU.CPU3      | car3.LCU          | 1,1,3,1,1,1,1,1 |
-      | car2.LCU.CPU3      | car3.LCU.RXC      | 1,1,1,1,1,1,1,1 |
       | car2.LCU.CPU3      | car4.LCU          | 1,1,1,3,1,1,1,1 |
-      | car2.LCU.CPU3      | car4.LCU.RXC      | 1,1,1,1,1,1,1,1 |
       | car2.LCU.CPU3      | car5.LCU          | 1,1,1,1,3,1,1,1 |
-      | car2.LCU.CPU3      | car5.LCU.RXC      | 1,1,1,1,1,1,1,1 |
       | car2.LCU.CPU3      | car6.LCU          | 1,1,1,1,1,3,1,1 |
-      | car2.LCU.CPU3      | car6.LCU.RXC      | 1,1,1,1,1,1,1,1 |
       | car2.LCU.CPU3      | car7.LCU          | 1,1,1,1,1,1,3,1 |
-      | car2.LCU.CPU3      | car7.LCU.RXC      | 1,1,1,1,1,1,1,1 |
       | car2.LCU.CPU3      | car8.LCU          | 1,1,1,1,1,1,1,3 |
-      | car2.LCU.CPU3      | car8.LCU.RXC      | 1,1,1,1,1,1,1,1 |
       | car2.LCU.MDM8      | car1.CCU.sys1     | 1,3,3,3,3,3,3,3 |
       | car2.LCU.MDM8      | car1.CCU.sys2     | 3,3,1,1,1,1,1,1 |
-      | car2.LCU.MDM8      | car1.CCU.sys1.TXC | 1,3,1,1,1,1,1,1 |
-      | car2.LCU.MDM8      | car1.CCU.sys2.TXC | 1,3,1,1,1,1,1,1 |
       | car2.LCU.MDM8      | car8.CCU.sys1     | 1,3,3,3,3,3,3,3 |
       | car2.LCU.MDM8      | car8.CCU.sys2     | 1,3,3,3,3,3,3,3 |
-      | car2.LCU.MDM8      | car8.CCU.sys1.TXC | 1,3,1,1,1,1,1,1 |
-      | car2.LCU.MDM8      | car8.CCU.sys2.TXC | 1,3,1,1,1,1,1,1 |
       | car2.LCU.MDM8      | car1.LCU          | 3,3,1,1,1,1,1,1 |
-      | car2.LCU.MDM8      | car1.LCU.RXC      | 1,3,1,1,1,1,1,1 |
       | car2.LCU.MDM8      | car2.LCU          | 1,3,1,1,1,1,1,1 |
       | car2.LCU.MDM8      | car2.LCU.RXC      | 1,-,1,1,1,1,1,1 |
       | car2.LCU.MDM8      | car3.LCU          | 1,3,3,1,1,1,1,1 |
-      | car2.LCU.MDM8      | car3.LCU.RXC      | 1,3,1,1,1,1,1,1 |
       | car2.LCU.MDM8      | car4.LCU          | 1,3,3,3,1,1,1,1 |
-      | car2.LCU.MDM8      | car4.LCU.RXC      | 1,3,1,1,1,1,1,1 |
       | car2.LCU.MDM8      | car5.LCU          | 1,3,3,3,3,1,1,1 |
-      | car2.LCU.MDM8      | car5.LCU.RXC      | 1,3,1,1,1,1,1,1 |
       | car2.LCU.MDM8      | car6.LCU          | 1,3,3,3,3,3,1,1 |
-      | car2.LCU.MDM8      | car6.LCU.RXC      | 1,3,1,1,1,1,1,1 |
       | car2.LCU.MDM8      | car7.LCU          | 1,3,3,3,3,3,3,1 |
-      | car2.LCU.MDM8      | car7.LCU.RXC      | 1,3,1,1,1,1,1,1 |
       | car2.LCU.MDM8      | car8.LCU          | 1,3,3,3,3,3,3,3 |
-      | car2.LCU.MDM8      | car8.LCU.RXC      | 1,3,1,1,1,1,1,1 |
-      | car2.LCU.MDM9      | car1.CCU.sys1     | 1,2,1,1,1,1,1,1 |
-      | car2.LCU.MDM9      | car1.CCU.sys2     | 1,2,1,1,1,1,1,1 |
-      | car2.LCU.MDM9      | car1.CCU.sys1.TXC | 1,2,1,1,1,1,1,1 |
-      | car2.LCU.MDM9      | car1.CCU.sys2.TXC | 1,2,1,1,1,1,1,1 |
-      | car2.LCU.MDM9      | car8.CCU.sys1     | 1,2,1,1,1,1,1,1 |
-      | car2.LCU.MDM9      | car8.CCU.sys2     | 1,2,1,1,1,1,1,1 |
-      | car2.LCU.MDM9      | car8.CCU.sys1.TXC | 1,2,1,1,1,1,1,1 |
-      | car2.LCU.MDM9      | car8.CCU.sys2.TXC | 1,2,1,1,1,1,1,1 |
-      | car2.LCU.MDM9      | car1.LCU          | 3,2,1,1,1,1,1,1 |
-      | car2.LCU.MDM9      | car1.LCU.RXC      | 1,2,1,1,1,1,1,1 |
       | car2.LCU.MDM9      | car2.LCU          | 1,3,1,1,1,1,1,1 |
-      | car2.LCU.MDM9      | car2.LCU.RXC      | 1,-,1,1,1,1,1,1 |
-      | car2.LCU.MDM9      | car3.LCU          | 1,2,3,1,1,1,1,1 |
-      | car2.LCU.MDM9      | car3.LCU.RXC      | 1,2,1,1,1,1,1,1 |
-      | car2.LCU.MDM9      | car4.LCU          | 1,2,1,3,1,1,1,1 |
-      | car2.LCU.MDM9      | car4.LCU.RXC      | 1,2,1,1,1,1,1,1 |
-      | car2.LCU.MDM9      | car5.LCU          | 1,2,1,1,3,1,1,1 |
-      | car2.LCU.MDM9      | car5.LCU.RXC      | 1,2,1,1,1,1,1,1 |
-      | car2.LCU.MDM9      | car6.LCU          | 1,2,1,1,1,3,1,1 |
-      | car2.LCU.MDM9      | car6.LCU.RXC      | 1,2,1,1,1,1,1,1 |
-      | car2.LCU.MDM9      | car7.LCU          | 1,2,1,1,1,1,3,1 |
-      | car2.LCU.MDM9      | car7.LCU.RXC      | 1,2,1,1,1,1,1,1 |
-      | car2.LCU.MDM9      | car8.LCU          | 1,2,1,1,1,1,1,3 |
-      | car2.LCU.MDM9      | car8.LCU.RXC      | 1,2,1,1,1,1,1,1 |
-      | car2.LCU.RXC       | car1.CCU.sys1     | 1,1,1,1,1,1,1,1 |
-      | car2.LCU.RXC       | car1.CCU.sys2     | 1,1,1,1,1,1,1,1 |
-      | car2.LCU.RXC       | car1.CCU.sys1.TXC | 1,1,1,1,1,1,1,1 |
-      | car2.LCU.RXC       | car1.CCU.sys2.TXC | 1,1,1,1,1,1,1,1 |
-      | car2.LCU.RXC       | car8.CCU.sys1     | 1,1,1,1,1,1,1,1 |
-      | car2.LCU.RXC       | car8.CCU.sys2     | 1,1,1,1,1,1,1,1 |
-      | car2.LCU.RXC       | car8.CCU.sys1.TXC | 1,1,1,1,1,1,1,1 |
-      | car2.LCU.RXC       | car8.CCU.sys2.TXC | 1,1,1,1,1,1,1,1 |
-      | car2.LCU.RXC       | car1.LCU          | 3,1,1,1,1,1,1,1 |
-      | car2.LCU.RXC       | car1.LCU.RXC      | 1,1,1,1,1,1,1,1 |
       | car2.LCU.RXC       | car2.LCU          | 1,-,1,1,1,1,1,1 |
-      | car2.LCU.RXC       | car2.LCU.RXC      | 1,1,1,1,1,1,1,1 |
-      | car2.LCU.RXC       | car3.LCU          | 1,1,3,1,1,1,1,1 |
-      | car2.LCU.RXC       | car3.LCU.RXC      | 1,1,1,1,1,1,1,1 |
-      | car2.LCU.RXC       | car4.LCU          | 1,1,1,3,1,1,1,1 |
-      | car2.LCU.RXC       | car4.LCU.RXC      | 1,1,1,1,1,1,1,1 |
-      | car2.LCU.RXC       | car5.LCU          | 1,1,1,1,3,1,1,1 |
-      | car2.LCU.RXC       | car5.LCU.RXC      | 1,1,1,1,1,1,1,1 |
-      | car2.LCU.RXC       | car6.LCU          | 1,1,1,1,1,3,1,1 |
-      | car2.LCU.RXC       | car6.LCU.RXC      | 1,1,1,1,1,1,1,1 |
-      | car2.LCU.RXC       | car7.LCU          | 1,1,1,1,1,1,3,1 |
-      | car2.LCU.RXC       | car7.LCU.RXC      | 1,1,1,1,1,1,1,1 |
-      | car2.LCU.RXC       | car8.LCU          | 1,1,1,1,1,1,1,3 |
-      | car2.LCU.RXC       | car8.LCU.RXC      | 1,1,1,1,1,1,1,1 |
       | car3.LCU.CPU3      | car1.CCU.sys1     | 1,1,1,1,1,1,1,1 |
       | car3.LCU.CPU3      | car1.CCU.sys2     | 1,1,1,1,1,1,1,1 |
-      | car3.LCU.CPU3      | car1.CCU.sys1.TXC | 1,1,1,1,1,1,1,1 |
-      | car3.LCU.CPU3      | car1.CCU.sys2.TXC | 1,1,1,1,1,1,1,1 |
       | car3.LCU.CPU3      | car8.CCU.sys1     | 1,1,1,1,1,1,1,1 |
       | car3.LCU.CPU3      | car8.CCU.sys2     | 1,1,1,1,1,1,1,1 |
-      | car3.LCU.CPU3      | car8.CCU.sys1.TXC | 1,1,1,1,1,1,1,1 |
-      | car3.LCU.CPU3      | car8.CCU.sys2.TXC | 1,1,1,1,1,1,1,1 |
       | car3.LCU.CPU3      | car1.LCU          | 3,1,1,1,1,1,1,1 |
-      | car3.LCU.CPU3      | car1.LCU.RXC      | 1,1,1,1,1,1,1,1 |
       | car3.LCU.CPU3      | car2.LCU          | 1,3,1,1,1,1,1,1 |
-      | car3.LCU.CPU3      | car2.LCU.RXC      | 1,1,1,1,1,1,1,1 |
       | car3.LCU.CPU3      | car3.LCU          | 1,1,3,1,1,1,1,1 |
       | car3.LCU.CPU3      | car3.LCU.RXC      | 1,1,1,1,1,1,1,1 |
       | car3.LCU.CPU3      | car4.LCU          | 1,1,1,3,1,1,1,1 |
-      | car3.LCU.CPU3      | car4.LCU.RXC      | 1,1,1,1,1,1,1,1 |
       | car3.LCU.CPU3      | car5.LCU          | 1,1,1,1,3,1,1,1 |
-      | car3.LCU.CPU3      | car5.LCU.RXC      | 1,1,1,1,1,1,1,1 |
       | car3.LCU.CPU3      | car6.LCU          | 1,1,1,1,1,3,1,1 |
-      | car3.LCU.CPU3      | car6.LCU.RXC      | 1,1,1,1,1,1,1,1 |
       | car3.LCU.CPU3      | car7.LCU          | 1,1,1,1,1,1,3,1 |
-      | car3.LCU.CPU3      | car7.LCU.RXC      | 1,1,1,1,1,1,1,1 |
       | car3.LCU.CPU3      | car8.LCU          | 1,1,1,1,1,1,1,3 |
-      | car3.LCU.CPU3      | car8.LCU.RXC      | 1,1,1,1,1,1,1,1 |
       | car3.LCU.MDM8      | car1.CCU.sys1     | 1,1,3,3,3,3,3,3 |
       | car3.LCU.MDM8      | car1.CCU.sys2     | 3,3,3,1,1,1,1,1 |
-      | car3.LCU.MDM8      | car1.CCU.sys1.TXC | 1,1,3,1,1,1,1,1 |
-      | car3.LCU.MDM8      | car1.CCU.sys2.TXC | 1,1,3,1,1,1,1,1 |
       | car3.LCU.MDM8      | car8.CCU.sys1     | 1,1,3,3,3,3,3,3 |
       | car3.LCU.MDM8      | car8.CCU.sys2     | 1,1,3,3,3,3,3,3 |
-      | car3.LCU.MDM8      | car8.CCU.sys1.TXC | 1,1,3,1,1,1,1,1 |
-      | car3.LCU.MDM8      | car8.CCU.sys2.TXC | 1,1,3,1,1,1,1,1 |
       | car3.LCU.MDM8      | car1.LCU          | 3,3,3,1,1,1,1,1 |
-      | car3.LCU.MDM8      | car1.LCU.RXC      | 1,1,3,1,1,1,1,1 |
       | car3.LCU.MDM8      | car2.LCU          | 1,3,3,1,1,1,1,1 |
-      | car3.LCU.MDM8      | car2.LCU.RXC      | 1,1,3,1,1,1,1,1 |
       | car3.LCU.MDM8      | car3.LCU          | 1,1,3,1,1,1,1,1 |
       | car3.LCU.MDM8      | car3.LCU.RXC      | 1,1,-,1,1,1,1,1 |
       | car3.LCU.MDM8      | car4.LCU          | 1,1,3,3,1,1,1,1 |
-      | car3.LCU.MDM8      | car4.LCU.RXC      | 1,1,3,1,1,1,1,1 |
       | car3.LCU.MDM8      | car5.LCU          | 1,1,3,3,3,1,1,1 |
-      | car3.LCU.MDM8      | car5.LCU.RXC      | 1,1,3,1,1,1,1,1 |
       | car3.LCU.MDM8      | car6.LCU          | 1,1,3,3,3,3,1,1 |
-      | car3.LCU.MDM8      | car6.LCU.RXC      | 1,1,3,1,1,1,1,1 |
       | car3.LCU.MDM8      | car7.LCU          | 1,1,3,3,3,3,3,1 |
-      | car3.LCU.MDM8      | car7.LCU.RXC      | 1,1,3,1,1,1,1,1 |
       | car3.LCU.MDM8      | car8.LCU          | 1,1,3,3,3,3,3,3 |
-      | car3.LCU.MDM8      | car8.LCU.RXC      | 1,1,3,1,1,1,1,1 |
-      | car3.LCU.MDM9      | car1.CCU.sys1     | 1,1,2,1,1,1,1,1 |
-      | car3.LCU.MDM9      | car1.CCU.sys2     | 1,1,2,1,1,1,1,1 |
-      | car3.LCU.MDM9      | car1.CCU.sys1.TXC | 1,1,2,1,1,1,1,1 |
-      | car3.LCU.MDM9      | car1.CCU.sys2.TXC | 1,1,2,1,1,1,1,1 |
-      | car3.LCU.MDM9      | car8.CCU.sys1     | 1,1,2,1,1,1,1,1 |
-      | car3.LCU.MDM9      | car8.CCU.sys2     | 1,1,2,1,1,1,1,1 |
-      | car3.LCU.MDM9      | car8.CCU.sys1.TXC | 1,1,2,1,1,1,1,1 |
-      | car3.LCU.MDM9      | car8.CCU.sys2.TXC | 1,1,2,1,1,1,1,1 |
-      | car3.LCU.MDM9      | car1.LCU          | 3,1,2,1,1,1,1,1 |
-      | car3.LCU.MDM9      | car1.LCU.RXC      | 1,1,2,1,1,1,1,1 |
-      | car3.LCU.MDM9      | car2.LCU          | 1,3,2,1,1,1,1,1 |
-      | car3.LCU.MDM9      | car2.LCU.RXC      | 1,1,2,1,1,1,1,1 |
       | car3.LCU.MDM9      | car3.LCU          | 1,1,3,1,1,1,1,1 |
-      | car3.LCU.MDM9      | car3.LCU.RXC      | 1,1,-,1,1,1,1,1 |
-      | car3.LCU.MDM9      | car4.LCU          | 1,1,2,3,1,1,1,1 |
-      | car3.LCU.MDM9      | car4.LCU.RXC      | 1,1,2,1,1,1,1,1 |
-      | car3.LCU.MDM9      | car5.LCU          | 1,1,2,1,3,1,1,1 |
-      | car3.LCU.MDM9      | car5.LCU.RXC      | 1,1,2,1,1,1,1,1 |
-      | car3.LCU.MDM9      | car6.LCU          | 1,1,2,1,1,3,1,1 |
-      | car3.LCU.MDM9      | car6.LCU.RXC      | 1,1,2,1,1,1,1,1 |
-      | car3.LCU.MDM9      | car7.LCU          | 1,1,2,1,1,1,3,1 |
-      | car3.LCU.MDM9      | car7.LCU.RXC      | 1,1,2,1,1,1,1,1 |
-      | car3.LCU.MDM9      | car8.LCU          | 1,1,2,1,1,1,1,3 |
-      | car3.LCU.MDM9      | car8.LCU.RXC      | 1,1,2,1,1,1,1,1 |
-      | car3.LCU.RXC       | car1.CCU.sys1     | 1,1,1,1,1,1,1,1 |
-      | car3.LCU.RXC       | car1.CCU.sys2     | 1,1,1,1,1,1,1,1 |
-      | car3.LCU.RXC       | car1.CCU.sys1.TXC | 1,1,1,1,1,1,1,1 |
-      | car3.LCU.RXC       | car1.CCU.sys2.TXC | 1,1,1,1,1,1,1,1 |
-      | car3.LCU.RXC       | car8.CCU.sys1     | 1,1,1,1,1,1,1,1 |
-      | car3.LCU.RXC       | car8.CCU.sys2     | 1,1,1,1,1,1,1,1 |
-      | car3.LCU.RXC       | car8.CCU.sys1.TXC | 1,1,1,1,1,1,1,1 |
-      | car3.LCU.RXC       | car8.CCU.sys2.TXC | 1,1,1,1,1,1,1,1 |
-      | car3.LCU.RXC       | car1.LCU          | 3,1,1,1,1,1,1,1 |
-      | car3.LCU.RXC       | car1.LCU.RXC      | 1,1,1,1,1,1,1,1 |
-      | car3.LCU.RXC       | car2.LCU          | 1,3,1,1,1,1,1,1 |
-      | car3.LCU.RXC       | car2.LCU.RXC      | 1,1,1,1,1,1,1,1 |
       | car3.LCU.RXC       | car3.LCU          | 1,1,-,1,1,1,1,1 |
-      | car3.LCU.RXC       | car3.LCU.RXC      | 1,1,1,1,1,1,1,1 |
-      | car3.LCU.RXC       | car4.LCU          | 1,1,1,3,1,1,1,1 |
-      | car3.LCU.RXC       | car4.LCU.RXC      | 1,1,1,1,1,1,1,1 |
-      | car3.LCU.RXC       | car5.LCU          | 1,1,1,1,3,1,1,1 |
-      | car3.LCU.RXC       | car5.LCU.RXC      | 1,1,1,1,1,1,1,1 |
-      | car3.LCU.RXC       | car6.LCU          | 1,1,1,1,1,3,1,1 |
-      | car3.LCU.RXC       | car6.LCU.RXC      | 1,1,1,1,1,1,1,1 |
-      | car3.LCU.RXC       | car7.LCU          | 1,1,1,1,1,1,3,1 |
-      | car3.LCU.RXC       | car7.LCU.RXC      | 1,1,1,1,1,1,1,1 |
-      | car3.LCU.RXC       | car8.LCU          | 1,1,1,1,1,1,1,3 |
-      | car3.LCU.RXC       | car8.LCU.RXC      | 1,1,1,1,1,1,1,1 |
       | car4.LCU.CPU3      | car1.CCU.sys1     | 1,1,1,1,1,1,1,1 |
       | car4.LCU.CPU3      | car1.CCU.sys2     | 1,1,1,1,1,1,1,1 |
-      | car4.LCU.CPU3      | car1.CCU.sys1.TXC | 1,1,1,1,1,1,1,1 |
-      | car4.LCU.CPU3      | car1.CCU.sys2.TXC | 1,1,1,1,1,1,1,1 |
       | car4.LCU.CPU3      | car8.CCU.sys1     | 1,1,1,1,1,1,1,1 |
       | car4.LCU.CPU3      | car8.CCU.sys2     | 1,1,1,1,1,1,1,1 |
-      | car4.LCU.CPU3      | car8.CCU.sys1.TXC | 1,1,1,1,1,1,1,1 |
-      | car4.LCU.CPU3      | car8.CCU.sys2.TXC | 1,1,1,1,1,1,1,1 |
       | car4.LCU.CPU3      | car1.LCU          | 3,1,1,1,1,1,1,1 |
-      | car4.LCU.CPU3      | car1.LCU.RXC      | 1,1,1,1,1,1,1,1 |
       | car4.LCU.CPU3      | car2.LCU          | 1,3,1,1,1,1,1,1 |
-      | car4.LCU.CPU3      | car2.LCU.RXC      | 1,1,1,1,1,1,1,1 |
       | car4.LCU.CPU3      | car3.LCU          | 1,1,3,1,1,1,1,1 |
-      | car4.LCU.CPU3      | car3.LCU.RXC      | 1,1,1,1,1,1,1,1 |
       | car4.LCU.CPU3      | car4.LCU          | 1,1,1,3,1,1,1,1 |
       | car4.LCU.CPU3      | car4.LCU.RXC      | 1,1,1,1,1,1,1,1 |
       | car4.LCU.CPU3      | car5.LCU          | 1,1,1,1,3,1,1,1 |
-      | car4.LCU.CPU3      | car5.LCU.RXC      | 1,1,1,1,1,1,1,1 |
       | car4.LCU.CPU3      | car6.LCU          | 1,1,1,1,1,3,1,1 |
-      | car4.LCU.CPU3      | car6.LCU.RXC      | 1,1,1,1,1,1,1,1 |
       | car4.LCU.CPU3      | car7.LCU          | 1,1,1,1,1,1,3,1 |
-      | car4.LCU.CPU3      | car7.LCU.RXC      | 1,1,1,1,1,1,1,1 |
       | car4.LCU.CPU3      | car8.LCU          | 1,1,1,1,1,1,1,3 |
-      | car4.LCU.CPU3      | car8.LCU.RXC      | 1,1,1,1,1,1,1,1 |
       | car4.LCU.MDM8      | car1.CCU.sys1     | 1,1,1,3,3,3,3,3 |
       | car4.LCU.MDM8      | car1.CCU.sys2     | 3,3,3,3,1,1,1,1 |
-      | car4.LCU.MDM8      | car1.CCU.sys1.TXC | 1,1,1,3,1,1,1,1 |
-      | car4.LCU.MDM8      | car1.CCU.sys2.TXC | 1,1,1,3,1,1,1,1 |
       | car4.LCU.MDM8      | car8.CCU.sys1     | 1,1,1,3,3,3,3,3 |
       | car4.LCU.MDM8      | car8.CCU.sys2     | 1,1,1,3,3,3,3,3 |
-      | car4.LCU.MDM8      | car8.CCU.sys1.TXC | 1,1,1,3,1,1,1,1 |
-      | car4.LCU.MDM8      | car8.CCU.sys2.TXC | 1,1,1,3,1,1,1,1 |
       | car4.LCU.MDM8      | car1.LCU          | 3,3,3,3,1,1,1,1 |
-      | car4.LCU.MDM8      | car1.LCU.RXC      | 1,1,1,3,1,1,1,1 |
       | car4.LCU.MDM8      | car2.LCU          | 1,3,3,3,1,1,1,1 |
-      | car4.LCU.MDM8      | car2.LCU.RXC      | 1,1,1,3,1,1,1,1 |
       | car4.LCU.MDM8      | car3.LCU          | 1,1,3,3,1,1,1,1 |
-      | car4.LCU.MDM8      | car3.LCU.RXC      | 1,1,1,3,1,1,1,1 |
       | car4.LCU.MDM8      | car4.LCU          | 1,1,1,3,1,1,1,1 |
       | car4.LCU.MDM8      | car4.LCU.RXC      | 1,1,1,-,1,1,1,1 |
       | car4.LCU.MDM8      | car5.LCU          | 1,1,1,3,3,1,1,1 |
-      | car4.LCU.MDM8      | car5.LCU.RXC      | 1,1,1,3,1,1,1,1 |
       | car4.LCU.MDM8      | car6.LCU          | 1,1,1,3,3,3,1,1 |
-      | car4.LCU.MDM8      | car6.LCU.RXC      | 1,1,1,3,1,1,1,1 |
       | car4.LCU.MDM8      | car7.LCU          | 1,1,1,3,3,3,3,1 |
-      | car4.LCU.MDM8      | car7.LCU.RXC      | 1,1,1,3,1,1,1,1 |
       | car4.LCU.MDM8      | car8.LCU          | 1,1,1,3,3,3,3,3 |
-      | car4.LCU.MDM8      | car8.LCU.RXC      | 1,1,1,3,1,1,1,1 |
-      | car4.LCU.MDM9      | car1.CCU.sys1     | 1,1,1,2,1,1,1,1 |
-      | car4.LCU.MDM9      | car1.CCU.sys2     | 1,1,1,2,1,1,1,1 |
-      | car4.LCU.MDM9      | car1.CCU.sys1.TXC | 1,1,1,2,1,1,1,1 |
-      | car4.LCU.MDM9      | car1.CCU.sys2.TXC | 1,1,1,2,1,1,1,1 |
-      | car4.LCU.MDM9      | car8.CCU.sys1     | 1,1,1,2,1,1,1,1 |
-      | car4.LCU.MDM9      | car8.CCU.sys2     | 1,1,1,2,1,1,1,1 |
-      | car4.LCU.MDM9      | car8.CCU.sys1.TXC | 1,1,1,2,1,1,1,1 |
-      | car4.LCU.MDM9      | car8.CCU.sys2.TXC | 1,1,1,2,1,1,1,1 |
-      | car4.LCU.MDM9      | car1.LCU          | 3,1,1,2,1,1,1,1 |
-      | car4.LCU.MDM9      | car1.LCU.RXC      | 1,1,1,2,1,1,1,1 |
-      | car4.LCU.MDM9      | car2.LCU          | 1,3,1,2,1,1,1,1 |
-      | car4.LCU.MDM9      | car2.LCU.RXC      | 1,1,1,2,1,1,1,1 |
-      | car4.LCU.MDM9      | car3.LCU          | 1,1,3,2,1,1,1,1 |
-      | car4.LCU.MDM9      | car3.LCU.RXC      | 1,1,1,2,1,1,1,1 |
       | car4.LCU.MDM9      | car4.LCU          | 1,1,1,3,1,1,1,1 |
-      | car4.LCU.MDM9      | car4.LCU.RXC      | 1,1,1,-,1,1,1,1 |
-      | car4.LCU.MDM9      | car5.LCU          | 1,1,1,2,3,1,1,1 |
-      | car4.LCU.MDM9      | car5.LCU.RXC      | 1,1,1,2,1,1,1,1 |
-      | car4.LCU.MDM9      | car6.LCU          | 1,1,1,2,1,3,1,1 |
-      | car4.LCU.MDM9      | car6.LCU.RXC      | 1,1,1,2,1,1,1,1 |
-      | car4.LCU.MDM9      | car7.LCU          | 1,1,1,2,1,1,3,1 |
-      | car4.LCU.MDM9      | car7.LCU.RXC      | 1,1,1,2,1,1,1,1 |
-      | car4.LCU.MDM9      | car8.LCU          | 1,1,1,2,1,1,1,3 |
-      | car4.LCU.MDM9      | car8.LCU.RXC      | 1,1,1,2,1,1,1,1 |
-      | car4.LCU.RXC       | car1.CCU.sys1     | 1,1,1,1,1,1,1,1 |
-      | car4.LCU.RXC       | car1.CCU.sys2     | 1,1,1,1,1,1,1,1 |
-      | car4.LCU.RXC       | car1.CCU.sys1.TXC | 1,1,1,1,1,1,1,1 |
-      | car4.LCU.RXC       | car1.CCU.sys2.TXC | 1,1,1,1,1,1,1,1 |
-      | car4.LCU.RXC       | car8.CCU.sys1     | 1,1,1,1,1,1,1,1 |
-      | car4.LCU.RXC       | car8.CCU.sys2     | 1,1,1,1,1,1,1,1 |
-      | car4.LCU.RXC       | car8.CCU.sys1.TXC | 1,1,1,1,1,1,1,1 |
-      | car4.LCU.RXC       | car8.CCU.sys2.TXC | 1,1,1,1,1,1,1,1 |
-      | car4.LCU.RXC       | car1.LCU          | 3,1,1,1,1,1,1,1 |
-      | car4.LCU.RXC       | car1.LCU.RXC      | 1,1,1,1,1,1,1,1 |
-      | car4.LCU.RXC       | car2.LCU          | 1,3,1,1,1,1,1,1 |
-      | car4.LCU.RXC       | car2.LCU.RXC      | 1,1,1,1,1,1,1,1 |
-      | car4.LCU.RXC       | car3.LCU          | 1,1,3,1,1,1,1,1 |
-      | car4.LCU.RXC       | car3.LCU.RXC      | 1,1,1,1,1,1,1,1 |
       | car4.LCU.RXC       | car4.LCU          | 1,1,1,-,1,1,1,1 |
-      | car4.LCU.RXC       | car4.LCU.RXC      | 1,1,1,1,1,1,1,1 |
-      | car4.LCU.RXC       | car5.LCU          | 1,1,1,1,3,1,1,1 |
-      | car4.LCU.RXC       | car5.LCU.RXC      | 1,1,1,1,1,1,1,1 |
-      | car4.LCU.RXC       | car6.LCU          | 1,1,1,1,1,3,1,1 |
-      | car4.LCU.RXC       | car6.LCU.RXC      | 1,1,1,1,1,1,1,1 |
-      | car4.LCU.RXC       | car7.LCU          | 1,1,1,1,1,1,3,1 |
-      | car4.LCU.RXC       | car7.LCU.RXC      | 1,1,1,1,1,1,1,1 |
-      | car4.LCU.RXC       | car8.LCU          | 1,1,1,1,1,1,1,3 |
-      | car4.LCU.RXC       | car8.LCU.RXC      | 1,1,1,1,1,1,1,1 |
       | car5.LCU.CPU3      | car1.CCU.sys1     | 1,1,1,1,1,1,1,1 |
       | car5.LCU.CPU3      | car1.CCU.sys2     | 1,1,1,1,1,1,1,1 |
-      | car5.LCU.CPU3      | car1.CCU.sys1.TXC | 1,1,1,1,1,1,1,1 |
-      | car5.LCU.CPU3      | car1.CCU.sys2.TXC | 1,1,1,1,1,1,1,1 |
       | car5.LCU.CPU3      | car8.CCU.sys1     | 1,1,1,1,1,1,1,1 |
       | car5.LCU.CPU3      | car8.CCU.sys2     | 1,1,1,1,1,1,1,1 |
-      | car5.LCU.CPU3      | car8.CCU.sys1.TXC | 1,1,1,1,1,1,1,1 |
-      | car5.LCU.CPU3      | car8.CCU.sys2.TXC | 1,1,1,1,1,1,1,1 |
       | car5.LCU.CPU3      | car1.LCU          | 3,1,1,1,1,1,1,1 |
-      | car5.LCU.CPU3      | car1.LCU.RXC      | 1,1,1,1,1,1,1,1 |
       | car5.LCU.CPU3      | car2.LCU          | 1,3,1,1,1,1,1,1 |
-      | car5.LCU.CPU3      | car2.LCU.RXC      | 1,1,1,1,1,1,1,1 |
       | car5.LCU.CPU3      | car3.LCU          | 1,1,3,1,1,1,1,1 |
-      | car5.LCU.CPU3      | car3.LCU.RXC      | 1,1,1,1,1,1,1,1 |
       | car5.LCU.CPU3      | car4.LCU          | 1,1,1,3,1,1,1,1 |
-      | car5.LCU.CPU3      | car4.LCU.RXC      | 1,1,1,1,1,1,1,1 |
       | car5.LCU.CPU3      | car5.LCU          | 1,1,1,1,3,1,1,1 |
       | car5.LCU.CPU3      | car5.LCU.RXC      | 1,1,1,1,1,1,1,1 |
       | car5.LCU.CPU3      | car6.LCU          | 1,1,1,1,1,3,1,1 |
-      | car5.LCU.CPU3      | car6.LCU.RXC      | 1,1,1,1,1,1,1,1 |
       | car5.LCU.CPU3      | car7.LCU          | 1,1,1,1,1,1,3,1 |
-      | car5.LCU.CPU3      | car7.LCU.RXC      | 1,1,1,1,1,1,1,1 |
       | car5.LCU.CPU3      | car8.LCU          | 1,1,1,1,1,1,1,3 |
-      | car5.LCU.CPU3      | car8.LCU.RXC      | 1,1,1,1,1,1,1,1 |
       | car5.LCU.MDM8      | car1.CCU.sys1     | 1,1,1,1,3,3,3,3 |
       | car5.LCU.MDM8      | car1.CCU.sys2     | 3,3,3,3,3,1,1,1 |
-      | car5.LCU.MDM8      | car1.CCU.sys1.TXC | 1,1,1,1,3,1,1,1 |
-      | car5.LCU.MDM8      | car1.CCU.sys2.TXC | 1,1,1,1,3,1,1,1 |
       | car5.LCU.MDM8      | car8.CCU.sys1     | 1,1,1,1,3,3,3,3 |
       | car5.LCU.MDM8      | car8.CCU.sys2     | 1,1,1,1,3,3,3,3 |
-      | car5.LCU.MDM8      | car8.CCU.sys1.TXC | 1,1,1,1,3,1,1,1 |
-      | car5.LCU.MDM8      | car8.CCU.sys2.TXC | 1,1,1,1,3,1,1,1 |
       | car5.LCU.MDM8      | car1.LCU          | 3,3,3,3,3,1,1,1 |
-      | car5.LCU.MDM8      | car1.LCU.RXC      | 1,1,1,1,3,1,1,1 |
       | car5.LCU.MDM8      | car2.LCU          | 1,3,3,3,3,1,1,1 |
-      | car5.LCU.MDM8      | car2.LCU.RXC      | 1,1,1,1,3,1,1,1 |
       | car5.LCU.MDM8      | car3.LCU          | 1,1,3,3,3,1,1,1 |
-      | car5.LCU.MDM8      | car3.LCU.RXC      | 1,1,1,1,3,1,1,1 |
       | car5.LCU.MDM8      | car4.LCU          | 1,1,1,3,3,1,1,1 |
-      | car5.LCU.MDM8      | car4.LCU.RXC      | 1,1,1,1,3,1,1,1 |
       | car5.LCU.MDM8      | car5.LCU          | 1,1,1,1,3,1,1,1 |
       | car5.LCU.MDM8      | car5.LCU.RXC      | 1,1,1,1,-,1,1,1 |
       | car5.LCU.MDM8      | car6.LCU          | 1,1,1,1,3,3,1,1 |
-      | car5.LCU.MDM8      | car6.LCU.RXC      | 1,1,1,1,3,1,1,1 |
       | car5.LCU.MDM8      | car7.LCU          | 1,1,1,1,3,3,3,1 |
-      | car5.LCU.MDM8      | car7.LCU.RXC      | 1,1,1,1,3,1,1,1 |
       | car5.LCU.MDM8      | car8.LCU          | 1,1,1,1,3,3,3,3 |
-      | car5.LCU.MDM8      | car8.LCU.RXC      | 1,1,1,1,3,1,1,1 |
-      | car5.LCU.MDM9      | car1.CCU.sys1     | 1,1,1,1,2,1,1,1 |
-      | car5.LCU.MDM9      | car1.CCU.sys2     | 1,1,1,1,2,1,1,1 |
-      | car5.LCU.MDM9      | car1.CCU.sys1.TXC | 1,1,1,1,2,1,1,1 |
-      | car5.LCU.MDM9      | car1.CCU.sys2.TXC | 1,1,1,1,2,1,1,1 |
-      | car5.LCU.MDM9      | car8.CCU.sys1     | 1,1,1,1,2,1,1,1 |
-      | car5.LCU.MDM9      | car8.CCU.sys2     | 1,1,1,1,2,1,1,1 |
-      | car5.LCU.MDM9      | car8.CCU.sys1.TXC | 1,1,1,1,2,1,1,1 |
-      | car5.LCU.MDM9      | car8.CCU.sys2.TXC | 1,1,1,1,2,1,1,1 |
-      | car5.LCU.MDM9      | car1.LCU          | 3,1,1,1,2,1,1,1 |
-      | car5.LCU.MDM9      | car1.LCU.RXC      | 1,1,1,1,2,1,1,1 |
-      | car5.LCU.MDM9      | car2.LCU          | 1,3,1,1,2,1,1,1 |
-      | car5.LCU.MDM9      | car2.LCU.RXC      | 1,1,1,1,2,1,1,1 |
-      | car5.LCU.MDM9      | car3.LCU          | 1,1,3,1,2,1,1,1 |
-      | car5.LCU.MDM9      | car3.LCU.RXC      | 1,1,1,1,2,1,1,1 |
-      | car5.LCU.MDM9      | car4.LCU          | 1,1,1,3,2,1,1,1 |
-      | car5.LCU.MDM9      | car4.LCU.RXC      | 1,1,1,1,2,1,1,1 |
       | car5.LCU.MDM9      | car5.LCU          | 1,1,1,1,3,1,1,1 |
-      | car5.LCU.MDM9      | car5.LCU.RXC      | 1,1,1,1,-,1,1,1 |
-      | car5.LCU.MDM9      | car6.LCU          | 1,1,1,1,2,3,1,1 |
-      | car5.LCU.MDM9      | car6.LCU.RXC      | 1,1,1,1,2,1,1,1 |
-      | car5.LCU.MDM9      | car7.LCU          | 1,1,1,1,2,1,3,1 |
-      | car5.LCU.MDM9      | car7.LCU.RXC      | 1,1,1,1,2,1,1,1 |
-      | car5.LCU.MDM9      | car8.LCU          | 1,1,1,1,2,1,1,3 |
-      | car5.LCU.MDM9      | car8.LCU.RXC      | 1,1,1,1,2,1,1,1 |
-      | car5.LCU.RXC       | car1.CCU.sys1     | 1,1,1,1,1,1,1,1 |
-      | car5.LCU.RXC       | car1.CCU.sys2     | 1,1,1,1,1,1,1,1 |
-      | car5.LCU.RXC       | car1.CCU.sys1.TXC | 1,1,1,1,1,1,1,1 |
-      | car5.LCU.RXC       | car1.CCU.sys2.TXC | 1,1,1,1,1,1,1,1 |
-      | car5.LCU.RXC       | car8.CCU.sys1     | 1,1,1,1,1,1,1,1 |
-      | car5.LCU.RXC       | car8.CCU.sys2     | 1,1,1,1,1,1,1,1 |
-      | car5.LCU.RXC       | car8.CCU.sys1.TXC | 1,1,1,1,1,1,1,1 |
-      | car5.LCU.RXC       | car8.CCU.sys2.TXC | 1,1,1,1,1,1,1,1 |
-      | car5.LCU.RXC       | car1.LCU          | 3,1,1,1,1,1,1,1 |
-      | car5.LCU.RXC       | car1.LCU.RXC      | 1,1,1,1,1,1,1,1 |
-      | car5.LCU.RXC       | car2.LCU          | 1,3,1,1,1,1,1,1 |
-      | car5.LCU.RXC       | car2.LCU.RXC      | 1,1,1,1,1,1,1,1 |
-      | car5.LCU.RXC       | car3.LCU          | 1,1,3,1,1,1,1,1 |
-      | car5.LCU.RXC       | car3.LCU.RXC      | 1,1,1,1,1,1,1,1 |
-      | car5.LCU.RXC       | car4.LCU          | 1,1,1,3,1,1,1,1 |
-      | car5.LCU.RXC       | car4.LCU.RXC      | 1,1,1,1,1,1,1,1 |
       | car5.LCU.RXC       | car5.LCU          | 1,1,1,1,-,1,1,1 |
-      | car5.LCU.RXC       | car5.LCU.RXC      | 1,1,1,1,1,1,1,1 |
-      | car5.LCU.RXC       | car6.LCU          | 1,1,1,1,1,3,1,1 |
-      | car5.LCU.RXC       | car6.LCU.RXC      | 1,1,1,1,1,1,1,1 |
-      | car5.LCU.RXC       | car7.LCU          | 1,1,1,1,1,1,3,1 |
-      | car5.LCU.RXC       | car7.LCU.RXC      | 1,1,1,1,1,1,1,1 |
-      | car5.LCU.RXC       | car8.LCU          | 1,1,1,1,1,1,1,3 |
-      | car5.LCU.RXC       | car8.LCU.RXC      | 1,1,1,1,1,1,1,1 |
       | car6.LCU.CPU3      | car1.CCU.sys1     | 1,1,1,1,1,1,1,1 |
       | car6.LCU.CPU3      | car1.CCU.sys2     | 1,1,1,1,1,1,1,1 |
-      | car6.LCU.CPU3      | car1.CCU.sys1.TXC | 1,1,1,1,1,1,1,1 |
-      | car6.LCU.CPU3      | car1.CCU.sys2.TXC | 1,1,1,1,1,1,1,1 |
       | car6.LCU.CPU3      | car8.CCU.sys1     | 1,1,1,1,1,1,1,1 |
       | car6.LCU.CPU3      | car8.CCU.sys2     | 1,1,1,1,1,1,1,1 |
-      | car6.LCU.CPU3      | car8.CCU.sys1.TXC | 1,1,1,1,1,1,1,1 |
-      | car6.LCU.CPU3      | car8.CCU.sys2.TXC | 1,1,1,1,1,1,1,1 |
       | car6.LCU.CPU3      | car1.LCU          | 3,1,1,1,1,1,1,1 |
-      | car6.LCU.CPU3      | car1.LCU.RXC      | 1,1,1,1,1,1,1,1 |
       | car6.LCU.CPU3      | car2.LCU          | 1,3,1,1,1,1,1,1 |
-      | car6.LCU.CPU3      | car2.LCU.RXC      | 1,1,1,1,1,1,1,1 |
       | car6.LCU.CPU3      | car3.LCU          | 1,1,3,1,1,1,1,1 |
-      | car6.LCU.CPU3      | car3.LCU.RXC      | 1,1,1,1,1,1,1,1 |
       | car6.LCU.CPU3      | car4.LCU          | 1,1,1,3,1,1,1,1 |
-      | car6.LCU.CPU3      | car4.LCU.RXC      | 1,1,1,1,1,1,1,1 |
       | car6.LCU.CPU3      | car5.LCU          | 1,1,1,1,3,1,1,1 |
-      | car6.LCU.CPU3      | car5.LCU.RXC      | 1,1,1,1,1,1,1,1 |
       | car6.LCU.CPU3      | car6.LCU          | 1,1,1,1,1,3,1,1 |
       | car6.LCU.CPU3      | car6.LCU.RXC      | 1,1,1,1,1,1,1,1 |
       | car6.LCU.CPU3      | car7.LCU          | 1,1,1,1,1,1,3,1 |
-      | car6.LCU.CPU3      | car7.LCU.RXC      | 1,1,1,1,1,1,1,1 |
       | car6.LCU.CPU3      | car8.LCU          | 1,1,1,1,1,1,1,3 |
-      | car6.LCU.CPU3      | car8.LCU.RXC      | 1,1,1,1,1,1,1,1 |
       | car6.LCU.MDM8      | car1.CCU.sys1     | 1,1,1,1,1,3,3,3 |
       | car6.LCU.MDM8      | car1.CCU.sys2     | 3,3,3,3,3,3,1,1 |
-      | car6.LCU.MDM8      | car1.CCU.sys1.TXC | 1,1,1,1,1,3,1,1 |
-      | car6.LCU.MDM8      | car1.CCU.sys2.TXC | 1,1,1,1,1,3,1,1 |
       | car6.LCU.MDM8      | car8.CCU.sys1     | 1,1,1,1,1,3,3,3 |
       | car6.LCU.MDM8      | car8.CCU.sys2     | 1,1,1,1,1,3,3,3 |
-      | car6.LCU.MDM8      | car8.CCU.sys1.TXC | 1,1,1,1,1,3,1,1 |
-      | car6.LCU.MDM8      | car8.CCU.sys2.TXC | 1,1,1,1,1,3,1,1 |
       | car6.LCU.MDM8      | car1.LCU          | 3,3,3,3,3,3,1,1 |
-      | car6.LCU.MDM8      | car1.LCU.RXC      | 1,1,1,1,1,3,1,1 |
       | car6.LCU.MDM8      | car2.LCU          | 1,3,3,3,3,3,1,1 |
-      | car6.LCU.MDM8      | car2.LCU.RXC      | 1,1,1,1,1,3,1,1 |
       | car6.LCU.MDM8      | car3.LCU          | 1,1,3,3,3,3,1,1 |
-      | car6.LCU.MDM8      | car3.LCU.RXC      | 1,1,1,1,1,3,1,1 |
       | car6.LCU.MDM8      | car4.LCU          | 1,1,1,3,3,3,1,1 |
-      | car6.LCU.MDM8      | car4.LCU.RXC      | 1,1,1,1,1,3,1,1 |
       | car6.LCU.MDM8      | car5.LCU          | 1,1,1,1,3,3,1,1 |
-      | car6.LCU.MDM8      | car5.LCU.RXC      | 1,1,1,1,1,3,1,1 |
       | car6.LCU.MDM8      | car6.LCU          | 1,1,1,1,1,3,1,1 |
       | car6.LCU.MDM8      | car6.LCU.RXC      | 1,1,1,1,1,-,1,1 |
       | car6.LCU.MDM8      | car7.LCU          | 1,1,1,1,1,3,3,1 |
-      | car6.LCU.MDM8      | car7.LCU.RXC      | 1,1,1,1,1,3,1,1 |
       | car6.LCU.MDM8      | car8.LCU          | 1,1,1,1,1,3,3,3 |
-      | car6.LCU.MDM8      | car8.LCU.RXC      | 1,1,1,1,1,3,1,1 |
-      | car6.LCU.MDM9      | car1.CCU.sys1     | 1,1,1,1,1,2,1,1 |
-      | car6.LCU.MDM9      | car1.CCU.sys2     | 1,1,1,1,1,2,1,1 |
-      | car6.LCU.MDM9      | car1.CCU.sys1.TXC | 1,1,1,1,1,2,1,1 |
-      | car6.LCU.MDM9      | car1.CCU.sys2.TXC | 1,1,1,1,1,2,1,1 |
-      | car6.LCU.MDM9      | car8.CCU.sys1     | 1,1,1,1,1,2,1,1 |
-      | car6.LCU.MDM9      | car8.CCU.sys2     | 1,1,1,1,1,2,1,1 |
-      | car6.LCU.MDM9      | car8.CCU.sys1.TXC | 1,1,1,1,1,2,1,1 |
-      | car6.LCU.MDM9      | car8.CCU.sys2.TXC | 1,1,1,1,1,2,1,1 |
-      | car6.LCU.MDM9      | car1.LCU          | 3,1,1,1,1,2,1,1 |
-      | car6.LCU.MDM9      | car1.LCU.RXC      | 1,1,1,1,1,2,1,1 |
-      | car6.LCU.MDM9      | car2.LCU          | 1,3,1,1,1,2,1,1 |
-      | car6.LCU.MDM9      | car2.LCU.RXC      | 1,1,1,1,1,2,1,1 |
-      | car6.LCU.MDM9      | car3.LCU          | 1,1,3,1,1,2,1,1 |
-      | car6.LCU.MDM9      | car3.LCU.RXC      | 1,1,1,1,1,2,1,1 |
-      | car6.LCU.MDM9      | car4.LCU          | 1,1,1,3,1,2,1,1 |
-      | car6.LCU.MDM9      | car4.LCU.RXC      | 1,1,1,1,1,2,1,1 |
-      | car6.LCU.MDM9      | car5.LCU          | 1,1,1,1,3,2,1,1 |
-      | car6.LCU.MDM9      | car5.LCU.RXC      | 1,1,1,1,1,2,1,1 |
       | car6.LCU.MDM9      | car6.LCU          | 1,1,1,1,1,3,1,1 |
-      | car6.LCU.MDM9      | car6.LCU.RXC      | 1,1,1,1,1,-,1,1 |
-      | car6.LCU.MDM9      | car7.LCU          | 1,1,1,1,1,2,3,1 |
-      | car6.LCU.MDM9      | car7.LCU.RXC      | 1,1,1,1,1,2,1,1 |
-      | car6.LCU.MDM9      | car8.LCU          | 1,1,1,1,1,2,1,3 |
-      | car6.LCU.MDM9      | car8.LCU.RXC      | 1,1,1,1,1,2,1,1 |
-      | car6.LCU.RXC       | car1.CCU.sys1     | 1,1,1,1,1,1,1,1 |
-      | car6.LCU.RXC       | car1.CCU.sys2     | 1,1,1,1,1,1,1,1 |
-      | car6.LCU.RXC       | car1.CCU.sys1.TXC | 1,1,1,1,1,1,1,1 |
-      | car6.LCU.RXC       | car1.CCU.sys2.TXC | 1,1,1,1,1,1,1,1 |
-      | car6.LCU.RXC       | car8.CCU.sys1     | 1,1,1,1,1,1,1,1 |
-      | car6.LCU.RXC       | car8.CCU.sys2     | 1,1,1,1,1,1,1,1 |
-      | car6.LCU.RXC       | car8.CCU.sys1.TXC | 1,1,1,1,1,1,1,1 |
-      | car6.LCU.RXC       | car8.CCU.sys2.TXC | 1,1,1,1,1,1,1,1 |
-      | car6.LCU.RXC       | car1.LCU          | 3,1,1,1,1,1,1,1 |
-      | car6.LCU.RXC       | car1.LCU.RXC      | 1,1,1,1,1,1,1,1 |
-      | car6.LCU.RXC       | car2.LCU          | 1,3,1,1,1,1,1,1 |
-      | car6.LCU.RXC       | car2.LCU.RXC      | 1,1,1,1,1,1,1,1 |
-      | car6.LCU.RXC       | car3.LCU          | 1,1,3,1,1,1,1,1 |
-      | car6.LCU.RXC       | car3.LCU.RXC      | 1,1,1,1,1,1,1,1 |
-      | car6.LCU.RXC       | car4.LCU          | 1,1,1,3,1,1,1,1 |
-      | car6.LCU.RXC       | car4.LCU.RXC      | 1,1,1,1,1,1,1,1 |
-      | car6.LCU.RXC       | car5.LCU          | 1,1,1,1,3,1,1,1 |
-      | car6.LCU.RXC       | car5.LCU.RXC      | 1,1,1,1,1,1,1,1 |
       | car6.LCU.RXC       | car6.LCU          | 1,1,1,1,1,-,1,1 |
-      | car6.LCU.RXC       | car6.LCU.RXC      | 1,1,1,1,1,1,1,1 |
-      | car6.LCU.RXC       | car7.LCU          | 1,1,1,1,1,1,3,1 |
-      | car6.LCU.RXC       | car7.LCU.RXC      | 1,1,1,1,1,1,1,1 |
-      | car6.LCU.RXC       | car8.LCU          | 1,1,1,1,1,1,1,3 |
-      | car6.LCU.RXC       | car8.LCU.RXC      | 1,1,1,1,1,1,1,1 |
       | car7.LCU.CPU3      | car1.CCU.sys1     | 1,1,1,1,1,1,1,1 |
       | car7.LCU.CPU3      | car1.CCU.sys2     | 1,1,1,1,1,1,1,1 |
-      | car7.LCU.CPU3      | car1.CCU.sys1.TXC | 1,1,1,1,1,1,1,1 |
-      | car7.LCU.CPU3      | car1.CCU.sys2.TXC | 1,1,1,1,1,1,1,1 |
       | car7.LCU.CPU3      | car8.CCU.sys1     | 1,1,1,1,1,1,1,1 |
       | car7.LCU.CPU3      | car8.CCU.sys2     | 1,1,1,1,1,1,1,1 |
-      | car7.LCU.CPU3      | car8.CCU.sys1.TXC | 1,1,1,1,1,1,1,1 |
-      | car7.LCU.CPU3      | car8.CCU.sys2.TXC | 1,1,1,1,1,1,1,1 |
       | car7.LCU.CPU3      | car1.LCU          | 3,1,1,1,1,1,1,1 |
-      | car7.LCU.CPU3      | car1.LCU.RXC      | 1,1,1,1,1,1,1,1 |
       | car7.LCU.CPU3      | car2.LCU          | 1,3,1,1,1,1,1,1 |
-      | car7.LCU.CPU3      | car2.LCU.RXC      | 1,1,1,1,1,1,1,1 |
       | car7.LCU.CPU3      | car3.LCU          | 1,1,3,1,1,1,1,1 |
-      | car7.LCU.CPU3      | car3.LCU.RXC      | 1,1,1,1,1,1,1,1 |
       | car7.LCU.CPU3      | car4.LCU          | 1,1,1,3,1,1,1,1 |
-      | car7.LCU.CPU3      | car4.LCU.RXC      | 1,1,1,1,1,1,1,1 |
       | car7.LCU.CPU3      | car5.LCU          | 1,1,1,1,3,1,1,1 |
-      | car7.LCU.CPU3      | car5.LCU.RXC      | 1,1,1,1,1,1,1,1 |
       | car7.LCU.CPU3      | car6.LCU          | 1,1,1,1,1,3,1,1 |
-      | car7.LCU.CPU3      | car6.LCU.RXC      | 1,1,1,1,1,1,1,1 |
       | car7.LCU.CPU3      | car7.LCU          | 1,1,1,1,1,1,3,1 |
       | car7.LCU.CPU3      | car7.LCU.RXC      | 1,1,1,1,1,1,1,1 |
       | car7.LCU.CPU3      | car8.LCU          | 1,1,1,1,1,1,1,3 |
-      | car7.LCU.CPU3      | car8.LCU.RXC      | 1,1,1,1,1,1,1,1 |
       | car7.LCU.MDM8      | car1.CCU.sys1     | 1,1,1,1,1,1,3,3 |
       | car7.LCU.MDM8      | car1.CCU.sys2     | 3,3,3,3,3,3,3,1 |
-      | car7.LCU.MDM8      | car1.CCU.sys1.TXC | 1,1,1,1,1,1,3,1 |
-      | car7.LCU.MDM8      | car1.CCU.sys2.TXC | 1,1,1,1,1,1,3,1 |
       | car7.LCU.MDM8      | car8.CCU.sys1     | 1,1,1,1,1,1,3,3 |
       | car7.LCU.MDM8      | car8.CCU.sys2     | 1,1,1,1,1,1,3,3 |
-      | car7.LCU.MDM8      | car8.CCU.sys1.TXC | 1,1,1,1,1,1,3,1 |
-      | car7.LCU.MDM8      | car8.CCU.sys2.TXC | 1,1,1,1,1,1,3,1 |
       | car7.LCU.MDM8      | car1.LCU          | 3,3,3,3,3,3,3,1 |
-      | car7.LCU.MDM8      | car1.LCU.RXC      | 1,1,1,1,1,1,3,1 |
       | car7.LCU.MDM8      | car2.LCU          | 1,3,3,3,3,3,3,1 |
-      | car7.LCU.MDM8      | car2.LCU.RXC      | 1,1,1,1,1,1,3,1 |
       | car7.LCU.MDM8      | car3.LCU          | 1,1,3,3,3,3,3,1 |
-      | car7.LCU.MDM8      | car3.LCU.RXC      | 1,1,1,1,1,1,3,1 |
       | car7.LCU.MDM8      | car4.LCU          | 1,1,1,3,3,3,3,1 |
-      | car7.LCU.MDM8      | car4.LCU.RXC      | 1,1,1,1,1,1,3,1 |
       | car7.LCU.MDM8      | car5.LCU          | 1,1,1,1,3,3,3,1 |
-      | car7.LCU.MDM8      | car5.LCU.RXC      | 1,1,1,1,1,1,3,1 |
       | car7.LCU.MDM8      | car6.LCU          | 1,1,1,1,1,3,3,1 |
-      | car7.LCU.MDM8      | car6.LCU.RXC      | 1,1,1,1,1,1,3,1 |
       | car7.LCU.MDM8      | car7.LCU          | 1,1,1,1,1,1,3,1 |
       | car7.LCU.MDM8      | car7.LCU.RXC      | 1,1,1,1,1,1,-,1 |
       | car7.LCU.MDM8      | car8.LCU          | 1,1,1,1,1,1,3,3 |
-      | car7.LCU.MDM8      | car8.LCU.RXC      | 1,1,1,1,1,1,3,1 |
-      | car7.LCU.MDM9      | car1.CCU.sys1     | 1,1,1,1,1,1,2,1 |
-      | car7.LCU.MDM9      | car1.CCU.sys2     | 1,1,1,1,1,1,2,1 |
-      | car7.LCU.MDM9      | car1.CCU.sys1.TXC | 1,1,1,1,1,1,2,1 |
-      | car7.LCU.MDM9      | car1.CCU.sys2.TXC | 1,1,1,1,1,1,2,1 |
-      | car7.LCU.MDM9      | car8.CCU.sys1     | 1,1,1,1,1,1,2,1 |
-      | car7.LCU.MDM9      | car8.CCU.sys2     | 1,1,1,1,1,1,2,1 |
-      | car7.LCU.MDM9      | car8.CCU.sys1.TXC | 1,1,1,1,1,1,2,1 |
-      | car7.LCU.MDM9      | car8.CCU.sys2.TXC | 1,1,1,1,1,1,2,1 |
-      | car7.LCU.MDM9      | car1.LCU          | 3,1,1,1,1,1,2,1 |
-      | car7.LCU.MDM9      | car1.LCU.RXC      | 1,1,1,1,1,1,2,1 |
-      | car7.LCU.MDM9      | car2.LCU          | 1,3,1,1,1,1,2,1 |
-      | car7.LCU.MDM9      | car2.LCU.RXC      | 1,1,1,1,1,1,2,1 |
-      | car7.LCU.MDM9      | car3.LCU          | 1,1,3,1,1,1,2,1 |
-      | car7.LCU.MDM9      | car3.LCU.RXC      | 1,1,1,1,1,1,2,1 |
-      | car7.LCU.MDM9      | car4.LCU          | 1,1,1,3,1,1,2,1 |
-      | car7.LCU.MDM9      | car4.LCU.RXC      | 1,1,1,1,1,1,2,1 |
-      | car7.LCU.MDM9      | car5.LCU          | 1,1,1,1,3,1,2,1 |
-      | car7.LCU.MDM9      | car5.LCU.RXC      | 1,1,1,1,1,1,2,1 |
-      | car7.LCU.MDM9      | car6.LCU          | 1,1,1,1,1,3,2,1 |
-      | car7.LCU.MDM9      | car6.LCU.RXC      | 1,1,1,1,1,1,2,1 |
       | car7.LCU.MDM9      | car7.LCU          | 1,1,1,1,1,1,3,1 |
-      | car7.LCU.MDM9      | car7.LCU.RXC      | 1,1,1,1,1,1,-,1 |
-      | car7.LCU.MDM9      | car8.LCU          | 1,1,1,1,1,1,2,3 |
-      | car7.LCU.MDM9      | car8.LCU.RXC      | 1,1,1,1,1,1,2,1 |
-      | car7.LCU.RXC       | car1.CCU.sys1     | 1,1,1,1,1,1,1,1 |
-      | car7.LCU.RXC       | car1.CCU.sys2     | 1,1,1,1,1,1,1,1 |
-      | car7.LCU.RXC       | car1.CCU.sys1.TXC | 1,1,1,1,1,1,1,1 |
-      | car7.LCU.RXC       | car1.CCU.sys2.TXC | 1,1,1,1,1,1,1,1 |
-      | car7.LCU.RXC       | car8.CCU.sys1     | 1,1,1,1,1,1,1,1 |
-      | car7.LCU.RXC       | car8.CCU.sys2     | 1,1,1,1,1,1,1,1 |
-      | car7.LCU.RXC       | car8.CCU.sys1.TXC | 1,1,1,1,1,1,1,1 |
-      | car7.LCU.RXC       | car8.CCU.sys2.TXC | 1,1,1,1,1,1,1,1 |
-      | car7.LCU.RXC       | car1.LCU          | 3,1,1,1,1,1,1,1 |
-      | car7.LCU.RXC       | car1.LCU.RXC      | 1,1,1,1,1,1,1,1 |
-      | car7.LCU.RXC       | car2.LCU          | 1,3,1,1,1,1,1,1 |
-      | car7.LCU.RXC       | car2.LCU.RXC      | 1,1,1,1,1,1,1,1 |
-      | car7.LCU.RXC       | car3.LCU          | 1,1,3,1,1,1,1,1 |
-      | car7.LCU.RXC       | car3.LCU.RXC      | 1,1,1,1,1,1,1,1 |
-      | car7.LCU.RXC       | car4.LCU          | 1,1,1,3,1,1,1,1 |
-      | car7.LCU.RXC       | car4.LCU.RXC      | 1,1,1,1,1,1,1,1 |
-      | car7.LCU.RXC       | car5.LCU          | 1,1,1,1,3,1,1,1 |
-      | car7.LCU.RXC       | car5.LCU.RXC      | 1,1,1,1,1,1,1,1 |
-      | car7.LCU.RXC       | car6.LCU          | 1,1,1,1,1,3,1,1 |
-      | car7.LCU.RXC       | car6.LCU.RXC      | 1,1,1,1,1,1,1,1 |
       | car7.LCU.RXC       | car7.LCU          | 1,1,1,1,1,1,-,1 |
-      | car7.LCU.RXC       | car7.LCU.RXC      | 1,1,1,1,1,1,1,1 |
-      | car7.LCU.RXC       | car8.LCU          | 1,1,1,1,1,1,1,3 |
-      | car7.LCU.RXC       | car8.LCU.RXC      | 1,1,1,1,1,1,1,1 |
       | car8.LCU.CPU3      | car1.CCU.sys1     | 1,1,1,1,1,1,1,1 |
       | car8.LCU.CPU3      | car1.CCU.sys2     | 1,1,1,1,1,1,1,1 |
-      | car8.LCU.CPU3      | car1.CCU.sys1.TXC | 1,1,1,1,1,1,1,1 |
-      | car8.LCU.CPU3      | car1.CCU.sys2.TXC | 1,1,1,1,1,1,1,1 |
       | car8.LCU.CPU3      | car8.CCU.sys1     | 1,1,1,1,1,1,1,1 |
       | car8.LCU.CPU3      | car8.CCU.sys2     | 1,1,1,1,1,1,1,1 |
-      | car8.LCU.CPU3      | car8.CCU.sys1.TXC | 1,1,1,1,1,1,1,1 |
-      | car8.LCU.CPU3      | car8.CCU.sys2.TXC | 1,1,1,1,1,1,1,1 |
       | car8.LCU.CPU3      | car1.LCU          | 3,1,1,1,1,1,1,1 |
-      | car8.LCU.CPU3      | car1.LCU.RXC      | 1,1,1,1,1,1,1,1 |
       | car8.LCU.CPU3      | car2.LCU          | 1,3,1,1,1,1,1,1 |
-      | car8.LCU.CPU3      | car2.LCU.RXC      | 1,1,1,1,1,1,1,1 |
       | car8.LCU.CPU3      | car3.LCU          | 1,1,3,1,1,1,1,1 |
-      | car8.LCU.CPU3      | car3.LCU.RXC      | 1,1,1,1,1,1,1,1 |
       | car8.LCU.CPU3      | car4.LCU          | 1,1,1,3,1,1,1,1 |
-      | car8.LCU.CPU3      | car4.LCU.RXC      | 1,1,1,1,1,1,1,1 |
       | car8.LCU.CPU3      | car5.LCU          | 1,1,1,1,3,1,1,1 |
-      | car8.LCU.CPU3      | car5.LCU.RXC      | 1,1,1,1,1,1,1,1 |
       | car8.LCU.CPU3      | car6.LCU          | 1,1,1,1,1,3,1,1 |
-      | car8.LCU.CPU3      | car6.LCU.RXC      | 1,1,1,1,1,1,1,1 |
       | car8.LCU.CPU3      | car7.LCU          | 1,1,1,1,1,1,3,1 |
-      | car8.LCU.CPU3      | car7.LCU.RXC      | 1,1,1,1,1,1,1,1 |
       | car8.LCU.CPU3      | car8.LCU          | 1,1,1,1,1,1,1,3 |
       | car8.LCU.CPU3      | car8.LCU.RXC      | 1,1,1,1,1,1,1,1 |
       | car8.LCU.MDM8      | car1.CCU.sys1     | 1,1,1,1,1,1,1,3 |
       | car8.LCU.MDM8      | car1.CCU.sys2     | 3,3,3,3,3,3,3,3 |
-      | car8.LCU.MDM8      | car1.CCU.sys1.TXC | 1,1,1,1,1,1,1,3 |
-      | car8.LCU.MDM8      | car1.CCU.sys2.TXC | 1,1,1,1,1,1,1,3 |
       | car8.LCU.MDM8      | car8.CCU.sys1     | 1,1,1,1,1,1,1,3 |
       | car8.LCU.MDM8      | car8.CCU.sys2     | 1,1,1,1,1,1,1,3 |
-      | car8.LCU.MDM8      | car8.CCU.sys1.TXC | 1,1,1,1,1,1,1,3 |
-      | car8.LCU.MDM8      | car8.CCU.sys2.TXC | 1,1,1,1,1,1,1,3 |
       | car8.LCU.MDM8      | car1.LCU          | 3,3,3,3,3,3,3,3 |
-      | car8.LCU.MDM8      | car1.LCU.RXC      | 1,1,1,1,1,1,1,3 |
       | car8.LCU.MDM8      | car2.LCU          | 1,3,3,3,3,3,3,3 |
-      | car8.LCU.MDM8      | car2.LCU.RXC      | 1,1,1,1,1,1,1,3 |
       | car8.LCU.MDM8      | car3.LCU          | 1,1,3,3,3,3,3,3 |
-      | car8.LCU.MDM8      | car3.LCU.RXC      | 1,1,1,1,1,1,1,3 |
       | car8.LCU.MDM8      | car4.LCU          | 1,1,1,3,3,3,3,3 |
-      | car8.LCU.MDM8      | car4.LCU.RXC      | 1,1,1,1,1,1,1,3 |
       | car8.LCU.MDM8      | car5.LCU          | 1,1,1,1,3,3,3,3 |
-      | car8.LCU.MDM8      | car5.LCU.RXC      | 1,1,1,1,1,1,1,3 |
       | car8.LCU.MDM8      | car6.LCU          | 1,1,1,1,1,3,3,3 |
-      | car8.LCU.MDM8      | car6.LCU.RXC      | 1,1,1,1,1,1,1,3 |
       | car8.LCU.MDM8      | car7.LCU          | 1,1,1,1,1,1,3,3 |
-      | car8.LCU.MDM8      | car7.LCU.RXC      | 1,1,1,1,1,1,1,3 |
       | car8.LCU.MDM8      | car8.LCU          | 1,1,1,1,1,1,1,3 |
       | car8.LCU.MDM8      | car8.LCU.RXC      | 1,1,1,1,1,1,1,- |
-      | car8.LCU.MDM9      | car1.CCU.sys1     | 1,1,1,1,1,1,1,2 |
-      | car8.LCU.MDM9      | car1.CCU.sys2     | 1,1,1,1,1,1,1,2 |
-      | car8.LCU.MDM9      | car1.CCU.sys1.TXC | 1,1,1,1,1,1,1,2 |
-      | car8.LCU.MDM9      | car1.CCU.sys2.TXC | 1,1,1,1,1,1,1,2 |
-      | car8.LCU.MDM9      | car8.CCU.sys1     | 1,1,1,1,1,1,1,2 |
-      | car8.LCU.MDM9      | car8.CCU.sys2     | 1,1,1,1,1,1,1,2 |
-      | car8.LCU.MDM9      | car8.CCU.sys1.TXC | 1,1,1,1,1,1,1,2 |
-      | car8.LCU.MDM9      | car8.CCU.sys2.TXC | 1,1,1,1,1,1,1,2 |
-      | car8.LCU.MDM9      | car1.LCU          | 3,1,1,1,1,1,1,2 |
-      | car8.LCU.MDM9      | car1.LCU.RXC      | 1,1,1,1,1,1,1,2 |
-      | car8.LCU.MDM9      | car2.LCU          | 1,3,1,1,1,1,1,2 |
-      | car8.LCU.MDM9      | car2.LCU.RXC      | 1,1,1,1,1,1,1,2 |
-      | car8.LCU.MDM9      | car3.LCU          | 1,1,3,1,1,1,1,2 |
-      | car8.LCU.MDM9      | car3.LCU.RXC      | 1,1,1,1,1,1,1,2 |
-      | car8.LCU.MDM9      | car4.LCU          | 1,1,1,3,1,1,1,2 |
-      | car8.LCU.MDM9      | car4.LCU.RXC      | 1,1,1,1,1,1,1,2 |
-      | car8.LCU.MDM9      | car5.LCU          | 1,1,1,1,3,1,1,2 |
-      | car8.LCU.MDM9      | car5.LCU.RXC      | 1,1,1,1,1,1,1,2 |
-      | car8.LCU.MDM9      | car6.LCU          | 1,1,1,1,1,3,1,2 |
-      | car8.LCU.MDM9      | car6.LCU.RXC      | 1,1,1,1,1,1,1,2 |
-      | car8.LCU.MDM9      | car7.LCU          | 1,1,1,1,1,1,3,2 |
-      | car8.LCU.MDM9      | car7.LCU.RXC      | 1,1,1,1,1,1,1,2 |
       | car8.LCU.MDM9      | car8.LCU          | 1,1,1,1,1,1,1,3 |
-      | car8.LCU.MDM9      | car8.LCU.RXC      | 1,1,1,1,1,1,1,- |
-      | car8.LCU.RXC       | car1.CCU.sys1     | 1,1,1,1,1,1,1,1 |
-      | car8.LCU.RXC       | car1.CCU.sys2     | 1,1,1,1,1,1,1,1 |
-      | car8.LCU.RXC       | car1.CCU.sys1.TXC | 1,1,1,1,1,1,1,1 |
-      | car8.LCU.RXC       | car1.CCU.sys2.TXC | 1,1,1,1,1,1,1,1 |
-      | car8.LCU.RXC       | car8.CCU.sys1     | 1,1,1,1,1,1,1,1 |
-      | car8.LCU.RXC       | car8.CCU.sys2     | 1,1,1,1,1,1,1,1 |
-      | car8.LCU.RXC       | car8.CCU.sys1.TXC | 1,1,1,1,1,1,1,1 |
-      | car8.LCU.RXC       | car8.CCU.sys2.TXC | 1,1,1,1,1,1,1,1 |
-      | car8.LCU.RXC       | car1.LCU          | 3,1,1,1,1,1,1,1 |
-      | car8.LCU.RXC       | car1.LCU.RXC      | 1,1,1,1,1,1,1,1 |
-      | car8.LCU.RXC       | car2.LCU          | 1,3,1,1,1,1,1,1 |
-      | car8.LCU.RXC       | car2.LCU.RXC      | 1,1,1,1,1,1,1,1 |
-      | car8.LCU.RXC       | car3.LCU          | 1,1,3,1,1,1,1,1 |
-      | car8.LCU.RXC       | car3.LCU.RXC      | 1,1,1,1,1,1,1,1 |
-      | car8.LCU.RXC       | car4.LCU          | 1,1,1,3,1,1,1,1 |
-      | car8.LCU.RXC       | car4.LCU.RXC      | 1,1,1,1,1,1,1,1 |
-      | car8.LCU.RXC       | car5.LCU          | 1,1,1,1,3,1,1,1 |
-      | car8.LCU.RXC       | car5.LCU.RXC      | 1,1,1,1,1,1,1,1 |
-      | car8.LCU.RXC       | car6.LCU          | 1,1,1,1,1,3,1,1 |
-      | car8.LCU.RXC       | car6.LCU.RXC      | 1,1,1,1,1,1,1,1 |
-      | car8.LCU.RXC       | car7.LCU          | 1,1,1,1,1,1,3,1 |
-      | car8.LCU.RXC       | car7.LCU.RXC      | 1,1,1,1,1,1,1,1 |
       | car8.LCU.RXC       | car8.LCU          | 1,1,1,1,1,1,1,- |
-      | car8.LCU.RXC       | car8.LCU.RXC      | 1,1,1,1,1,1,1,1 |
       | car8.CCU.sys2.CPU3 | car1.CCU.sys1     | 1,1,1,1,1,1,1,1 |
       | car8.CCU.sys2.CPU3 | car1.CCU.sys2     | 1,1,1,1,1,1,1,1 |
-      | car8.CCU.sys2.CPU3 | car1.CCU.sys1.TXC | 1,1,1,1,1,1,1,1 |
-      | car8.CCU.sys2.CPU3 | car1.CCU.sys2.TXC | 1,1,1,1,1,1,1,1 |
       | car8.CCU.sys2.CPU3 | car8.CCU.sys1     | 1,1,1,1,1,1,1,1 |
       | car8.CCU.sys2.CPU3 | car8.CCU.sys2     | 1,1,1,1,1,1,1,1 |
-      | car8.CCU.sys2.CPU3 | car8.CCU.sys1.TXC | 1,1,1,1,1,1,1,1 |
       | car8.CCU.sys2.CPU3 | car8.CCU.sys2.TXC | 1,1,1,1,1,1,1,1 |
       | car8.CCU.sys2.CPU3 | car1.LCU          | 3,1,1,1,1,1,1,1 |
-      | car8.CCU.sys2.CPU3 | car1.LCU.RXC      | 1,1,1,1,1,1,1,1 |
       | car8.CCU.sys2.CPU3 | car2.LCU          | 1,3,1,1,1,1,1,1 |
-      | car8.CCU.sys2.CPU3 | car2.LCU.RXC      | 1,1,1,1,1,1,1,1 |
       | car8.CCU.sys2.CPU3 | car3.LCU          | 1,1,3,1,1,1,1,1 |
-      | car8.CCU.sys2.CPU3 | car3.LCU.RXC      | 1,1,1,1,1,1,1,1 |
       | car8.CCU.sys2.CPU3 | car4.LCU          | 1,1,1,3,1,1,1,1 |
-      | car8.CCU.sys2.CPU3 | car4.LCU.RXC      | 1,1,1,1,1,1,1,1 |
       | car8.CCU.sys2.CPU3 | car5.LCU          | 1,1,1,1,3,1,1,1 |
-      | car8.CCU.sys2.CPU3 | car5.LCU.RXC      | 1,1,1,1,1,1,1,1 |
       | car8.CCU.sys2.CPU3 | car6.LCU          | 1,1,1,1,1,3,1,1 |
-      | car8.CCU.sys2.CPU3 | car6.LCU.RXC      | 1,1,1,1,1,1,1,1 |
       | car8.CCU.sys2.CPU3 | car7.LCU          | 1,1,1,1,1,1,3,1 |
-      | car8.CCU.sys2.CPU3 | car7.LCU.RXC      | 1,1,1,1,1,1,1,1 |
       | car8.CCU.sys2.CPU3 | car8.LCU          | 1,1,1,1,1,1,1,3 |
-      | car8.CCU.sys2.CPU3 | car8.LCU.RXC      | 1,1,1,1,1,1,1,1 |
       | car8.CCU.sys2.MDM8 | car1.CCU.sys1     | 1,1,1,1,1,1,1,1 |
       | car8.CCU.sys2.MDM8 | car1.CCU.sys2     | 3,3,3,3,3,3,3,3 |
-      | car8.CCU.sys2.MDM8 | car1.CCU.sys1.TXC | 1,1,1,1,1,1,1,1 |
-      | car8.CCU.sys2.MDM8 | car1.CCU.sys2.TXC | 1,1,1,1,1,1,1,1 |
       | car8.CCU.sys2.MDM8 | car8.CCU.sys1     | 1,1,1,1,1,1,1,1 |
       | car8.CCU.sys2.MDM8 | car8.CCU.sys2     | 1,1,1,1,1,1,1,1 |
-      | car8.CCU.sys2.MDM8 | car8.CCU.sys1.TXC | 1,1,1,1,1,1,1,1 |
       | car8.CCU.sys2.MDM8 | car8.CCU.sys2.TXC | 1,1,1,1,1,1,1,1 |
       | car8.CCU.sys2.MDM8 | car1.LCU          | 3,3,3,3,3,3,3,3 |
-      | car8.CCU.sys2.MDM8 | car1.LCU.RXC      | 1,1,1,1,1,1,1,1 |
       | car8.CCU.sys2.MDM8 | car2.LCU          | 1,3,3,3,3,3,3,3 |
-      | car8.CCU.sys2.MDM8 | car2.LCU.RXC      | 1,1,1,1,1,1,1,1 |
       | car8.CCU.sys2.MDM8 | car3.LCU          | 1,1,3,3,3,3,3,3 |
-      | car8.CCU.sys2.MDM8 | car3.LCU.RXC      | 1,1,1,1,1,1,1,1 |
       | car8.CCU.sys2.MDM8 | car4.LCU          | 1,1,1,3,3,3,3,3 |
-      | car8.CCU.sys2.MDM8 | car4.LCU.RXC      | 1,1,1,1,1,1,1,1 |
       | car8.CCU.sys2.MDM8 | car5.LCU          | 1,1,1,1,3,3,3,3 |
-      | car8.CCU.sys2.MDM8 | car5.LCU.RXC      | 1,1,1,1,1,1,1,1 |
       | car8.CCU.sys2.MDM8 | car6.LCU          | 1,1,1,1,1,3,3,3 |
-      | car8.CCU.sys2.MDM8 | car6.LCU.RXC      | 1,1,1,1,1,1,1,1 |
       | car8.CCU.sys2.MDM8 | car7.LCU          | 1,1,1,1,1,1,3,3 |
-      | car8.CCU.sys2.MDM8 | car7.LCU.RXC      | 1,1,1,1,1,1,1,1 |
       | car8.CCU.sys2.MDM8 | car8.LCU          | 1,1,1,1,1,1,1,3 |
-      | car8.CCU.sys2.MDM8 | car8.LCU.RXC      | 1,1,1,1,1,1,1,1 |
-      | car8.CCU.sys2.TXC  | car1.CCU.sys1     | 1,1,1,1,1,1,1,1 |
-      | car8.CCU.sys2.TXC  | car1.CCU.sys2     | 1,1,1,1,1,1,1,1 |
-      | car8.CCU.sys2.TXC  | car1.CCU.sys1.TXC | 1,1,1,1,1,1,1,1 |
-      | car8.CCU.sys2.TXC  | car1.CCU.sys2.TXC | 1,1,1,1,1,1,1,1 |
-      | car8.CCU.sys2.TXC  | car8.CCU.sys1     | 1,1,1,1,1,1,1,1 |
       | car8.CCU.sys2.TXC  | car8.CCU.sys2     | 1,1,1,1,1,1,1,1 |
-      | car8.CCU.sys2.TXC  | car8.CCU.sys1.TXC | 1,1,1,1,1,1,1,1 |
-      | car8.CCU.sys2.TXC  | car8.CCU.sys2.TXC | 1,1,1,1,1,1,1,1 |
-      | car8.CCU.sys2.TXC  | car1.LCU          | 3,1,1,1,1,1,1,1 |
-      | car8.CCU.sys2.TXC  | car1.LCU.RXC      | 1,1,1,1,1,1,1,1 |
-      | car8.CCU.sys2.TXC  | car2.LCU          | 1,3,1,1,1,1,1,1 |
-      | car8.CCU.sys2.TXC  | car2.LCU.RXC      | 1,1,1,1,1,1,1,1 |
-      | car8.CCU.sys2.TXC  | car3.LCU          | 1,1,3,1,1,1,1,1 |
-      | car8.CCU.sys2.TXC  | car3.LCU.RXC      | 1,1,1,1,1,1,1,1 |
-      | car8.CCU.sys2.TXC  | car4.LCU          | 1,1,1,3,1,1,1,1 |
-      | car8.CCU.sys2.TXC  | car4.LCU.RXC      | 1,1,1,1,1,1,1,1 |
-      | car8.CCU.sys2.TXC  | car5.LCU          | 1,1,1,1,3,1,1,1 |
-      | car8.CCU.sys2.TXC  | car5.LCU.RXC      | 1,1,1,1,1,1,1,1 |
-      | car8.CCU.sys2.TXC  | car6.LCU          | 1,1,1,1,1,3,1,1 |
-      | car8.CCU.sys2.TXC  | car6.LCU.RXC      | 1,1,1,1,1,1,1,1 |
-      | car8.CCU.sys2.TXC  | car7.LCU          | 1,1,1,1,1,1,3,1 |
-      | car8.CCU.sys2.TXC  | car7.LCU.RXC      | 1,1,1,1,1,1,1,1 |
-      | car8.CCU.sys2.TXC  | car8.LCU          | 1,1,1,1,1,1,1,3 |
-      | car8.CCU.sys2.TXC  | car8.LCU.RXC      | 1,1,1,1,1,1,1,1 |
       | car8.CCU.sys1.CPU3 | car1.CCU.sys1     | 1,1,1,1,1,1,1,1 |
       | car8.CCU.sys1.CPU3 | car1.CCU.sys2     | 1,1,1,1,1,1,1,1 |
-      | car8.CCU.sys1.CPU3 | car1.CCU.sys1.TXC | 1,1,1,1,1,1,1,1 |
-      | car8.CCU.sys1.CPU3 | car1.CCU.sys2.TXC | 1,1,1,1,1,1,1,1 |
       | car8.CCU.sys1.CPU3 | car8.CCU.sys1     | 1,1,1,1,1,1,1,1 |
       | car8.CCU.sys1.CPU3 | car8.CCU.sys2     | 1,1,1,1,1,1,1,1 |
       | car8.CCU.sys1.CPU3 | car8.CCU.sys1.TXC | 1,1,1,1,1,1,1,1 |
-      | car8.CCU.sys1.CPU3 | car8.CCU.sys2.TXC | 1,1,1,1,1,1,1,1 |
       | car8.CCU.sys1.CPU3 | car1.LCU          | 3,1,1,1,1,1,1,1 |
-      | car8.CCU.sys1.CPU3 | car1.LCU.RXC      | 1,1,1,1,1,1,1,1 |
       | car8.CCU.sys1.CPU3 | car2.LCU          | 1,3,1,1,1,1,1,1 |
-      | car8.CCU.sys1.CPU3 | car2.LCU.RXC      | 1,1,1,1,1,1,1,1 |
       | car8.CCU.sys1.CPU3 | car3.LCU          | 1,1,3,1,1,1,1,1 |
-      | car8.CCU.sys1.CPU3 | car3.LCU.RXC      | 1,1,1,1,1,1,1,1 |
       | car8.CCU.sys1.CPU3 | car4.LCU          | 1,1,1,3,1,1,1,1 |
-      | car8.CCU.sys1.CPU3 | car4.LCU.RXC      | 1,1,1,1,1,1,1,1 |
       | car8.CCU.sys1.CPU3 | car5.LCU          | 1,1,1,1,3,1,1,1 |
-      | car8.CCU.sys1.CPU3 | car5.LCU.RXC      | 1,1,1,1,1,1,1,1 |
       | car8.CCU.sys1.CPU3 | car6.LCU          | 1,1,1,1,1,3,1,1 |
-      | car8.CCU.sys1.CPU3 | car6.LCU.RXC      | 1,1,1,1,1,1,1,1 |
       | car8.CCU.sys1.CPU3 | car7.LCU          | 1,1,1,1,1,1,3,1 |
-      | car8.CCU.sys1.CPU3 | car7.LCU.RXC      | 1,1,1,1,1,1,1,1 |
       | car8.CCU.sys1.CPU3 | car8.LCU          | 1,1,1,1,1,1,1,3 |
-      | car8.CCU.sys1.CPU3 | car8.LCU.RXC      | 1,1,1,1,1,1,1,1 |
       | car8.CCU.sys1.MDM8 | car1.CCU.sys1     | 1,1,1,1,1,1,1,1 |
       | car8.CCU.sys1.MDM8 | car1.CCU.sys2     | 3,3,3,3,3,3,3,3 |
-      | car8.CCU.sys1.MDM8 | car1.CCU.sys1.TXC | 1,1,1,1,1,1,1,1 |
-      | car8.CCU.sys1.MDM8 | car1.CCU.sys2.TXC | 1,1,1,1,1,1,1,1 |
       | car8.CCU.sys1.MDM8 | car8.CCU.sys1     | 1,1,1,1,1,1,1,1 |
       | car8.CCU.sys1.MDM8 | car8.CCU.sys2     | 1,1,1,1,1,1,1,1 |
       | car8.CCU.sys1.MDM8 | car8.CCU.sys1.TXC | 1,1,1,1,1,1,1,1 |
-      | car8.CCU.sys1.MDM8 | car8.CCU.sys2.TXC | 1,1,1,1,1,1,1,1 |
       | car8.CCU.sys1.MDM8 | car1.LCU          | 3,3,3,3,3,3,3,3 |
-      | car8.CCU.sys1.MDM8 | car1.LCU.RXC      | 1,1,1,1,1,1,1,1 |
       | car8.CCU.sys1.MDM8 | car2.LCU          | 1,3,3,3,3,3,3,3 |
-      | car8.CCU.sys1.MDM8 | car2.LCU.RXC      | 1,1,1,1,1,1,1,1 |
       | car8.CCU.sys1.MDM8 | car3.LCU          | 1,1,3,3,3,3,3,3 |
-      | car8.CCU.sys1.MDM8 | car3.LCU.RXC      | 1,1,1,1,1,1,1,1 |
       | car8.CCU.sys1.MDM8 | car4.LCU          | 1,1,1,3,3,3,3,3 |
-      | car8.CCU.sys1.MDM8 | car4.LCU.RXC      | 1,1,1,1,1,1,1,1 |
       | car8.CCU.sys1.MDM8 | car5.LCU          | 1,1,1,1,3,3,3,3 |
-      | car8.CCU.sys1.MDM8 | car5.LCU.RXC      | 1,1,1,1,1,1,1,1 |
       | car8.CCU.sys1.MDM8 | car6.LCU          | 1,1,1,1,1,3,3,3 |
-      | car8.CCU.sys1.MDM8 | car6.LCU.RXC      | 1,1,1,1,1,1,1,1 |
       | car8.CCU.sys1.MDM8 | car7.LCU          | 1,1,1,1,1,1,3,3 |
-      | car8.CCU.sys1.MDM8 | car7.LCU.RXC      | 1,1,1,1,1,1,1,1 |
       | car8.CCU.sys1.MDM8 | car8.LCU          | 1,1,1,1,1,1,1,3 |
-      | car8.CCU.sys1.MDM8 | car8.LCU.RXC      | 1,1,1,1,1,1,1,1 |
-      | car8.CCU.sys1.TXC  | car1.CCU.sys1     | 1,1,1,1,1,1,1,1 |
-      | car8.CCU.sys1.TXC  | car1.CCU.sys2     | 1,1,1,1,1,1,1,1 |
-      | car8.CCU.sys1.TXC  | car1.CCU.sys1.TXC | 1,1,1,1,1,1,1,1 |
-      | car8.CCU.sys1.TXC  | car1.CCU.sys2.TXC | 1,1,1,1,1,1,1,1 |
       | car8.CCU.sys1.TXC  | car8.CCU.sys1     | 1,1,1,1,1,1,1,1 |
-      | car8.CCU.sys1.TXC  | car8.CCU.sys2     | 1,1,1,1,1,1,1,1 |
-      | car8.CCU.sys1.TXC  | car8.CCU.sys1.TXC | 1,1,1,1,1,1,1,1 |
-      | car8.CCU.sys1.TXC  | car8.CCU.sys2.TXC | 1,1,1,1,1,1,1,1 |
-      | car8.CCU.sys1.TXC  | car1.LCU          | 3,1,1,1,1,1,1,1 |
-      | car8.CCU.sys1.TXC  | car1.LCU.RXC      | 1,1,1,1,1,1,1,1 |
-      | car8.CCU.sys1.TXC  | car2.LCU          | 1,3,1,1,1,1,1,1 |
-      | car8.CCU.sys1.TXC  | car2.LCU.RXC      | 1,1,1,1,1,1,1,1 |
-      | car8.CCU.sys1.TXC  | car3.LCU          | 1,1,3,1,1,1,1,1 |
-      | car8.CCU.sys1.TXC  | car3.LCU.RXC      | 1,1,1,1,1,1,1,1 |
-      | car8.CCU.sys1.TXC  | car4.LCU          | 1,1,1,3,1,1,1,1 |
-      | car8.CCU.sys1.TXC  | car4.LCU.RXC      | 1,1,1,1,1,1,1,1 |
-      | car8.CCU.sys1.TXC  | car5.LCU          | 1,1,1,1,3,1,1,1 |
-      | car8.CCU.sys1.TXC  | car5.LCU.RXC      | 1,1,1,1,1,1,1,1 |
-      | car8.CCU.sys1.TXC  | car6.LCU          | 1,1,1,1,1,3,1,1 |
-      | car8.CCU.sys1.TXC  | car6.LCU.RXC      | 1,1,1,1,1,1,1,1 |
-      | car8.CCU.sys1.TXC  | car7.LCU          | 1,1,1,1,1,1,3,1 |
-      | car8.CCU.sys1.TXC  | car7.LCU.RXC      | 1,1,1,1,1,1,1,1 |
-      | car8.CCU.sys1.TXC  | car8.LCU          | 1,1,1,1,1,1,1,3 |
-      | car8.CCU.sys1.TXC  | car8.LCU.RXC      | 1,1,1,1,1,1,1,1 |
+
+  @req:NET-03 @req:CMD-01 @req:CMD-02 @req:CMD-03 @req:CMD-04 @req:RED-01 @req:RED-02 @req:PRO-06
+  Scenario Outline: F-NET-32 Board <board1> failed and board <board2> failed: each car by the path left to it, one fault recorded at the master
+    When board "<board1>" fails
+    And board "<board2>" fails
+    And the driver moves the traction notch of cab 1 to 6
+    And 200 ms pass
+    Then car by car the CI and BCU receive traction notch 6 or traction step "B" by the paths <paths> within 100 ms
+    And no CI or BCU of a car with a path in <paths> goes without a command for more than 100 ms
+    And no CI or BCU ever receives a traction notch other than 0 or 6
+    And no command over path 2 or 3 ever carried more than the traction and brake steps A and B
+    And "<master>" holds a fault record of "<node1>" saying "<part1>" failed at most 1330 ms after it
+
+    Examples:
+      | board1             | board2             | paths           | master        | node1         | part1 |
+      | car1.CCU.sys1.MDM8 | car1.LCU.MDM9      | 2,1,1,1,1,1,1,1 | car1.CCU.sys2 | car1.LCU      | MDM9  |
+      | car1.CCU.sys1.MDM8 | car1.LCU.RXC       | 1,1,1,1,1,1,1,1 | car1.CCU.sys2 | car1.LCU      | RXC   |
+      | car1.CCU.sys1.MDM8 | car2.LCU.MDM9      | 1,2,1,1,1,1,1,1 | car1.CCU.sys2 | car2.LCU      | MDM9  |
+      | car1.CCU.sys1.MDM8 | car2.LCU.RXC       | 1,1,1,1,1,1,1,1 | car1.CCU.sys2 | car2.LCU      | RXC   |
+      | car1.CCU.sys1.MDM8 | car3.LCU.MDM9      | 1,1,2,1,1,1,1,1 | car1.CCU.sys2 | car3.LCU      | MDM9  |
+      | car1.CCU.sys1.MDM8 | car3.LCU.RXC       | 1,1,1,1,1,1,1,1 | car1.CCU.sys2 | car3.LCU      | RXC   |
+      | car1.CCU.sys1.MDM8 | car4.LCU.MDM9      | 1,1,1,2,1,1,1,1 | car1.CCU.sys2 | car4.LCU      | MDM9  |
+      | car1.CCU.sys1.MDM8 | car4.LCU.RXC       | 1,1,1,1,1,1,1,1 | car1.CCU.sys2 | car4.LCU      | RXC   |
+      | car1.CCU.sys1.MDM8 | car5.LCU.MDM9      | 1,1,1,1,2,1,1,1 | car1.CCU.sys2 | car5.LCU      | MDM9  |
+      | car1.CCU.sys1.MDM8 | car5.LCU.RXC       | 1,1,1,1,1,1,1,1 | car1.CCU.sys2 | car5.LCU      | RXC   |
+      | car1.CCU.sys1.MDM8 | car6.LCU.MDM9      | 1,1,1,1,1,2,1,1 | car1.CCU.sys2 | car6.LCU      | MDM9  |
+      | car1.CCU.sys1.MDM8 | car6.LCU.RXC       | 1,1,1,1,1,1,1,1 | car1.CCU.sys2 | car6.LCU      | RXC   |
+      | car1.CCU.sys1.MDM8 | car7.LCU.MDM9      | 1,1,1,1,1,1,2,1 | car1.CCU.sys2 | car7.LCU      | MDM9  |
+      | car1.CCU.sys1.MDM8 | car7.LCU.RXC       | 1,1,1,1,1,1,1,1 | car1.CCU.sys2 | car7.LCU      | RXC   |
+      | car1.CCU.sys1.MDM8 | car8.LCU.MDM9      | 1,1,1,1,1,1,1,2 | car1.CCU.sys2 | car8.LCU      | MDM9  |
+      | car1.CCU.sys1.MDM8 | car8.LCU.RXC       | 1,1,1,1,1,1,1,1 | car1.CCU.sys2 | car8.LCU      | RXC   |
+      | car1.CCU.sys1.MDM8 | car8.CCU.sys2.TXC  | 1,1,1,1,1,1,1,1 | car1.CCU.sys2 | car8.CCU.sys2 | TXC   |
+      | car1.CCU.sys1.MDM8 | car8.CCU.sys1.TXC  | 1,1,1,1,1,1,1,1 | car1.CCU.sys2 | car8.CCU.sys1 | TXC   |
+      | car1.CCU.sys1.TXC  | car1.CCU.sys2.MDM8 | -,-,-,-,-,-,-,- | car1.CCU.sys1 | car1.CCU.sys1 | TXC   |
+      | car1.CCU.sys1.TXC  | car1.LCU.CPU3      | 1,1,1,1,1,1,1,1 | car1.CCU.sys2 | car1.CCU.sys1 | TXC   |
+      | car1.CCU.sys1.TXC  | car1.LCU.MDM8      | 3,1,1,1,1,1,1,1 | car1.CCU.sys2 | car1.CCU.sys1 | TXC   |
+      | car1.CCU.sys1.TXC  | car2.LCU.CPU3      | 1,1,1,1,1,1,1,1 | car1.CCU.sys2 | car1.CCU.sys1 | TXC   |
+      | car1.CCU.sys1.TXC  | car2.LCU.MDM8      | 1,3,1,1,1,1,1,1 | car1.CCU.sys2 | car1.CCU.sys1 | TXC   |
+      | car1.CCU.sys1.TXC  | car3.LCU.CPU3      | 1,1,1,1,1,1,1,1 | car1.CCU.sys2 | car1.CCU.sys1 | TXC   |
+      | car1.CCU.sys1.TXC  | car3.LCU.MDM8      | 1,1,3,1,1,1,1,1 | car1.CCU.sys2 | car1.CCU.sys1 | TXC   |
+      | car1.CCU.sys1.TXC  | car4.LCU.CPU3      | 1,1,1,1,1,1,1,1 | car1.CCU.sys2 | car1.CCU.sys1 | TXC   |
+      | car1.CCU.sys1.TXC  | car4.LCU.MDM8      | 1,1,1,3,1,1,1,1 | car1.CCU.sys2 | car1.CCU.sys1 | TXC   |
+      | car1.CCU.sys1.TXC  | car5.LCU.CPU3      | 1,1,1,1,1,1,1,1 | car1.CCU.sys2 | car1.CCU.sys1 | TXC   |
+      | car1.CCU.sys1.TXC  | car5.LCU.MDM8      | 1,1,1,1,3,1,1,1 | car1.CCU.sys2 | car1.CCU.sys1 | TXC   |
+      | car1.CCU.sys1.TXC  | car6.LCU.CPU3      | 1,1,1,1,1,1,1,1 | car1.CCU.sys2 | car1.CCU.sys1 | TXC   |
+      | car1.CCU.sys1.TXC  | car6.LCU.MDM8      | 1,1,1,1,1,3,1,1 | car1.CCU.sys2 | car1.CCU.sys1 | TXC   |
+      | car1.CCU.sys1.TXC  | car7.LCU.CPU3      | 1,1,1,1,1,1,1,1 | car1.CCU.sys2 | car1.CCU.sys1 | TXC   |
+      | car1.CCU.sys1.TXC  | car7.LCU.MDM8      | 1,1,1,1,1,1,3,1 | car1.CCU.sys2 | car1.CCU.sys1 | TXC   |
+      | car1.CCU.sys1.TXC  | car8.LCU.CPU3      | 1,1,1,1,1,1,1,1 | car1.CCU.sys2 | car1.CCU.sys1 | TXC   |
+      | car1.CCU.sys1.TXC  | car8.LCU.MDM8      | 1,1,1,1,1,1,1,3 | car1.CCU.sys2 | car1.CCU.sys1 | TXC   |
+      | car1.CCU.sys1.TXC  | car8.CCU.sys2.CPU3 | 1,1,1,1,1,1,1,1 | car1.CCU.sys2 | car1.CCU.sys1 | TXC   |
+      | car1.CCU.sys1.TXC  | car8.CCU.sys2.MDM8 | 1,1,1,1,1,1,1,1 | car1.CCU.sys2 | car1.CCU.sys1 | TXC   |
+      | car1.CCU.sys1.TXC  | car8.CCU.sys1.CPU3 | 1,1,1,1,1,1,1,1 | car1.CCU.sys2 | car1.CCU.sys1 | TXC   |
+      | car1.CCU.sys1.TXC  | car8.CCU.sys1.MDM8 | 1,1,1,1,1,1,1,1 | car1.CCU.sys2 | car1.CCU.sys1 | TXC   |
+      | car1.CCU.sys2.CPU3 | car1.LCU.MDM9      | 2,1,1,1,1,1,1,1 | car1.CCU.sys1 | car1.LCU      | MDM9  |
+      | car1.CCU.sys2.CPU3 | car1.LCU.RXC       | 1,1,1,1,1,1,1,1 | car1.CCU.sys1 | car1.LCU      | RXC   |
+      | car1.CCU.sys2.CPU3 | car2.LCU.MDM9      | 1,2,1,1,1,1,1,1 | car1.CCU.sys1 | car2.LCU      | MDM9  |
+      | car1.CCU.sys2.CPU3 | car2.LCU.RXC       | 1,1,1,1,1,1,1,1 | car1.CCU.sys1 | car2.LCU      | RXC   |
+      | car1.CCU.sys2.CPU3 | car3.LCU.MDM9      | 1,1,2,1,1,1,1,1 | car1.CCU.sys1 | car3.LCU      | MDM9  |
+      | car1.CCU.sys2.CPU3 | car3.LCU.RXC       | 1,1,1,1,1,1,1,1 | car1.CCU.sys1 | car3.LCU      | RXC   |
+      | car1.CCU.sys2.CPU3 | car4.LCU.MDM9      | 1,1,1,2,1,1,1,1 | car1.CCU.sys1 | car4.LCU      | MDM9  |
+      | car1.CCU.sys2.CPU3 | car4.LCU.RXC       | 1,1,1,1,1,1,1,1 | car1.CCU.sys1 | car4.LCU      | RXC   |
+      | car1.CCU.sys2.CPU3 | car5.LCU.MDM9      | 1,1,1,1,2,1,1,1 | car1.CCU.sys1 | car5.LCU      | MDM9  |
+      | car1.CCU.sys2.CPU3 | car5.LCU.RXC       | 1,1,1,1,1,1,1,1 | car1.CCU.sys1 | car5.LCU      | RXC   |
+      | car1.CCU.sys2.CPU3 | car6.LCU.MDM9      | 1,1,1,1,1,2,1,1 | car1.CCU.sys1 | car6.LCU      | MDM9  |
+      | car1.CCU.sys2.CPU3 | car6.LCU.RXC       | 1,1,1,1,1,1,1,1 | car1.CCU.sys1 | car6.LCU      | RXC   |
+      | car1.CCU.sys2.CPU3 | car7.LCU.MDM9      | 1,1,1,1,1,1,2,1 | car1.CCU.sys1 | car7.LCU      | MDM9  |
+      | car1.CCU.sys2.CPU3 | car7.LCU.RXC       | 1,1,1,1,1,1,1,1 | car1.CCU.sys1 | car7.LCU      | RXC   |
+      | car1.CCU.sys2.CPU3 | car8.LCU.MDM9      | 1,1,1,1,1,1,1,2 | car1.CCU.sys1 | car8.LCU      | MDM9  |
+      | car1.CCU.sys2.CPU3 | car8.LCU.RXC       | 1,1,1,1,1,1,1,1 | car1.CCU.sys1 | car8.LCU      | RXC   |
+      | car1.CCU.sys2.CPU3 | car8.CCU.sys2.TXC  | 1,1,1,1,1,1,1,1 | car1.CCU.sys1 | car8.CCU.sys2 | TXC   |
+      | car1.CCU.sys2.CPU3 | car8.CCU.sys1.TXC  | 1,1,1,1,1,1,1,1 | car1.CCU.sys1 | car8.CCU.sys1 | TXC   |
+      | car1.CCU.sys2.MDM8 | car1.LCU.MDM9      | 2,1,1,1,1,1,1,1 | car1.CCU.sys1 | car1.LCU      | MDM9  |
+      | car1.CCU.sys2.MDM8 | car1.LCU.RXC       | 1,1,1,1,1,1,1,1 | car1.CCU.sys1 | car1.LCU      | RXC   |
+      | car1.CCU.sys2.MDM8 | car2.LCU.MDM9      | 1,2,1,1,1,1,1,1 | car1.CCU.sys1 | car2.LCU      | MDM9  |
+      | car1.CCU.sys2.MDM8 | car2.LCU.RXC       | 1,1,1,1,1,1,1,1 | car1.CCU.sys1 | car2.LCU      | RXC   |
+      | car1.CCU.sys2.MDM8 | car3.LCU.MDM9      | 1,1,2,1,1,1,1,1 | car1.CCU.sys1 | car3.LCU      | MDM9  |
+      | car1.CCU.sys2.MDM8 | car3.LCU.RXC       | 1,1,1,1,1,1,1,1 | car1.CCU.sys1 | car3.LCU      | RXC   |
+      | car1.CCU.sys2.MDM8 | car4.LCU.MDM9      | 1,1,1,2,1,1,1,1 | car1.CCU.sys1 | car4.LCU      | MDM9  |
+      | car1.CCU.sys2.MDM8 | car4.LCU.RXC       | 1,1,1,1,1,1,1,1 | car1.CCU.sys1 | car4.LCU      | RXC   |
+      | car1.CCU.sys2.MDM8 | car5.LCU.MDM9      | 1,1,1,1,2,1,1,1 | car1.CCU.sys1 | car5.LCU      | MDM9  |
+      | car1.CCU.sys2.MDM8 | car5.LCU.RXC       | 1,1,1,1,1,1,1,1 | car1.CCU.sys1 | car5.LCU      | RXC   |
+      | car1.CCU.sys2.MDM8 | car6.LCU.MDM9      | 1,1,1,1,1,2,1,1 | car1.CCU.sys1 | car6.LCU      | MDM9  |
+      | car1.CCU.sys2.MDM8 | car6.LCU.RXC       | 1,1,1,1,1,1,1,1 | car1.CCU.sys1 | car6.LCU      | RXC   |
+      | car1.CCU.sys2.MDM8 | car7.LCU.MDM9      | 1,1,1,1,1,1,2,1 | car1.CCU.sys1 | car7.LCU      | MDM9  |
+      | car1.CCU.sys2.MDM8 | car7.LCU.RXC       | 1,1,1,1,1,1,1,1 | car1.CCU.sys1 | car7.LCU      | RXC   |
+      | car1.CCU.sys2.MDM8 | car8.LCU.MDM9      | 1,1,1,1,1,1,1,2 | car1.CCU.sys1 | car8.LCU      | MDM9  |
+      | car1.CCU.sys2.MDM8 | car8.LCU.RXC       | 1,1,1,1,1,1,1,1 | car1.CCU.sys1 | car8.LCU      | RXC   |
+      | car1.CCU.sys2.MDM8 | car8.CCU.sys2.TXC  | 1,1,1,1,1,1,1,1 | car1.CCU.sys1 | car8.CCU.sys2 | TXC   |
+      | car1.CCU.sys2.MDM8 | car8.CCU.sys1.TXC  | 1,1,1,1,1,1,1,1 | car1.CCU.sys1 | car8.CCU.sys1 | TXC   |
+      | car1.CCU.sys2.TXC  | car1.LCU.CPU3      | 1,1,1,1,1,1,1,1 | car1.CCU.sys1 | car1.CCU.sys2 | TXC   |
+      | car1.CCU.sys2.TXC  | car1.LCU.MDM8      | 3,1,1,1,1,1,1,1 | car1.CCU.sys1 | car1.CCU.sys2 | TXC   |
+      | car1.CCU.sys2.TXC  | car2.LCU.CPU3      | 1,1,1,1,1,1,1,1 | car1.CCU.sys1 | car1.CCU.sys2 | TXC   |
+      | car1.CCU.sys2.TXC  | car2.LCU.MDM8      | 1,3,1,1,1,1,1,1 | car1.CCU.sys1 | car1.CCU.sys2 | TXC   |
+      | car1.CCU.sys2.TXC  | car3.LCU.CPU3      | 1,1,1,1,1,1,1,1 | car1.CCU.sys1 | car1.CCU.sys2 | TXC   |
+      | car1.CCU.sys2.TXC  | car3.LCU.MDM8      | 1,1,3,1,1,1,1,1 | car1.CCU.sys1 | car1.CCU.sys2 | TXC   |
+      | car1.CCU.sys2.TXC  | car4.LCU.CPU3      | 1,1,1,1,1,1,1,1 | car1.CCU.sys1 | car1.CCU.sys2 | TXC   |
+      | car1.CCU.sys2.TXC  | car4.LCU.MDM8      | 1,1,1,3,1,1,1,1 | car1.CCU.sys1 | car1.CCU.sys2 | TXC   |
+      | car1.CCU.sys2.TXC  | car5.LCU.CPU3      | 1,1,1,1,1,1,1,1 | car1.CCU.sys1 | car1.CCU.sys2 | TXC   |
+      | car1.CCU.sys2.TXC  | car5.LCU.MDM8      | 1,1,1,1,3,1,1,1 | car1.CCU.sys1 | car1.CCU.sys2 | TXC   |
+      | car1.CCU.sys2.TXC  | car6.LCU.CPU3      | 1,1,1,1,1,1,1,1 | car1.CCU.sys1 | car1.CCU.sys2 | TXC   |
+      | car1.CCU.sys2.TXC  | car6.LCU.MDM8      | 1,1,1,1,1,3,1,1 | car1.CCU.sys1 | car1.CCU.sys2 | TXC   |
+      | car1.CCU.sys2.TXC  | car7.LCU.CPU3      | 1,1,1,1,1,1,1,1 | car1.CCU.sys1 | car1.CCU.sys2 | TXC   |
+      | car1.CCU.sys2.TXC  | car7.LCU.MDM8      | 1,1,1,1,1,1,3,1 | car1.CCU.sys1 | car1.CCU.sys2 | TXC   |
+      | car1.CCU.sys2.TXC  | car8.LCU.CPU3      | 1,1,1,1,1,1,1,1 | car1.CCU.sys1 | car1.CCU.sys2 | TXC   |
+      | car1.CCU.sys2.TXC  | car8.LCU.MDM8      | 1,1,1,1,1,1,1,3 | car1.CCU.sys1 | car1.CCU.sys2 | TXC   |
+      | car1.CCU.sys2.TXC  | car8.CCU.sys2.CPU3 | 1,1,1,1,1,1,1,1 | car1.CCU.sys1 | car1.CCU.sys2 | TXC   |
+      | car1.CCU.sys2.TXC  | car8.CCU.sys2.MDM8 | 1,1,1,1,1,1,1,1 | car1.CCU.sys1 | car1.CCU.sys2 | TXC   |
+      | car1.CCU.sys2.TXC  | car8.CCU.sys1.CPU3 | 1,1,1,1,1,1,1,1 | car1.CCU.sys1 | car1.CCU.sys2 | TXC   |
+      | car1.CCU.sys2.TXC  | car8.CCU.sys1.MDM8 | 1,1,1,1,1,1,1,1 | car1.CCU.sys1 | car1.CCU.sys2 | TXC   |
+      | car1.LCU.CPU3      | car2.LCU.MDM9      | 1,2,1,1,1,1,1,1 | car1.CCU.sys1 | car2.LCU      | MDM9  |
+      | car1.LCU.CPU3      | car2.LCU.RXC       | 1,1,1,1,1,1,1,1 | car1.CCU.sys1 | car2.LCU      | RXC   |
+      | car1.LCU.CPU3      | car3.LCU.MDM9      | 1,1,2,1,1,1,1,1 | car1.CCU.sys1 | car3.LCU      | MDM9  |
+      | car1.LCU.CPU3      | car3.LCU.RXC       | 1,1,1,1,1,1,1,1 | car1.CCU.sys1 | car3.LCU      | RXC   |
+      | car1.LCU.CPU3      | car4.LCU.MDM9      | 1,1,1,2,1,1,1,1 | car1.CCU.sys1 | car4.LCU      | MDM9  |
+      | car1.LCU.CPU3      | car4.LCU.RXC       | 1,1,1,1,1,1,1,1 | car1.CCU.sys1 | car4.LCU      | RXC   |
+      | car1.LCU.CPU3      | car5.LCU.MDM9      | 1,1,1,1,2,1,1,1 | car1.CCU.sys1 | car5.LCU      | MDM9  |
+      | car1.LCU.CPU3      | car5.LCU.RXC       | 1,1,1,1,1,1,1,1 | car1.CCU.sys1 | car5.LCU      | RXC   |
+      | car1.LCU.CPU3      | car6.LCU.MDM9      | 1,1,1,1,1,2,1,1 | car1.CCU.sys1 | car6.LCU      | MDM9  |
+      | car1.LCU.CPU3      | car6.LCU.RXC       | 1,1,1,1,1,1,1,1 | car1.CCU.sys1 | car6.LCU      | RXC   |
+      | car1.LCU.CPU3      | car7.LCU.MDM9      | 1,1,1,1,1,1,2,1 | car1.CCU.sys1 | car7.LCU      | MDM9  |
+      | car1.LCU.CPU3      | car7.LCU.RXC       | 1,1,1,1,1,1,1,1 | car1.CCU.sys1 | car7.LCU      | RXC   |
+      | car1.LCU.CPU3      | car8.LCU.MDM9      | 1,1,1,1,1,1,1,2 | car1.CCU.sys1 | car8.LCU      | MDM9  |
+      | car1.LCU.CPU3      | car8.LCU.RXC       | 1,1,1,1,1,1,1,1 | car1.CCU.sys1 | car8.LCU      | RXC   |
+      | car1.LCU.CPU3      | car8.CCU.sys2.TXC  | 1,1,1,1,1,1,1,1 | car1.CCU.sys1 | car8.CCU.sys2 | TXC   |
+      | car1.LCU.CPU3      | car8.CCU.sys1.TXC  | 1,1,1,1,1,1,1,1 | car1.CCU.sys1 | car8.CCU.sys1 | TXC   |
+      | car1.LCU.MDM8      | car2.LCU.MDM9      | 3,2,1,1,1,1,1,1 | car1.CCU.sys1 | car2.LCU      | MDM9  |
+      | car1.LCU.MDM8      | car2.LCU.RXC       | 3,1,1,1,1,1,1,1 | car1.CCU.sys1 | car2.LCU      | RXC   |
+      | car1.LCU.MDM8      | car3.LCU.MDM9      | 3,1,2,1,1,1,1,1 | car1.CCU.sys1 | car3.LCU      | MDM9  |
+      | car1.LCU.MDM8      | car3.LCU.RXC       | 3,1,1,1,1,1,1,1 | car1.CCU.sys1 | car3.LCU      | RXC   |
+      | car1.LCU.MDM8      | car4.LCU.MDM9      | 3,1,1,2,1,1,1,1 | car1.CCU.sys1 | car4.LCU      | MDM9  |
+      | car1.LCU.MDM8      | car4.LCU.RXC       | 3,1,1,1,1,1,1,1 | car1.CCU.sys1 | car4.LCU      | RXC   |
+      | car1.LCU.MDM8      | car5.LCU.MDM9      | 3,1,1,1,2,1,1,1 | car1.CCU.sys1 | car5.LCU      | MDM9  |
+      | car1.LCU.MDM8      | car5.LCU.RXC       | 3,1,1,1,1,1,1,1 | car1.CCU.sys1 | car5.LCU      | RXC   |
+      | car1.LCU.MDM8      | car6.LCU.MDM9      | 3,1,1,1,1,2,1,1 | car1.CCU.sys1 | car6.LCU      | MDM9  |
+      | car1.LCU.MDM8      | car6.LCU.RXC       | 3,1,1,1,1,1,1,1 | car1.CCU.sys1 | car6.LCU      | RXC   |
+      | car1.LCU.MDM8      | car7.LCU.MDM9      | 3,1,1,1,1,1,2,1 | car1.CCU.sys1 | car7.LCU      | MDM9  |
+      | car1.LCU.MDM8      | car7.LCU.RXC       | 3,1,1,1,1,1,1,1 | car1.CCU.sys1 | car7.LCU      | RXC   |
+      | car1.LCU.MDM8      | car8.LCU.MDM9      | 3,1,1,1,1,1,1,2 | car1.CCU.sys1 | car8.LCU      | MDM9  |
+      | car1.LCU.MDM8      | car8.LCU.RXC       | 3,1,1,1,1,1,1,1 | car1.CCU.sys1 | car8.LCU      | RXC   |
+      | car1.LCU.MDM8      | car8.CCU.sys2.TXC  | 3,1,1,1,1,1,1,1 | car1.CCU.sys1 | car8.CCU.sys2 | TXC   |
+      | car1.LCU.MDM8      | car8.CCU.sys1.TXC  | 3,1,1,1,1,1,1,1 | car1.CCU.sys1 | car8.CCU.sys1 | TXC   |
+      | car1.LCU.MDM9      | car2.LCU.CPU3      | 2,1,1,1,1,1,1,1 | car1.CCU.sys1 | car1.LCU      | MDM9  |
+      | car1.LCU.MDM9      | car2.LCU.MDM8      | 2,3,1,1,1,1,1,1 | car1.CCU.sys1 | car1.LCU      | MDM9  |
+      | car1.LCU.MDM9      | car3.LCU.CPU3      | 2,1,1,1,1,1,1,1 | car1.CCU.sys1 | car1.LCU      | MDM9  |
+      | car1.LCU.MDM9      | car3.LCU.MDM8      | 2,1,3,1,1,1,1,1 | car1.CCU.sys1 | car1.LCU      | MDM9  |
+      | car1.LCU.MDM9      | car4.LCU.CPU3      | 2,1,1,1,1,1,1,1 | car1.CCU.sys1 | car1.LCU      | MDM9  |
+      | car1.LCU.MDM9      | car4.LCU.MDM8      | 2,1,1,3,1,1,1,1 | car1.CCU.sys1 | car1.LCU      | MDM9  |
+      | car1.LCU.MDM9      | car5.LCU.CPU3      | 2,1,1,1,1,1,1,1 | car1.CCU.sys1 | car1.LCU      | MDM9  |
+      | car1.LCU.MDM9      | car5.LCU.MDM8      | 2,1,1,1,3,1,1,1 | car1.CCU.sys1 | car1.LCU      | MDM9  |
+      | car1.LCU.MDM9      | car6.LCU.CPU3      | 2,1,1,1,1,1,1,1 | car1.CCU.sys1 | car1.LCU      | MDM9  |
+      | car1.LCU.MDM9      | car6.LCU.MDM8      | 2,1,1,1,1,3,1,1 | car1.CCU.sys1 | car1.LCU      | MDM9  |
+      | car1.LCU.MDM9      | car7.LCU.CPU3      | 2,1,1,1,1,1,1,1 | car1.CCU.sys1 | car1.LCU      | MDM9  |
+      | car1.LCU.MDM9      | car7.LCU.MDM8      | 2,1,1,1,1,1,3,1 | car1.CCU.sys1 | car1.LCU      | MDM9  |
+      | car1.LCU.MDM9      | car8.LCU.CPU3      | 2,1,1,1,1,1,1,1 | car1.CCU.sys1 | car1.LCU      | MDM9  |
+      | car1.LCU.MDM9      | car8.LCU.MDM8      | 2,1,1,1,1,1,1,3 | car1.CCU.sys1 | car1.LCU      | MDM9  |
+      | car1.LCU.MDM9      | car8.CCU.sys2.CPU3 | 2,1,1,1,1,1,1,1 | car1.CCU.sys1 | car1.LCU      | MDM9  |
+      | car1.LCU.MDM9      | car8.CCU.sys2.MDM8 | 2,1,1,1,1,1,1,1 | car1.CCU.sys1 | car1.LCU      | MDM9  |
+      | car1.LCU.MDM9      | car8.CCU.sys1.CPU3 | 2,1,1,1,1,1,1,1 | car1.CCU.sys1 | car1.LCU      | MDM9  |
+      | car1.LCU.MDM9      | car8.CCU.sys1.MDM8 | 2,1,1,1,1,1,1,1 | car1.CCU.sys1 | car1.LCU      | MDM9  |
+      | car1.LCU.RXC       | car2.LCU.CPU3      | 1,1,1,1,1,1,1,1 | car1.CCU.sys1 | car1.LCU      | RXC   |
+      | car1.LCU.RXC       | car2.LCU.MDM8      | 1,3,1,1,1,1,1,1 | car1.CCU.sys1 | car1.LCU      | RXC   |
+      | car1.LCU.RXC       | car3.LCU.CPU3      | 1,1,1,1,1,1,1,1 | car1.CCU.sys1 | car1.LCU      | RXC   |
+      | car1.LCU.RXC       | car3.LCU.MDM8      | 1,1,3,1,1,1,1,1 | car1.CCU.sys1 | car1.LCU      | RXC   |
+      | car1.LCU.RXC       | car4.LCU.CPU3      | 1,1,1,1,1,1,1,1 | car1.CCU.sys1 | car1.LCU      | RXC   |
+      | car1.LCU.RXC       | car4.LCU.MDM8      | 1,1,1,3,1,1,1,1 | car1.CCU.sys1 | car1.LCU      | RXC   |
+      | car1.LCU.RXC       | car5.LCU.CPU3      | 1,1,1,1,1,1,1,1 | car1.CCU.sys1 | car1.LCU      | RXC   |
+      | car1.LCU.RXC       | car5.LCU.MDM8      | 1,1,1,1,3,1,1,1 | car1.CCU.sys1 | car1.LCU      | RXC   |
+      | car1.LCU.RXC       | car6.LCU.CPU3      | 1,1,1,1,1,1,1,1 | car1.CCU.sys1 | car1.LCU      | RXC   |
+      | car1.LCU.RXC       | car6.LCU.MDM8      | 1,1,1,1,1,3,1,1 | car1.CCU.sys1 | car1.LCU      | RXC   |
+      | car1.LCU.RXC       | car7.LCU.CPU3      | 1,1,1,1,1,1,1,1 | car1.CCU.sys1 | car1.LCU      | RXC   |
+      | car1.LCU.RXC       | car7.LCU.MDM8      | 1,1,1,1,1,1,3,1 | car1.CCU.sys1 | car1.LCU      | RXC   |
+      | car1.LCU.RXC       | car8.LCU.CPU3      | 1,1,1,1,1,1,1,1 | car1.CCU.sys1 | car1.LCU      | RXC   |
+      | car1.LCU.RXC       | car8.LCU.MDM8      | 1,1,1,1,1,1,1,3 | car1.CCU.sys1 | car1.LCU      | RXC   |
+      | car1.LCU.RXC       | car8.CCU.sys2.CPU3 | 1,1,1,1,1,1,1,1 | car1.CCU.sys1 | car1.LCU      | RXC   |
+      | car1.LCU.RXC       | car8.CCU.sys2.MDM8 | 1,1,1,1,1,1,1,1 | car1.CCU.sys1 | car1.LCU      | RXC   |
+      | car1.LCU.RXC       | car8.CCU.sys1.CPU3 | 1,1,1,1,1,1,1,1 | car1.CCU.sys1 | car1.LCU      | RXC   |
+      | car1.LCU.RXC       | car8.CCU.sys1.MDM8 | 1,1,1,1,1,1,1,1 | car1.CCU.sys1 | car1.LCU      | RXC   |
+      | car2.LCU.CPU3      | car3.LCU.MDM9      | 1,1,2,1,1,1,1,1 | car1.CCU.sys1 | car3.LCU      | MDM9  |
+      | car2.LCU.CPU3      | car3.LCU.RXC       | 1,1,1,1,1,1,1,1 | car1.CCU.sys1 | car3.LCU      | RXC   |
+      | car2.LCU.CPU3      | car4.LCU.MDM9      | 1,1,1,2,1,1,1,1 | car1.CCU.sys1 | car4.LCU      | MDM9  |
+      | car2.LCU.CPU3      | car4.LCU.RXC       | 1,1,1,1,1,1,1,1 | car1.CCU.sys1 | car4.LCU      | RXC   |
+      | car2.LCU.CPU3      | car5.LCU.MDM9      | 1,1,1,1,2,1,1,1 | car1.CCU.sys1 | car5.LCU      | MDM9  |
+      | car2.LCU.CPU3      | car5.LCU.RXC       | 1,1,1,1,1,1,1,1 | car1.CCU.sys1 | car5.LCU      | RXC   |
+      | car2.LCU.CPU3      | car6.LCU.MDM9      | 1,1,1,1,1,2,1,1 | car1.CCU.sys1 | car6.LCU      | MDM9  |
+      | car2.LCU.CPU3      | car6.LCU.RXC       | 1,1,1,1,1,1,1,1 | car1.CCU.sys1 | car6.LCU      | RXC   |
+      | car2.LCU.CPU3      | car7.LCU.MDM9      | 1,1,1,1,1,1,2,1 | car1.CCU.sys1 | car7.LCU      | MDM9  |
+      | car2.LCU.CPU3      | car7.LCU.RXC       | 1,1,1,1,1,1,1,1 | car1.CCU.sys1 | car7.LCU      | RXC   |
+      | car2.LCU.CPU3      | car8.LCU.MDM9      | 1,1,1,1,1,1,1,2 | car1.CCU.sys1 | car8.LCU      | MDM9  |
+      | car2.LCU.CPU3      | car8.LCU.RXC       | 1,1,1,1,1,1,1,1 | car1.CCU.sys1 | car8.LCU      | RXC   |
+      | car2.LCU.CPU3      | car8.CCU.sys2.TXC  | 1,1,1,1,1,1,1,1 | car1.CCU.sys1 | car8.CCU.sys2 | TXC   |
+      | car2.LCU.CPU3      | car8.CCU.sys1.TXC  | 1,1,1,1,1,1,1,1 | car1.CCU.sys1 | car8.CCU.sys1 | TXC   |
+      | car2.LCU.MDM8      | car3.LCU.MDM9      | 1,3,2,1,1,1,1,1 | car1.CCU.sys1 | car3.LCU      | MDM9  |
+      | car2.LCU.MDM8      | car3.LCU.RXC       | 1,3,1,1,1,1,1,1 | car1.CCU.sys1 | car3.LCU      | RXC   |
+      | car2.LCU.MDM8      | car4.LCU.MDM9      | 1,3,1,2,1,1,1,1 | car1.CCU.sys1 | car4.LCU      | MDM9  |
+      | car2.LCU.MDM8      | car4.LCU.RXC       | 1,3,1,1,1,1,1,1 | car1.CCU.sys1 | car4.LCU      | RXC   |
+      | car2.LCU.MDM8      | car5.LCU.MDM9      | 1,3,1,1,2,1,1,1 | car1.CCU.sys1 | car5.LCU      | MDM9  |
+      | car2.LCU.MDM8      | car5.LCU.RXC       | 1,3,1,1,1,1,1,1 | car1.CCU.sys1 | car5.LCU      | RXC   |
+      | car2.LCU.MDM8      | car6.LCU.MDM9      | 1,3,1,1,1,2,1,1 | car1.CCU.sys1 | car6.LCU      | MDM9  |
+      | car2.LCU.MDM8      | car6.LCU.RXC       | 1,3,1,1,1,1,1,1 | car1.CCU.sys1 | car6.LCU      | RXC   |
+      | car2.LCU.MDM8      | car7.LCU.MDM9      | 1,3,1,1,1,1,2,1 | car1.CCU.sys1 | car7.LCU      | MDM9  |
+      | car2.LCU.MDM8      | car7.LCU.RXC       | 1,3,1,1,1,1,1,1 | car1.CCU.sys1 | car7.LCU      | RXC   |
+      | car2.LCU.MDM8      | car8.LCU.MDM9      | 1,3,1,1,1,1,1,2 | car1.CCU.sys1 | car8.LCU      | MDM9  |
+      | car2.LCU.MDM8      | car8.LCU.RXC       | 1,3,1,1,1,1,1,1 | car1.CCU.sys1 | car8.LCU      | RXC   |
+      | car2.LCU.MDM8      | car8.CCU.sys2.TXC  | 1,3,1,1,1,1,1,1 | car1.CCU.sys1 | car8.CCU.sys2 | TXC   |
+      | car2.LCU.MDM8      | car8.CCU.sys1.TXC  | 1,3,1,1,1,1,1,1 | car1.CCU.sys1 | car8.CCU.sys1 | TXC   |
+      | car2.LCU.MDM9      | car3.LCU.CPU3      | 1,2,1,1,1,1,1,1 | car1.CCU.sys1 | car2.LCU      | MDM9  |
+      | car2.LCU.MDM9      | car3.LCU.MDM8      | 1,2,3,1,1,1,1,1 | car1.CCU.sys1 | car2.LCU      | MDM9  |
+      | car2.LCU.MDM9      | car4.LCU.CPU3      | 1,2,1,1,1,1,1,1 | car1.CCU.sys1 | car2.LCU      | MDM9  |
+      | car2.LCU.MDM9      | car4.LCU.MDM8      | 1,2,1,3,1,1,1,1 | car1.CCU.sys1 | car2.LCU      | MDM9  |
+      | car2.LCU.MDM9      | car5.LCU.CPU3      | 1,2,1,1,1,1,1,1 | car1.CCU.sys1 | car2.LCU      | MDM9  |
+      | car2.LCU.MDM9      | car5.LCU.MDM8      | 1,2,1,1,3,1,1,1 | car1.CCU.sys1 | car2.LCU      | MDM9  |
+      | car2.LCU.MDM9      | car6.LCU.CPU3      | 1,2,1,1,1,1,1,1 | car1.CCU.sys1 | car2.LCU      | MDM9  |
+      | car2.LCU.MDM9      | car6.LCU.MDM8      | 1,2,1,1,1,3,1,1 | car1.CCU.sys1 | car2.LCU      | MDM9  |
+      | car2.LCU.MDM9      | car7.LCU.CPU3      | 1,2,1,1,1,1,1,1 | car1.CCU.sys1 | car2.LCU      | MDM9  |
+      | car2.LCU.MDM9      | car7.LCU.MDM8      | 1,2,1,1,1,1,3,1 | car1.CCU.sys1 | car2.LCU      | MDM9  |
+      | car2.LCU.MDM9      | car8.LCU.CPU3      | 1,2,1,1,1,1,1,1 | car1.CCU.sys1 | car2.LCU      | MDM9  |
+      | car2.LCU.MDM9      | car8.LCU.MDM8      | 1,2,1,1,1,1,1,3 | car1.CCU.sys1 | car2.LCU      | MDM9  |
+      | car2.LCU.MDM9      | car8.CCU.sys2.CPU3 | 1,2,1,1,1,1,1,1 | car1.CCU.sys1 | car2.LCU      | MDM9  |
+      | car2.LCU.MDM9      | car8.CCU.sys2.MDM8 | 1,2,1,1,1,1,1,1 | car1.CCU.sys1 | car2.LCU      | MDM9  |
+      | car2.LCU.MDM9      | car8.CCU.sys1.CPU3 | 1,2,1,1,1,1,1,1 | car1.CCU.sys1 | car2.LCU      | MDM9  |
+      | car2.LCU.MDM9      | car8.CCU.sys1.MDM8 | 1,2,1,1,1,1,1,1 | car1.CCU.sys1 | car2.LCU      | MDM9  |
+      | car2.LCU.RXC       | car3.LCU.CPU3      | 1,1,1,1,1,1,1,1 | car1.CCU.sys1 | car2.LCU      | RXC   |
+      | car2.LCU.RXC       | car3.LCU.MDM8      | 1,1,3,1,1,1,1,1 | car1.CCU.sys1 | car2.LCU      | RXC   |
+      | car2.LCU.RXC       | car4.LCU.CPU3      | 1,1,1,1,1,1,1,1 | car1.CCU.sys1 | car2.LCU      | RXC   |
+      | car2.LCU.RXC       | car4.LCU.MDM8      | 1,1,1,3,1,1,1,1 | car1.CCU.sys1 | car2.LCU      | RXC   |
+      | car2.LCU.RXC       | car5.LCU.CPU3      | 1,1,1,1,1,1,1,1 | car1.CCU.sys1 | car2.LCU      | RXC   |
+      | car2.LCU.RXC       | car5.LCU.MDM8      | 1,1,1,1,3,1,1,1 | car1.CCU.sys1 | car2.LCU      | RXC   |
+      | car2.LCU.RXC       | car6.LCU.CPU3      | 1,1,1,1,1,1,1,1 | car1.CCU.sys1 | car2.LCU      | RXC   |
+      | car2.LCU.RXC       | car6.LCU.MDM8      | 1,1,1,1,1,3,1,1 | car1.CCU.sys1 | car2.LCU      | RXC   |
+      | car2.LCU.RXC       | car7.LCU.CPU3      | 1,1,1,1,1,1,1,1 | car1.CCU.sys1 | car2.LCU      | RXC   |
+      | car2.LCU.RXC       | car7.LCU.MDM8      | 1,1,1,1,1,1,3,1 | car1.CCU.sys1 | car2.LCU      | RXC   |
+      | car2.LCU.RXC       | car8.LCU.CPU3      | 1,1,1,1,1,1,1,1 | car1.CCU.sys1 | car2.LCU      | RXC   |
+      | car2.LCU.RXC       | car8.LCU.MDM8      | 1,1,1,1,1,1,1,3 | car1.CCU.sys1 | car2.LCU      | RXC   |
+      | car2.LCU.RXC       | car8.CCU.sys2.CPU3 | 1,1,1,1,1,1,1,1 | car1.CCU.sys1 | car2.LCU      | RXC   |
+      | car2.LCU.RXC       | car8.CCU.sys2.MDM8 | 1,1,1,1,1,1,1,1 | car1.CCU.sys1 | car2.LCU      | RXC   |
+      | car2.LCU.RXC       | car8.CCU.sys1.CPU3 | 1,1,1,1,1,1,1,1 | car1.CCU.sys1 | car2.LCU      | RXC   |
+      | car2.LCU.RXC       | car8.CCU.sys1.MDM8 | 1,1,1,1,1,1,1,1 | car1.CCU.sys1 | car2.LCU      | RXC   |
+      | car3.LCU.CPU3      | car4.LCU.MDM9      | 1,1,1,2,1,1,1,1 | car1.CCU.sys1 | car4.LCU      | MDM9  |
+      | car3.LCU.CPU3      | car4.LCU.RXC       | 1,1,1,1,1,1,1,1 | car1.CCU.sys1 | car4.LCU      | RXC   |
+      | car3.LCU.CPU3      | car5.LCU.MDM9      | 1,1,1,1,2,1,1,1 | car1.CCU.sys1 | car5.LCU      | MDM9  |
+      | car3.LCU.CPU3      | car5.LCU.RXC       | 1,1,1,1,1,1,1,1 | car1.CCU.sys1 | car5.LCU      | RXC   |
+      | car3.LCU.CPU3      | car6.LCU.MDM9      | 1,1,1,1,1,2,1,1 | car1.CCU.sys1 | car6.LCU      | MDM9  |
+      | car3.LCU.CPU3      | car6.LCU.RXC       | 1,1,1,1,1,1,1,1 | car1.CCU.sys1 | car6.LCU      | RXC   |
+      | car3.LCU.CPU3      | car7.LCU.MDM9      | 1,1,1,1,1,1,2,1 | car1.CCU.sys1 | car7.LCU      | MDM9  |
+      | car3.LCU.CPU3      | car7.LCU.RXC       | 1,1,1,1,1,1,1,1 | car1.CCU.sys1 | car7.LCU      | RXC   |
+      | car3.LCU.CPU3      | car8.LCU.MDM9      | 1,1,1,1,1,1,1,2 | car1.CCU.sys1 | car8.LCU      | MDM9  |
+      | car3.LCU.CPU3      | car8.LCU.RXC       | 1,1,1,1,1,1,1,1 | car1.CCU.sys1 | car8.LCU      | RXC   |
+      | car3.LCU.CPU3      | car8.CCU.sys2.TXC  | 1,1,1,1,1,1,1,1 | car1.CCU.sys1 | car8.CCU.sys2 | TXC   |
+      | car3.LCU.CPU3      | car8.CCU.sys1.TXC  | 1,1,1,1,1,1,1,1 | car1.CCU.sys1 | car8.CCU.sys1 | TXC   |
+      | car3.LCU.MDM8      | car4.LCU.MDM9      | 1,1,3,2,1,1,1,1 | car1.CCU.sys1 | car4.LCU      | MDM9  |
+      | car3.LCU.MDM8      | car4.LCU.RXC       | 1,1,3,1,1,1,1,1 | car1.CCU.sys1 | car4.LCU      | RXC   |
+      | car3.LCU.MDM8      | car5.LCU.MDM9      | 1,1,3,1,2,1,1,1 | car1.CCU.sys1 | car5.LCU      | MDM9  |
+      | car3.LCU.MDM8      | car5.LCU.RXC       | 1,1,3,1,1,1,1,1 | car1.CCU.sys1 | car5.LCU      | RXC   |
+      | car3.LCU.MDM8      | car6.LCU.MDM9      | 1,1,3,1,1,2,1,1 | car1.CCU.sys1 | car6.LCU      | MDM9  |
+      | car3.LCU.MDM8      | car6.LCU.RXC       | 1,1,3,1,1,1,1,1 | car1.CCU.sys1 | car6.LCU      | RXC   |
+      | car3.LCU.MDM8      | car7.LCU.MDM9      | 1,1,3,1,1,1,2,1 | car1.CCU.sys1 | car7.LCU      | MDM9  |
+      | car3.LCU.MDM8      | car7.LCU.RXC       | 1,1,3,1,1,1,1,1 | car1.CCU.sys1 | car7.LCU      | RXC   |
+      | car3.LCU.MDM8      | car8.LCU.MDM9      | 1,1,3,1,1,1,1,2 | car1.CCU.sys1 | car8.LCU      | MDM9  |
+      | car3.LCU.MDM8      | car8.LCU.RXC       | 1,1,3,1,1,1,1,1 | car1.CCU.sys1 | car8.LCU      | RXC   |
+      | car3.LCU.MDM8      | car8.CCU.sys2.TXC  | 1,1,3,1,1,1,1,1 | car1.CCU.sys1 | car8.CCU.sys2 | TXC   |
+      | car3.LCU.MDM8      | car8.CCU.sys1.TXC  | 1,1,3,1,1,1,1,1 | car1.CCU.sys1 | car8.CCU.sys1 | TXC   |
+      | car3.LCU.MDM9      | car4.LCU.CPU3      | 1,1,2,1,1,1,1,1 | car1.CCU.sys1 | car3.LCU      | MDM9  |
+      | car3.LCU.MDM9      | car4.LCU.MDM8      | 1,1,2,3,1,1,1,1 | car1.CCU.sys1 | car3.LCU      | MDM9  |
+      | car3.LCU.MDM9      | car5.LCU.CPU3      | 1,1,2,1,1,1,1,1 | car1.CCU.sys1 | car3.LCU      | MDM9  |
+      | car3.LCU.MDM9      | car5.LCU.MDM8      | 1,1,2,1,3,1,1,1 | car1.CCU.sys1 | car3.LCU      | MDM9  |
+      | car3.LCU.MDM9      | car6.LCU.CPU3      | 1,1,2,1,1,1,1,1 | car1.CCU.sys1 | car3.LCU      | MDM9  |
+      | car3.LCU.MDM9      | car6.LCU.MDM8      | 1,1,2,1,1,3,1,1 | car1.CCU.sys1 | car3.LCU      | MDM9  |
+      | car3.LCU.MDM9      | car7.LCU.CPU3      | 1,1,2,1,1,1,1,1 | car1.CCU.sys1 | car3.LCU      | MDM9  |
+      | car3.LCU.MDM9      | car7.LCU.MDM8      | 1,1,2,1,1,1,3,1 | car1.CCU.sys1 | car3.LCU      | MDM9  |
+      | car3.LCU.MDM9      | car8.LCU.CPU3      | 1,1,2,1,1,1,1,1 | car1.CCU.sys1 | car3.LCU      | MDM9  |
+      | car3.LCU.MDM9      | car8.LCU.MDM8      | 1,1,2,1,1,1,1,3 | car1.CCU.sys1 | car3.LCU      | MDM9  |
+      | car3.LCU.MDM9      | car8.CCU.sys2.CPU3 | 1,1,2,1,1,1,1,1 | car1.CCU.sys1 | car3.LCU      | MDM9  |
+      | car3.LCU.MDM9      | car8.CCU.sys2.MDM8 | 1,1,2,1,1,1,1,1 | car1.CCU.sys1 | car3.LCU      | MDM9  |
+      | car3.LCU.MDM9      | car8.CCU.sys1.CPU3 | 1,1,2,1,1,1,1,1 | car1.CCU.sys1 | car3.LCU      | MDM9  |
+      | car3.LCU.MDM9      | car8.CCU.sys1.MDM8 | 1,1,2,1,1,1,1,1 | car1.CCU.sys1 | car3.LCU      | MDM9  |
+      | car3.LCU.RXC       | car4.LCU.CPU3      | 1,1,1,1,1,1,1,1 | car1.CCU.sys1 | car3.LCU      | RXC   |
+      | car3.LCU.RXC       | car4.LCU.MDM8      | 1,1,1,3,1,1,1,1 | car1.CCU.sys1 | car3.LCU      | RXC   |
+      | car3.LCU.RXC       | car5.LCU.CPU3      | 1,1,1,1,1,1,1,1 | car1.CCU.sys1 | car3.LCU      | RXC   |
+      | car3.LCU.RXC       | car5.LCU.MDM8      | 1,1,1,1,3,1,1,1 | car1.CCU.sys1 | car3.LCU      | RXC   |
+      | car3.LCU.RXC       | car6.LCU.CPU3      | 1,1,1,1,1,1,1,1 | car1.CCU.sys1 | car3.LCU      | RXC   |
+      | car3.LCU.RXC       | car6.LCU.MDM8      | 1,1,1,1,1,3,1,1 | car1.CCU.sys1 | car3.LCU      | RXC   |
+      | car3.LCU.RXC       | car7.LCU.CPU3      | 1,1,1,1,1,1,1,1 | car1.CCU.sys1 | car3.LCU      | RXC   |
+      | car3.LCU.RXC       | car7.LCU.MDM8      | 1,1,1,1,1,1,3,1 | car1.CCU.sys1 | car3.LCU      | RXC   |
+      | car3.LCU.RXC       | car8.LCU.CPU3      | 1,1,1,1,1,1,1,1 | car1.CCU.sys1 | car3.LCU      | RXC   |
+      | car3.LCU.RXC       | car8.LCU.MDM8      | 1,1,1,1,1,1,1,3 | car1.CCU.sys1 | car3.LCU      | RXC   |
+      | car3.LCU.RXC       | car8.CCU.sys2.CPU3 | 1,1,1,1,1,1,1,1 | car1.CCU.sys1 | car3.LCU      | RXC   |
+      | car3.LCU.RXC       | car8.CCU.sys2.MDM8 | 1,1,1,1,1,1,1,1 | car1.CCU.sys1 | car3.LCU      | RXC   |
+      | car3.LCU.RXC       | car8.CCU.sys1.CPU3 | 1,1,1,1,1,1,1,1 | car1.CCU.sys1 | car3.LCU      | RXC   |
+      | car3.LCU.RXC       | car8.CCU.sys1.MDM8 | 1,1,1,1,1,1,1,1 | car1.CCU.sys1 | car3.LCU      | RXC   |
+      | car4.LCU.CPU3      | car5.LCU.MDM9      | 1,1,1,1,2,1,1,1 | car1.CCU.sys1 | car5.LCU      | MDM9  |
+      | car4.LCU.CPU3      | car5.LCU.RXC       | 1,1,1,1,1,1,1,1 | car1.CCU.sys1 | car5.LCU      | RXC   |
+      | car4.LCU.CPU3      | car6.LCU.MDM9      | 1,1,1,1,1,2,1,1 | car1.CCU.sys1 | car6.LCU      | MDM9  |
+      | car4.LCU.CPU3      | car6.LCU.RXC       | 1,1,1,1,1,1,1,1 | car1.CCU.sys1 | car6.LCU      | RXC   |
+      | car4.LCU.CPU3      | car7.LCU.MDM9      | 1,1,1,1,1,1,2,1 | car1.CCU.sys1 | car7.LCU      | MDM9  |
+      | car4.LCU.CPU3      | car7.LCU.RXC       | 1,1,1,1,1,1,1,1 | car1.CCU.sys1 | car7.LCU      | RXC   |
+      | car4.LCU.CPU3      | car8.LCU.MDM9      | 1,1,1,1,1,1,1,2 | car1.CCU.sys1 | car8.LCU      | MDM9  |
+      | car4.LCU.CPU3      | car8.LCU.RXC       | 1,1,1,1,1,1,1,1 | car1.CCU.sys1 | car8.LCU      | RXC   |
+      | car4.LCU.CPU3      | car8.CCU.sys2.TXC  | 1,1,1,1,1,1,1,1 | car1.CCU.sys1 | car8.CCU.sys2 | TXC   |
+      | car4.LCU.CPU3      | car8.CCU.sys1.TXC  | 1,1,1,1,1,1,1,1 | car1.CCU.sys1 | car8.CCU.sys1 | TXC   |
+      | car4.LCU.MDM8      | car5.LCU.MDM9      | 1,1,1,3,2,1,1,1 | car1.CCU.sys1 | car5.LCU      | MDM9  |
+      | car4.LCU.MDM8      | car5.LCU.RXC       | 1,1,1,3,1,1,1,1 | car1.CCU.sys1 | car5.LCU      | RXC   |
+      | car4.LCU.MDM8      | car6.LCU.MDM9      | 1,1,1,3,1,2,1,1 | car1.CCU.sys1 | car6.LCU      | MDM9  |
+      | car4.LCU.MDM8      | car6.LCU.RXC       | 1,1,1,3,1,1,1,1 | car1.CCU.sys1 | car6.LCU      | RXC   |
+      | car4.LCU.MDM8      | car7.LCU.MDM9      | 1,1,1,3,1,1,2,1 | car1.CCU.sys1 | car7.LCU      | MDM9  |
+      | car4.LCU.MDM8      | car7.LCU.RXC       | 1,1,1,3,1,1,1,1 | car1.CCU.sys1 | car7.LCU      | RXC   |
+      | car4.LCU.MDM8      | car8.LCU.MDM9      | 1,1,1,3,1,1,1,2 | car1.CCU.sys1 | car8.LCU      | MDM9  |
+      | car4.LCU.MDM8      | car8.LCU.RXC       | 1,1,1,3,1,1,1,1 | car1.CCU.sys1 | car8.LCU      | RXC   |
+      | car4.LCU.MDM8      | car8.CCU.sys2.TXC  | 1,1,1,3,1,1,1,1 | car1.CCU.sys1 | car8.CCU.sys2 | TXC   |
+      | car4.LCU.MDM8      | car8.CCU.sys1.TXC  | 1,1,1,3,1,1,1,1 | car1.CCU.sys1 | car8.CCU.sys1 | TXC   |
+      | car4.LCU.MDM9      | car5.LCU.CPU3      | 1,1,1,2,1,1,1,1 | car1.CCU.sys1 | car4.LCU      | MDM9  |
+      | car4.LCU.MDM9      | car5.LCU.MDM8      | 1,1,1,2,3,1,1,1 | car1.CCU.sys1 | car4.LCU      | MDM9  |
+      | car4.LCU.MDM9      | car6.LCU.CPU3      | 1,1,1,2,1,1,1,1 | car1.CCU.sys1 | car4.LCU      | MDM9  |
+      | car4.LCU.MDM9      | car6.LCU.MDM8      | 1,1,1,2,1,3,1,1 | car1.CCU.sys1 | car4.LCU      | MDM9  |
+      | car4.LCU.MDM9      | car7.LCU.CPU3      | 1,1,1,2,1,1,1,1 | car1.CCU.sys1 | car4.LCU      | MDM9  |
+      | car4.LCU.MDM9      | car7.LCU.MDM8      | 1,1,1,2,1,1,3,1 | car1.CCU.sys1 | car4.LCU      | MDM9  |
+      | car4.LCU.MDM9      | car8.LCU.CPU3      | 1,1,1,2,1,1,1,1 | car1.CCU.sys1 | car4.LCU      | MDM9  |
+      | car4.LCU.MDM9      | car8.LCU.MDM8      | 1,1,1,2,1,1,1,3 | car1.CCU.sys1 | car4.LCU      | MDM9  |
+      | car4.LCU.MDM9      | car8.CCU.sys2.CPU3 | 1,1,1,2,1,1,1,1 | car1.CCU.sys1 | car4.LCU      | MDM9  |
+      | car4.LCU.MDM9      | car8.CCU.sys2.MDM8 | 1,1,1,2,1,1,1,1 | car1.CCU.sys1 | car4.LCU      | MDM9  |
+      | car4.LCU.MDM9      | car8.CCU.sys1.CPU3 | 1,1,1,2,1,1,1,1 | car1.CCU.sys1 | car4.LCU      | MDM9  |
+      | car4.LCU.MDM9      | car8.CCU.sys1.MDM8 | 1,1,1,2,1,1,1,1 | car1.CCU.sys1 | car4.LCU      | MDM9  |
+      | car4.LCU.RXC       | car5.LCU.CPU3      | 1,1,1,1,1,1,1,1 | car1.CCU.sys1 | car4.LCU      | RXC   |
+      | car4.LCU.RXC       | car5.LCU.MDM8      | 1,1,1,1,3,1,1,1 | car1.CCU.sys1 | car4.LCU      | RXC   |
+      | car4.LCU.RXC       | car6.LCU.CPU3      | 1,1,1,1,1,1,1,1 | car1.CCU.sys1 | car4.LCU      | RXC   |
+      | car4.LCU.RXC       | car6.LCU.MDM8      | 1,1,1,1,1,3,1,1 | car1.CCU.sys1 | car4.LCU      | RXC   |
+      | car4.LCU.RXC       | car7.LCU.CPU3      | 1,1,1,1,1,1,1,1 | car1.CCU.sys1 | car4.LCU      | RXC   |
+      | car4.LCU.RXC       | car7.LCU.MDM8      | 1,1,1,1,1,1,3,1 | car1.CCU.sys1 | car4.LCU      | RXC   |
+      | car4.LCU.RXC       | car8.LCU.CPU3      | 1,1,1,1,1,1,1,1 | car1.CCU.sys1 | car4.LCU      | RXC   |
+      | car4.LCU.RXC       | car8.LCU.MDM8      | 1,1,1,1,1,1,1,3 | car1.CCU.sys1 | car4.LCU      | RXC   |
+      | car4.LCU.RXC       | car8.CCU.sys2.CPU3 | 1,1,1,1,1,1,1,1 | car1.CCU.sys1 | car4.LCU      | RXC   |
+      | car4.LCU.RXC       | car8.CCU.sys2.MDM8 | 1,1,1,1,1,1,1,1 | car1.CCU.sys1 | car4.LCU      | RXC   |
+      | car4.LCU.RXC       | car8.CCU.sys1.CPU3 | 1,1,1,1,1,1,1,1 | car1.CCU.sys1 | car4.LCU      | RXC   |
+      | car4.LCU.RXC       | car8.CCU.sys1.MDM8 | 1,1,1,1,1,1,1,1 | car1.CCU.sys1 | car4.LCU      | RXC   |
+      | car5.LCU.CPU3      | car6.LCU.MDM9      | 1,1,1,1,1,2,1,1 | car1.CCU.sys1 | car6.LCU      | MDM9  |
+      | car5.LCU.CPU3      | car6.LCU.RXC       | 1,1,1,1,1,1,1,1 | car1.CCU.sys1 | car6.LCU      | RXC   |
+      | car5.LCU.CPU3      | car7.LCU.MDM9      | 1,1,1,1,1,1,2,1 | car1.CCU.sys1 | car7.LCU      | MDM9  |
+      | car5.LCU.CPU3      | car7.LCU.RXC       | 1,1,1,1,1,1,1,1 | car1.CCU.sys1 | car7.LCU      | RXC   |
+      | car5.LCU.CPU3      | car8.LCU.MDM9      | 1,1,1,1,1,1,1,2 | car1.CCU.sys1 | car8.LCU      | MDM9  |
+      | car5.LCU.CPU3      | car8.LCU.RXC       | 1,1,1,1,1,1,1,1 | car1.CCU.sys1 | car8.LCU      | RXC   |
+      | car5.LCU.CPU3      | car8.CCU.sys2.TXC  | 1,1,1,1,1,1,1,1 | car1.CCU.sys1 | car8.CCU.sys2 | TXC   |
+      | car5.LCU.CPU3      | car8.CCU.sys1.TXC  | 1,1,1,1,1,1,1,1 | car1.CCU.sys1 | car8.CCU.sys1 | TXC   |
+      | car5.LCU.MDM8      | car6.LCU.MDM9      | 1,1,1,1,3,2,1,1 | car1.CCU.sys1 | car6.LCU      | MDM9  |
+      | car5.LCU.MDM8      | car6.LCU.RXC       | 1,1,1,1,3,1,1,1 | car1.CCU.sys1 | car6.LCU      | RXC   |
+      | car5.LCU.MDM8      | car7.LCU.MDM9      | 1,1,1,1,3,1,2,1 | car1.CCU.sys1 | car7.LCU      | MDM9  |
+      | car5.LCU.MDM8      | car7.LCU.RXC       | 1,1,1,1,3,1,1,1 | car1.CCU.sys1 | car7.LCU      | RXC   |
+      | car5.LCU.MDM8      | car8.LCU.MDM9      | 1,1,1,1,3,1,1,2 | car1.CCU.sys1 | car8.LCU      | MDM9  |
+      | car5.LCU.MDM8      | car8.LCU.RXC       | 1,1,1,1,3,1,1,1 | car1.CCU.sys1 | car8.LCU      | RXC   |
+      | car5.LCU.MDM8      | car8.CCU.sys2.TXC  | 1,1,1,1,3,1,1,1 | car1.CCU.sys1 | car8.CCU.sys2 | TXC   |
+      | car5.LCU.MDM8      | car8.CCU.sys1.TXC  | 1,1,1,1,3,1,1,1 | car1.CCU.sys1 | car8.CCU.sys1 | TXC   |
+      | car5.LCU.MDM9      | car6.LCU.CPU3      | 1,1,1,1,2,1,1,1 | car1.CCU.sys1 | car5.LCU      | MDM9  |
+      | car5.LCU.MDM9      | car6.LCU.MDM8      | 1,1,1,1,2,3,1,1 | car1.CCU.sys1 | car5.LCU      | MDM9  |
+      | car5.LCU.MDM9      | car7.LCU.CPU3      | 1,1,1,1,2,1,1,1 | car1.CCU.sys1 | car5.LCU      | MDM9  |
+      | car5.LCU.MDM9      | car7.LCU.MDM8      | 1,1,1,1,2,1,3,1 | car1.CCU.sys1 | car5.LCU      | MDM9  |
+      | car5.LCU.MDM9      | car8.LCU.CPU3      | 1,1,1,1,2,1,1,1 | car1.CCU.sys1 | car5.LCU      | MDM9  |
+      | car5.LCU.MDM9      | car8.LCU.MDM8      | 1,1,1,1,2,1,1,3 | car1.CCU.sys1 | car5.LCU      | MDM9  |
+      | car5.LCU.MDM9      | car8.CCU.sys2.CPU3 | 1,1,1,1,2,1,1,1 | car1.CCU.sys1 | car5.LCU      | MDM9  |
+      | car5.LCU.MDM9      | car8.CCU.sys2.MDM8 | 1,1,1,1,2,1,1,1 | car1.CCU.sys1 | car5.LCU      | MDM9  |
+      | car5.LCU.MDM9      | car8.CCU.sys1.CPU3 | 1,1,1,1,2,1,1,1 | car1.CCU.sys1 | car5.LCU      | MDM9  |
+      | car5.LCU.MDM9      | car8.CCU.sys1.MDM8 | 1,1,1,1,2,1,1,1 | car1.CCU.sys1 | car5.LCU      | MDM9  |
+      | car5.LCU.RXC       | car6.LCU.CPU3      | 1,1,1,1,1,1,1,1 | car1.CCU.sys1 | car5.LCU      | RXC   |
+      | car5.LCU.RXC       | car6.LCU.MDM8      | 1,1,1,1,1,3,1,1 | car1.CCU.sys1 | car5.LCU      | RXC   |
+      | car5.LCU.RXC       | car7.LCU.CPU3      | 1,1,1,1,1,1,1,1 | car1.CCU.sys1 | car5.LCU      | RXC   |
+      | car5.LCU.RXC       | car7.LCU.MDM8      | 1,1,1,1,1,1,3,1 | car1.CCU.sys1 | car5.LCU      | RXC   |
+      | car5.LCU.RXC       | car8.LCU.CPU3      | 1,1,1,1,1,1,1,1 | car1.CCU.sys1 | car5.LCU      | RXC   |
+      | car5.LCU.RXC       | car8.LCU.MDM8      | 1,1,1,1,1,1,1,3 | car1.CCU.sys1 | car5.LCU      | RXC   |
+      | car5.LCU.RXC       | car8.CCU.sys2.CPU3 | 1,1,1,1,1,1,1,1 | car1.CCU.sys1 | car5.LCU      | RXC   |
+      | car5.LCU.RXC       | car8.CCU.sys2.MDM8 | 1,1,1,1,1,1,1,1 | car1.CCU.sys1 | car5.LCU      | RXC   |
+      | car5.LCU.RXC       | car8.CCU.sys1.CPU3 | 1,1,1,1,1,1,1,1 | car1.CCU.sys1 | car5.LCU      | RXC   |
+      | car5.LCU.RXC       | car8.CCU.sys1.MDM8 | 1,1,1,1,1,1,1,1 | car1.CCU.sys1 | car5.LCU      | RXC   |
+      | car6.LCU.CPU3      | car7.LCU.MDM9      | 1,1,1,1,1,1,2,1 | car1.CCU.sys1 | car7.LCU      | MDM9  |
+      | car6.LCU.CPU3      | car7.LCU.RXC       | 1,1,1,1,1,1,1,1 | car1.CCU.sys1 | car7.LCU      | RXC   |
+      | car6.LCU.CPU3      | car8.LCU.MDM9      | 1,1,1,1,1,1,1,2 | car1.CCU.sys1 | car8.LCU      | MDM9  |
+      | car6.LCU.CPU3      | car8.LCU.RXC       | 1,1,1,1,1,1,1,1 | car1.CCU.sys1 | car8.LCU      | RXC   |
+      | car6.LCU.CPU3      | car8.CCU.sys2.TXC  | 1,1,1,1,1,1,1,1 | car1.CCU.sys1 | car8.CCU.sys2 | TXC   |
+      | car6.LCU.CPU3      | car8.CCU.sys1.TXC  | 1,1,1,1,1,1,1,1 | car1.CCU.sys1 | car8.CCU.sys1 | TXC   |
+      | car6.LCU.MDM8      | car7.LCU.MDM9      | 1,1,1,1,1,3,2,1 | car1.CCU.sys1 | car7.LCU      | MDM9  |
+      | car6.LCU.MDM8      | car7.LCU.RXC       | 1,1,1,1,1,3,1,1 | car1.CCU.sys1 | car7.LCU      | RXC   |
+      | car6.LCU.MDM8      | car8.LCU.MDM9      | 1,1,1,1,1,3,1,2 | car1.CCU.sys1 | car8.LCU      | MDM9  |
+      | car6.LCU.MDM8      | car8.LCU.RXC       | 1,1,1,1,1,3,1,1 | car1.CCU.sys1 | car8.LCU      | RXC   |
+      | car6.LCU.MDM8      | car8.CCU.sys2.TXC  | 1,1,1,1,1,3,1,1 | car1.CCU.sys1 | car8.CCU.sys2 | TXC   |
+      | car6.LCU.MDM8      | car8.CCU.sys1.TXC  | 1,1,1,1,1,3,1,1 | car1.CCU.sys1 | car8.CCU.sys1 | TXC   |
+      | car6.LCU.MDM9      | car7.LCU.CPU3      | 1,1,1,1,1,2,1,1 | car1.CCU.sys1 | car6.LCU      | MDM9  |
+      | car6.LCU.MDM9      | car7.LCU.MDM8      | 1,1,1,1,1,2,3,1 | car1.CCU.sys1 | car6.LCU      | MDM9  |
+      | car6.LCU.MDM9      | car8.LCU.CPU3      | 1,1,1,1,1,2,1,1 | car1.CCU.sys1 | car6.LCU      | MDM9  |
+      | car6.LCU.MDM9      | car8.LCU.MDM8      | 1,1,1,1,1,2,1,3 | car1.CCU.sys1 | car6.LCU      | MDM9  |
+      | car6.LCU.MDM9      | car8.CCU.sys2.CPU3 | 1,1,1,1,1,2,1,1 | car1.CCU.sys1 | car6.LCU      | MDM9  |
+      | car6.LCU.MDM9      | car8.CCU.sys2.MDM8 | 1,1,1,1,1,2,1,1 | car1.CCU.sys1 | car6.LCU      | MDM9  |
+      | car6.LCU.MDM9      | car8.CCU.sys1.CPU3 | 1,1,1,1,1,2,1,1 | car1.CCU.sys1 | car6.LCU      | MDM9  |
+      | car6.LCU.MDM9      | car8.CCU.sys1.MDM8 | 1,1,1,1,1,2,1,1 | car1.CCU.sys1 | car6.LCU      | MDM9  |
+      | car6.LCU.RXC       | car7.LCU.CPU3      | 1,1,1,1,1,1,1,1 | car1.CCU.sys1 | car6.LCU      | RXC   |
+      | car6.LCU.RXC       | car7.LCU.MDM8      | 1,1,1,1,1,1,3,1 | car1.CCU.sys1 | car6.LCU      | RXC   |
+      | car6.LCU.RXC       | car8.LCU.CPU3      | 1,1,1,1,1,1,1,1 | car1.CCU.sys1 | car6.LCU      | RXC   |
+      | car6.LCU.RXC       | car8.LCU.MDM8      | 1,1,1,1,1,1,1,3 | car1.CCU.sys1 | car6.LCU      | RXC   |
+      | car6.LCU.RXC       | car8.CCU.sys2.CPU3 | 1,1,1,1,1,1,1,1 | car1.CCU.sys1 | car6.LCU      | RXC   |
+      | car6.LCU.RXC       | car8.CCU.sys2.MDM8 | 1,1,1,1,1,1,1,1 | car1.CCU.sys1 | car6.LCU      | RXC   |
+      | car6.LCU.RXC       | car8.CCU.sys1.CPU3 | 1,1,1,1,1,1,1,1 | car1.CCU.sys1 | car6.LCU      | RXC   |
+      | car6.LCU.RXC       | car8.CCU.sys1.MDM8 | 1,1,1,1,1,1,1,1 | car1.CCU.sys1 | car6.LCU      | RXC   |
+      | car7.LCU.CPU3      | car8.LCU.MDM9      | 1,1,1,1,1,1,1,2 | car1.CCU.sys1 | car8.LCU      | MDM9  |
+      | car7.LCU.CPU3      | car8.LCU.RXC       | 1,1,1,1,1,1,1,1 | car1.CCU.sys1 | car8.LCU      | RXC   |
+      | car7.LCU.CPU3      | car8.CCU.sys2.TXC  | 1,1,1,1,1,1,1,1 | car1.CCU.sys1 | car8.CCU.sys2 | TXC   |
+      | car7.LCU.CPU3      | car8.CCU.sys1.TXC  | 1,1,1,1,1,1,1,1 | car1.CCU.sys1 | car8.CCU.sys1 | TXC   |
+      | car7.LCU.MDM8      | car8.LCU.MDM9      | 1,1,1,1,1,1,3,2 | car1.CCU.sys1 | car8.LCU      | MDM9  |
+      | car7.LCU.MDM8      | car8.LCU.RXC       | 1,1,1,1,1,1,3,1 | car1.CCU.sys1 | car8.LCU      | RXC   |
+      | car7.LCU.MDM8      | car8.CCU.sys2.TXC  | 1,1,1,1,1,1,3,1 | car1.CCU.sys1 | car8.CCU.sys2 | TXC   |
+      | car7.LCU.MDM8      | car8.CCU.sys1.TXC  | 1,1,1,1,1,1,3,1 | car1.CCU.sys1 | car8.CCU.sys1 | TXC   |
+      | car7.LCU.MDM9      | car8.LCU.CPU3      | 1,1,1,1,1,1,2,1 | car1.CCU.sys1 | car7.LCU      | MDM9  |
+      | car7.LCU.MDM9      | car8.LCU.MDM8      | 1,1,1,1,1,1,2,3 | car1.CCU.sys1 | car7.LCU      | MDM9  |
+      | car7.LCU.MDM9      | car8.CCU.sys2.CPU3 | 1,1,1,1,1,1,2,1 | car1.CCU.sys1 | car7.LCU      | MDM9  |
+      | car7.LCU.MDM9      | car8.CCU.sys2.MDM8 | 1,1,1,1,1,1,2,1 | car1.CCU.sys1 | car7.LCU      | MDM9  |
+      | car7.LCU.MDM9      | car8.CCU.sys1.CPU3 | 1,1,1,1,1,1,2,1 | car1.CCU.sys1 | car7.LCU      | MDM9  |
+      | car7.LCU.MDM9      | car8.CCU.sys1.MDM8 | 1,1,1,1,1,1,2,1 | car1.CCU.sys1 | car7.LCU      | MDM9  |
+      | car7.LCU.RXC       | car8.LCU.CPU3      | 1,1,1,1,1,1,1,1 | car1.CCU.sys1 | car7.LCU      | RXC   |
+      | car7.LCU.RXC       | car8.LCU.MDM8      | 1,1,1,1,1,1,1,3 | car1.CCU.sys1 | car7.LCU      | RXC   |
+      | car7.LCU.RXC       | car8.CCU.sys2.CPU3 | 1,1,1,1,1,1,1,1 | car1.CCU.sys1 | car7.LCU      | RXC   |
+      | car7.LCU.RXC       | car8.CCU.sys2.MDM8 | 1,1,1,1,1,1,1,1 | car1.CCU.sys1 | car7.LCU      | RXC   |
+      | car7.LCU.RXC       | car8.CCU.sys1.CPU3 | 1,1,1,1,1,1,1,1 | car1.CCU.sys1 | car7.LCU      | RXC   |
+      | car7.LCU.RXC       | car8.CCU.sys1.MDM8 | 1,1,1,1,1,1,1,1 | car1.CCU.sys1 | car7.LCU      | RXC   |
+      | car8.LCU.CPU3      | car8.CCU.sys2.TXC  | 1,1,1,1,1,1,1,1 | car1.CCU.sys1 | car8.CCU.sys2 | TXC   |
+      | car8.LCU.CPU3      | car8.CCU.sys1.TXC  | 1,1,1,1,1,1,1,1 | car1.CCU.sys1 | car8.CCU.sys1 | TXC   |
+      | car8.LCU.MDM8      | car8.CCU.sys2.TXC  | 1,1,1,1,1,1,1,3 | car1.CCU.sys1 | car8.CCU.sys2 | TXC   |
+      | car8.LCU.MDM8      | car8.CCU.sys1.TXC  | 1,1,1,1,1,1,1,3 | car1.CCU.sys1 | car8.CCU.sys1 | TXC   |
+      | car8.LCU.MDM9      | car8.CCU.sys2.CPU3 | 1,1,1,1,1,1,1,2 | car1.CCU.sys1 | car8.LCU      | MDM9  |
+      | car8.LCU.MDM9      | car8.CCU.sys2.MDM8 | 1,1,1,1,1,1,1,2 | car1.CCU.sys1 | car8.LCU      | MDM9  |
+      | car8.LCU.MDM9      | car8.CCU.sys1.CPU3 | 1,1,1,1,1,1,1,2 | car1.CCU.sys1 | car8.LCU      | MDM9  |
+      | car8.LCU.MDM9      | car8.CCU.sys1.MDM8 | 1,1,1,1,1,1,1,2 | car1.CCU.sys1 | car8.LCU      | MDM9  |
+      | car8.LCU.RXC       | car8.CCU.sys2.CPU3 | 1,1,1,1,1,1,1,1 | car1.CCU.sys1 | car8.LCU      | RXC   |
+      | car8.LCU.RXC       | car8.CCU.sys2.MDM8 | 1,1,1,1,1,1,1,1 | car1.CCU.sys1 | car8.LCU      | RXC   |
+      | car8.LCU.RXC       | car8.CCU.sys1.CPU3 | 1,1,1,1,1,1,1,1 | car1.CCU.sys1 | car8.LCU      | RXC   |
+      | car8.LCU.RXC       | car8.CCU.sys1.MDM8 | 1,1,1,1,1,1,1,1 | car1.CCU.sys1 | car8.LCU      | RXC   |
+      | car8.CCU.sys2.CPU3 | car8.CCU.sys1.TXC  | 1,1,1,1,1,1,1,1 | car1.CCU.sys1 | car8.CCU.sys1 | TXC   |
+      | car8.CCU.sys2.MDM8 | car8.CCU.sys1.TXC  | 1,1,1,1,1,1,1,1 | car1.CCU.sys1 | car8.CCU.sys1 | TXC   |
+      | car8.CCU.sys2.TXC  | car8.CCU.sys1.CPU3 | 1,1,1,1,1,1,1,1 | car1.CCU.sys1 | car8.CCU.sys2 | TXC   |
+      | car8.CCU.sys2.TXC  | car8.CCU.sys1.MDM8 | 1,1,1,1,1,1,1,1 | car1.CCU.sys1 | car8.CCU.sys2 | TXC   |
+
+  @req:NET-03 @req:CMD-01 @req:CMD-02 @req:CMD-03 @req:CMD-04 @req:RED-01 @req:RED-02 @req:PRO-06
+  Scenario Outline: F-NET-32 Board <board> failed and supply <supply> off: each car by the path left to it, one fault recorded at the master
+    When board "<board>" fails
+    And the supply "<supply>" is switched off
+    And the driver moves the traction notch of cab 1 to 6
+    And 200 ms pass
+    Then car by car the CI and BCU receive traction notch 6 or traction step "B" by the paths <paths> within 100 ms
+    And no CI or BCU of a car with a path in <paths> goes without a command for more than 100 ms
+    And no CI or BCU ever receives a traction notch other than 0 or 6
+    And no command over path 2 or 3 ever carried more than the traction and brake steps A and B
+    And "<master>" holds a fault record of "<node1>" saying "<part1>" failed at most 1330 ms after it
+
+    Examples:
+      | board              | supply            | paths           | master        | node1         | part1 |
+      | car1.CCU.sys1.MDM8 | car8.CCU.sys1.TXC | 1,1,1,1,1,1,1,1 | car1.CCU.sys2 | car8.CCU.sys1 | TXC   |
+      | car1.CCU.sys1.MDM8 | car8.CCU.sys2.TXC | 1,1,1,1,1,1,1,1 | car1.CCU.sys2 | car8.CCU.sys2 | TXC   |
+      | car1.CCU.sys1.MDM8 | car1.LCU.RXC      | 1,1,1,1,1,1,1,1 | car1.CCU.sys2 | car1.LCU      | RXC   |
+      | car1.CCU.sys1.MDM8 | car2.LCU.RXC      | 1,1,1,1,1,1,1,1 | car1.CCU.sys2 | car2.LCU      | RXC   |
+      | car1.CCU.sys1.MDM8 | car3.LCU.RXC      | 1,1,1,1,1,1,1,1 | car1.CCU.sys2 | car3.LCU      | RXC   |
+      | car1.CCU.sys1.MDM8 | car4.LCU.RXC      | 1,1,1,1,1,1,1,1 | car1.CCU.sys2 | car4.LCU      | RXC   |
+      | car1.CCU.sys1.MDM8 | car5.LCU.RXC      | 1,1,1,1,1,1,1,1 | car1.CCU.sys2 | car5.LCU      | RXC   |
+      | car1.CCU.sys1.MDM8 | car6.LCU.RXC      | 1,1,1,1,1,1,1,1 | car1.CCU.sys2 | car6.LCU      | RXC   |
+      | car1.CCU.sys1.MDM8 | car7.LCU.RXC      | 1,1,1,1,1,1,1,1 | car1.CCU.sys2 | car7.LCU      | RXC   |
+      | car1.CCU.sys1.MDM8 | car8.LCU.RXC      | 1,1,1,1,1,1,1,1 | car1.CCU.sys2 | car8.LCU      | RXC   |
+      | car1.CCU.sys1.TXC  | car1.CCU.sys2     | -,-,-,-,-,-,-,- | car1.CCU.sys1 | car1.CCU.sys1 | TXC   |
+      | car1.CCU.sys1.TXC  | car1.CCU.sys1.TXC | 1,1,1,1,1,1,1,1 | car1.CCU.sys2 | car1.CCU.sys1 | TXC   |
+      | car1.CCU.sys1.TXC  | car8.CCU.sys1     | 1,1,1,1,1,1,1,1 | car1.CCU.sys2 | car1.CCU.sys1 | TXC   |
+      | car1.CCU.sys1.TXC  | car8.CCU.sys2     | 1,1,1,1,1,1,1,1 | car1.CCU.sys2 | car1.CCU.sys1 | TXC   |
+      | car1.CCU.sys1.TXC  | car1.LCU          | 3,1,1,1,1,1,1,1 | car1.CCU.sys2 | car1.CCU.sys1 | TXC   |
+      | car1.CCU.sys1.TXC  | car2.LCU          | 1,3,1,1,1,1,1,1 | car1.CCU.sys2 | car1.CCU.sys1 | TXC   |
+      | car1.CCU.sys1.TXC  | car3.LCU          | 1,1,3,1,1,1,1,1 | car1.CCU.sys2 | car1.CCU.sys1 | TXC   |
+      | car1.CCU.sys1.TXC  | car4.LCU          | 1,1,1,3,1,1,1,1 | car1.CCU.sys2 | car1.CCU.sys1 | TXC   |
+      | car1.CCU.sys1.TXC  | car5.LCU          | 1,1,1,1,3,1,1,1 | car1.CCU.sys2 | car1.CCU.sys1 | TXC   |
+      | car1.CCU.sys1.TXC  | car6.LCU          | 1,1,1,1,1,3,1,1 | car1.CCU.sys2 | car1.CCU.sys1 | TXC   |
+      | car1.CCU.sys1.TXC  | car7.LCU          | 1,1,1,1,1,1,3,1 | car1.CCU.sys2 | car1.CCU.sys1 | TXC   |
+      | car1.CCU.sys1.TXC  | car8.LCU          | 1,1,1,1,1,1,1,3 | car1.CCU.sys2 | car1.CCU.sys1 | TXC   |
+      | car1.CCU.sys2.CPU3 | car8.CCU.sys1.TXC | 1,1,1,1,1,1,1,1 | car1.CCU.sys1 | car8.CCU.sys1 | TXC   |
+      | car1.CCU.sys2.CPU3 | car8.CCU.sys2.TXC | 1,1,1,1,1,1,1,1 | car1.CCU.sys1 | car8.CCU.sys2 | TXC   |
+      | car1.CCU.sys2.CPU3 | car1.LCU.RXC      | 1,1,1,1,1,1,1,1 | car1.CCU.sys1 | car1.LCU      | RXC   |
+      | car1.CCU.sys2.CPU3 | car2.LCU.RXC      | 1,1,1,1,1,1,1,1 | car1.CCU.sys1 | car2.LCU      | RXC   |
+      | car1.CCU.sys2.CPU3 | car3.LCU.RXC      | 1,1,1,1,1,1,1,1 | car1.CCU.sys1 | car3.LCU      | RXC   |
+      | car1.CCU.sys2.CPU3 | car4.LCU.RXC      | 1,1,1,1,1,1,1,1 | car1.CCU.sys1 | car4.LCU      | RXC   |
+      | car1.CCU.sys2.CPU3 | car5.LCU.RXC      | 1,1,1,1,1,1,1,1 | car1.CCU.sys1 | car5.LCU      | RXC   |
+      | car1.CCU.sys2.CPU3 | car6.LCU.RXC      | 1,1,1,1,1,1,1,1 | car1.CCU.sys1 | car6.LCU      | RXC   |
+      | car1.CCU.sys2.CPU3 | car7.LCU.RXC      | 1,1,1,1,1,1,1,1 | car1.CCU.sys1 | car7.LCU      | RXC   |
+      | car1.CCU.sys2.CPU3 | car8.LCU.RXC      | 1,1,1,1,1,1,1,1 | car1.CCU.sys1 | car8.LCU      | RXC   |
+      | car1.CCU.sys2.MDM8 | car1.CCU.sys1.TXC | -,-,-,-,-,-,-,- | car1.CCU.sys1 | car1.CCU.sys1 | TXC   |
+      | car1.CCU.sys2.MDM8 | car8.CCU.sys1.TXC | 1,1,1,1,1,1,1,1 | car1.CCU.sys1 | car8.CCU.sys1 | TXC   |
+      | car1.CCU.sys2.MDM8 | car8.CCU.sys2.TXC | 1,1,1,1,1,1,1,1 | car1.CCU.sys1 | car8.CCU.sys2 | TXC   |
+      | car1.CCU.sys2.MDM8 | car1.LCU.RXC      | 1,1,1,1,1,1,1,1 | car1.CCU.sys1 | car1.LCU      | RXC   |
+      | car1.CCU.sys2.MDM8 | car2.LCU.RXC      | 1,1,1,1,1,1,1,1 | car1.CCU.sys1 | car2.LCU      | RXC   |
+      | car1.CCU.sys2.MDM8 | car3.LCU.RXC      | 1,1,1,1,1,1,1,1 | car1.CCU.sys1 | car3.LCU      | RXC   |
+      | car1.CCU.sys2.MDM8 | car4.LCU.RXC      | 1,1,1,1,1,1,1,1 | car1.CCU.sys1 | car4.LCU      | RXC   |
+      | car1.CCU.sys2.MDM8 | car5.LCU.RXC      | 1,1,1,1,1,1,1,1 | car1.CCU.sys1 | car5.LCU      | RXC   |
+      | car1.CCU.sys2.MDM8 | car6.LCU.RXC      | 1,1,1,1,1,1,1,1 | car1.CCU.sys1 | car6.LCU      | RXC   |
+      | car1.CCU.sys2.MDM8 | car7.LCU.RXC      | 1,1,1,1,1,1,1,1 | car1.CCU.sys1 | car7.LCU      | RXC   |
+      | car1.CCU.sys2.MDM8 | car8.LCU.RXC      | 1,1,1,1,1,1,1,1 | car1.CCU.sys1 | car8.LCU      | RXC   |
+      | car1.CCU.sys2.TXC  | car1.CCU.sys2.TXC | 1,1,1,1,1,1,1,1 | car1.CCU.sys1 | car1.CCU.sys2 | TXC   |
+      | car1.CCU.sys2.TXC  | car8.CCU.sys1     | 1,1,1,1,1,1,1,1 | car1.CCU.sys1 | car1.CCU.sys2 | TXC   |
+      | car1.CCU.sys2.TXC  | car8.CCU.sys2     | 1,1,1,1,1,1,1,1 | car1.CCU.sys1 | car1.CCU.sys2 | TXC   |
+      | car1.CCU.sys2.TXC  | car1.LCU          | 3,1,1,1,1,1,1,1 | car1.CCU.sys1 | car1.CCU.sys2 | TXC   |
+      | car1.CCU.sys2.TXC  | car2.LCU          | 1,3,1,1,1,1,1,1 | car1.CCU.sys1 | car1.CCU.sys2 | TXC   |
+      | car1.CCU.sys2.TXC  | car3.LCU          | 1,1,3,1,1,1,1,1 | car1.CCU.sys1 | car1.CCU.sys2 | TXC   |
+      | car1.CCU.sys2.TXC  | car4.LCU          | 1,1,1,3,1,1,1,1 | car1.CCU.sys1 | car1.CCU.sys2 | TXC   |
+      | car1.CCU.sys2.TXC  | car5.LCU          | 1,1,1,1,3,1,1,1 | car1.CCU.sys1 | car1.CCU.sys2 | TXC   |
+      | car1.CCU.sys2.TXC  | car6.LCU          | 1,1,1,1,1,3,1,1 | car1.CCU.sys1 | car1.CCU.sys2 | TXC   |
+      | car1.CCU.sys2.TXC  | car7.LCU          | 1,1,1,1,1,1,3,1 | car1.CCU.sys1 | car1.CCU.sys2 | TXC   |
+      | car1.CCU.sys2.TXC  | car8.LCU          | 1,1,1,1,1,1,1,3 | car1.CCU.sys1 | car1.CCU.sys2 | TXC   |
+      | car1.LCU.CPU3      | car1.CCU.sys1.TXC | 1,1,1,1,1,1,1,1 | car1.CCU.sys2 | car1.CCU.sys1 | TXC   |
+      | car1.LCU.CPU3      | car1.CCU.sys2.TXC | 1,1,1,1,1,1,1,1 | car1.CCU.sys1 | car1.CCU.sys2 | TXC   |
+      | car1.LCU.CPU3      | car8.CCU.sys1.TXC | 1,1,1,1,1,1,1,1 | car1.CCU.sys1 | car8.CCU.sys1 | TXC   |
+      | car1.LCU.CPU3      | car8.CCU.sys2.TXC | 1,1,1,1,1,1,1,1 | car1.CCU.sys1 | car8.CCU.sys2 | TXC   |
+      | car1.LCU.CPU3      | car2.LCU.RXC      | 1,1,1,1,1,1,1,1 | car1.CCU.sys1 | car2.LCU      | RXC   |
+      | car1.LCU.CPU3      | car3.LCU.RXC      | 1,1,1,1,1,1,1,1 | car1.CCU.sys1 | car3.LCU      | RXC   |
+      | car1.LCU.CPU3      | car4.LCU.RXC      | 1,1,1,1,1,1,1,1 | car1.CCU.sys1 | car4.LCU      | RXC   |
+      | car1.LCU.CPU3      | car5.LCU.RXC      | 1,1,1,1,1,1,1,1 | car1.CCU.sys1 | car5.LCU      | RXC   |
+      | car1.LCU.CPU3      | car6.LCU.RXC      | 1,1,1,1,1,1,1,1 | car1.CCU.sys1 | car6.LCU      | RXC   |
+      | car1.LCU.CPU3      | car7.LCU.RXC      | 1,1,1,1,1,1,1,1 | car1.CCU.sys1 | car7.LCU      | RXC   |
+      | car1.LCU.CPU3      | car8.LCU.RXC      | 1,1,1,1,1,1,1,1 | car1.CCU.sys1 | car8.LCU      | RXC   |
+      | car1.LCU.MDM8      | car1.CCU.sys1.TXC | 3,1,1,1,1,1,1,1 | car1.CCU.sys2 | car1.CCU.sys1 | TXC   |
+      | car1.LCU.MDM8      | car1.CCU.sys2.TXC | 3,1,1,1,1,1,1,1 | car1.CCU.sys1 | car1.CCU.sys2 | TXC   |
+      | car1.LCU.MDM8      | car8.CCU.sys1.TXC | 3,1,1,1,1,1,1,1 | car1.CCU.sys1 | car8.CCU.sys1 | TXC   |
+      | car1.LCU.MDM8      | car8.CCU.sys2.TXC | 3,1,1,1,1,1,1,1 | car1.CCU.sys1 | car8.CCU.sys2 | TXC   |
+      | car1.LCU.MDM8      | car2.LCU.RXC      | 3,1,1,1,1,1,1,1 | car1.CCU.sys1 | car2.LCU      | RXC   |
+      | car1.LCU.MDM8      | car3.LCU.RXC      | 3,1,1,1,1,1,1,1 | car1.CCU.sys1 | car3.LCU      | RXC   |
+      | car1.LCU.MDM8      | car4.LCU.RXC      | 3,1,1,1,1,1,1,1 | car1.CCU.sys1 | car4.LCU      | RXC   |
+      | car1.LCU.MDM8      | car5.LCU.RXC      | 3,1,1,1,1,1,1,1 | car1.CCU.sys1 | car5.LCU      | RXC   |
+      | car1.LCU.MDM8      | car6.LCU.RXC      | 3,1,1,1,1,1,1,1 | car1.CCU.sys1 | car6.LCU      | RXC   |
+      | car1.LCU.MDM8      | car7.LCU.RXC      | 3,1,1,1,1,1,1,1 | car1.CCU.sys1 | car7.LCU      | RXC   |
+      | car1.LCU.MDM8      | car8.LCU.RXC      | 3,1,1,1,1,1,1,1 | car1.CCU.sys1 | car8.LCU      | RXC   |
+      | car1.LCU.MDM9      | car1.CCU.sys1     | 2,1,1,1,1,1,1,1 | car1.CCU.sys2 | car1.LCU      | MDM9  |
+      | car1.LCU.MDM9      | car1.CCU.sys2     | 2,1,1,1,1,1,1,1 | car1.CCU.sys1 | car1.LCU      | MDM9  |
+      | car1.LCU.MDM9      | car8.CCU.sys1     | 2,1,1,1,1,1,1,1 | car1.CCU.sys1 | car1.LCU      | MDM9  |
+      | car1.LCU.MDM9      | car8.CCU.sys2     | 2,1,1,1,1,1,1,1 | car1.CCU.sys1 | car1.LCU      | MDM9  |
+      | car1.LCU.MDM9      | car2.LCU          | 2,3,1,1,1,1,1,1 | car1.CCU.sys1 | car1.LCU      | MDM9  |
+      | car1.LCU.MDM9      | car3.LCU          | 2,1,3,1,1,1,1,1 | car1.CCU.sys1 | car1.LCU      | MDM9  |
+      | car1.LCU.MDM9      | car4.LCU          | 2,1,1,3,1,1,1,1 | car1.CCU.sys1 | car1.LCU      | MDM9  |
+      | car1.LCU.MDM9      | car5.LCU          | 2,1,1,1,3,1,1,1 | car1.CCU.sys1 | car1.LCU      | MDM9  |
+      | car1.LCU.MDM9      | car6.LCU          | 2,1,1,1,1,3,1,1 | car1.CCU.sys1 | car1.LCU      | MDM9  |
+      | car1.LCU.MDM9      | car7.LCU          | 2,1,1,1,1,1,3,1 | car1.CCU.sys1 | car1.LCU      | MDM9  |
+      | car1.LCU.MDM9      | car8.LCU          | 2,1,1,1,1,1,1,3 | car1.CCU.sys1 | car1.LCU      | MDM9  |
+      | car1.LCU.RXC       | car1.CCU.sys1     | 1,1,1,1,1,1,1,1 | car1.CCU.sys2 | car1.LCU      | RXC   |
+      | car1.LCU.RXC       | car1.CCU.sys2     | 1,1,1,1,1,1,1,1 | car1.CCU.sys1 | car1.LCU      | RXC   |
+      | car1.LCU.RXC       | car8.CCU.sys1     | 1,1,1,1,1,1,1,1 | car1.CCU.sys1 | car1.LCU      | RXC   |
+      | car1.LCU.RXC       | car8.CCU.sys2     | 1,1,1,1,1,1,1,1 | car1.CCU.sys1 | car1.LCU      | RXC   |
+      | car1.LCU.RXC       | car1.LCU.RXC      | 1,1,1,1,1,1,1,1 | car1.CCU.sys1 | car1.LCU      | RXC   |
+      | car1.LCU.RXC       | car2.LCU          | 1,3,1,1,1,1,1,1 | car1.CCU.sys1 | car1.LCU      | RXC   |
+      | car1.LCU.RXC       | car3.LCU          | 1,1,3,1,1,1,1,1 | car1.CCU.sys1 | car1.LCU      | RXC   |
+      | car1.LCU.RXC       | car4.LCU          | 1,1,1,3,1,1,1,1 | car1.CCU.sys1 | car1.LCU      | RXC   |
+      | car1.LCU.RXC       | car5.LCU          | 1,1,1,1,3,1,1,1 | car1.CCU.sys1 | car1.LCU      | RXC   |
+      | car1.LCU.RXC       | car6.LCU          | 1,1,1,1,1,3,1,1 | car1.CCU.sys1 | car1.LCU      | RXC   |
+      | car1.LCU.RXC       | car7.LCU          | 1,1,1,1,1,1,3,1 | car1.CCU.sys1 | car1.LCU      | RXC   |
+      | car1.LCU.RXC       | car8.LCU          | 1,1,1,1,1,1,1,3 | car1.CCU.sys1 | car1.LCU      | RXC   |
+      | car2.LCU.CPU3      | car1.CCU.sys1.TXC | 1,1,1,1,1,1,1,1 | car1.CCU.sys2 | car1.CCU.sys1 | TXC   |
+      | car2.LCU.CPU3      | car1.CCU.sys2.TXC | 1,1,1,1,1,1,1,1 | car1.CCU.sys1 | car1.CCU.sys2 | TXC   |
+      | car2.LCU.CPU3      | car8.CCU.sys1.TXC | 1,1,1,1,1,1,1,1 | car1.CCU.sys1 | car8.CCU.sys1 | TXC   |
+      | car2.LCU.CPU3      | car8.CCU.sys2.TXC | 1,1,1,1,1,1,1,1 | car1.CCU.sys1 | car8.CCU.sys2 | TXC   |
+      | car2.LCU.CPU3      | car1.LCU.RXC      | 1,1,1,1,1,1,1,1 | car1.CCU.sys1 | car1.LCU      | RXC   |
+      | car2.LCU.CPU3      | car3.LCU.RXC      | 1,1,1,1,1,1,1,1 | car1.CCU.sys1 | car3.LCU      | RXC   |
+      | car2.LCU.CPU3      | car4.LCU.RXC      | 1,1,1,1,1,1,1,1 | car1.CCU.sys1 | car4.LCU      | RXC   |
+      | car2.LCU.CPU3      | car5.LCU.RXC      | 1,1,1,1,1,1,1,1 | car1.CCU.sys1 | car5.LCU      | RXC   |
+      | car2.LCU.CPU3      | car6.LCU.RXC      | 1,1,1,1,1,1,1,1 | car1.CCU.sys1 | car6.LCU      | RXC   |
+      | car2.LCU.CPU3      | car7.LCU.RXC      | 1,1,1,1,1,1,1,1 | car1.CCU.sys1 | car7.LCU      | RXC   |
+      | car2.LCU.CPU3      | car8.LCU.RXC      | 1,1,1,1,1,1,1,1 | car1.CCU.sys1 | car8.LCU      | RXC   |
+      | car2.LCU.MDM8      | car1.CCU.sys1.TXC | 1,3,1,1,1,1,1,1 | car1.CCU.sys2 | car1.CCU.sys1 | TXC   |
+      | car2.LCU.MDM8      | car1.CCU.sys2.TXC | 1,3,1,1,1,1,1,1 | car1.CCU.sys1 | car1.CCU.sys2 | TXC   |
+      | car2.LCU.MDM8      | car8.CCU.sys1.TXC | 1,3,1,1,1,1,1,1 | car1.CCU.sys1 | car8.CCU.sys1 | TXC   |
+      | car2.LCU.MDM8      | car8.CCU.sys2.TXC | 1,3,1,1,1,1,1,1 | car1.CCU.sys1 | car8.CCU.sys2 | TXC   |
+      | car2.LCU.MDM8      | car1.LCU.RXC      | 1,3,1,1,1,1,1,1 | car1.CCU.sys1 | car1.LCU      | RXC   |
+      | car2.LCU.MDM8      | car3.LCU.RXC      | 1,3,1,1,1,1,1,1 | car1.CCU.sys1 | car3.LCU      | RXC   |
+      | car2.LCU.MDM8      | car4.LCU.RXC      | 1,3,1,1,1,1,1,1 | car1.CCU.sys1 | car4.LCU      | RXC   |
+      | car2.LCU.MDM8      | car5.LCU.RXC      | 1,3,1,1,1,1,1,1 | car1.CCU.sys1 | car5.LCU      | RXC   |
+      | car2.LCU.MDM8      | car6.LCU.RXC      | 1,3,1,1,1,1,1,1 | car1.CCU.sys1 | car6.LCU      | RXC   |
+      | car2.LCU.MDM8      | car7.LCU.RXC      | 1,3,1,1,1,1,1,1 | car1.CCU.sys1 | car7.LCU      | RXC   |
+      | car2.LCU.MDM8      | car8.LCU.RXC      | 1,3,1,1,1,1,1,1 | car1.CCU.sys1 | car8.LCU      | RXC   |
+      | car2.LCU.MDM9      | car1.CCU.sys1     | 1,2,1,1,1,1,1,1 | car1.CCU.sys2 | car2.LCU      | MDM9  |
+      | car2.LCU.MDM9      | car1.CCU.sys2     | 1,2,1,1,1,1,1,1 | car1.CCU.sys1 | car2.LCU      | MDM9  |
+      | car2.LCU.MDM9      | car8.CCU.sys1     | 1,2,1,1,1,1,1,1 | car1.CCU.sys1 | car2.LCU      | MDM9  |
+      | car2.LCU.MDM9      | car8.CCU.sys2     | 1,2,1,1,1,1,1,1 | car1.CCU.sys1 | car2.LCU      | MDM9  |
+      | car2.LCU.MDM9      | car1.LCU          | 3,2,1,1,1,1,1,1 | car1.CCU.sys1 | car2.LCU      | MDM9  |
+      | car2.LCU.MDM9      | car3.LCU          | 1,2,3,1,1,1,1,1 | car1.CCU.sys1 | car2.LCU      | MDM9  |
+      | car2.LCU.MDM9      | car4.LCU          | 1,2,1,3,1,1,1,1 | car1.CCU.sys1 | car2.LCU      | MDM9  |
+      | car2.LCU.MDM9      | car5.LCU          | 1,2,1,1,3,1,1,1 | car1.CCU.sys1 | car2.LCU      | MDM9  |
+      | car2.LCU.MDM9      | car6.LCU          | 1,2,1,1,1,3,1,1 | car1.CCU.sys1 | car2.LCU      | MDM9  |
+      | car2.LCU.MDM9      | car7.LCU          | 1,2,1,1,1,1,3,1 | car1.CCU.sys1 | car2.LCU      | MDM9  |
+      | car2.LCU.MDM9      | car8.LCU          | 1,2,1,1,1,1,1,3 | car1.CCU.sys1 | car2.LCU      | MDM9  |
+      | car2.LCU.RXC       | car1.CCU.sys1     | 1,1,1,1,1,1,1,1 | car1.CCU.sys2 | car2.LCU      | RXC   |
+      | car2.LCU.RXC       | car1.CCU.sys2     | 1,1,1,1,1,1,1,1 | car1.CCU.sys1 | car2.LCU      | RXC   |
+      | car2.LCU.RXC       | car8.CCU.sys1     | 1,1,1,1,1,1,1,1 | car1.CCU.sys1 | car2.LCU      | RXC   |
+      | car2.LCU.RXC       | car8.CCU.sys2     | 1,1,1,1,1,1,1,1 | car1.CCU.sys1 | car2.LCU      | RXC   |
+      | car2.LCU.RXC       | car1.LCU          | 3,1,1,1,1,1,1,1 | car1.CCU.sys1 | car2.LCU      | RXC   |
+      | car2.LCU.RXC       | car2.LCU.RXC      | 1,1,1,1,1,1,1,1 | car1.CCU.sys1 | car2.LCU      | RXC   |
+      | car2.LCU.RXC       | car3.LCU          | 1,1,3,1,1,1,1,1 | car1.CCU.sys1 | car2.LCU      | RXC   |
+      | car2.LCU.RXC       | car4.LCU          | 1,1,1,3,1,1,1,1 | car1.CCU.sys1 | car2.LCU      | RXC   |
+      | car2.LCU.RXC       | car5.LCU          | 1,1,1,1,3,1,1,1 | car1.CCU.sys1 | car2.LCU      | RXC   |
+      | car2.LCU.RXC       | car6.LCU          | 1,1,1,1,1,3,1,1 | car1.CCU.sys1 | car2.LCU      | RXC   |
+      | car2.LCU.RXC       | car7.LCU          | 1,1,1,1,1,1,3,1 | car1.CCU.sys1 | car2.LCU      | RXC   |
+      | car2.LCU.RXC       | car8.LCU          | 1,1,1,1,1,1,1,3 | car1.CCU.sys1 | car2.LCU      | RXC   |
+      | car3.LCU.CPU3      | car1.CCU.sys1.TXC | 1,1,1,1,1,1,1,1 | car1.CCU.sys2 | car1.CCU.sys1 | TXC   |
+      | car3.LCU.CPU3      | car1.CCU.sys2.TXC | 1,1,1,1,1,1,1,1 | car1.CCU.sys1 | car1.CCU.sys2 | TXC   |
+      | car3.LCU.CPU3      | car8.CCU.sys1.TXC | 1,1,1,1,1,1,1,1 | car1.CCU.sys1 | car8.CCU.sys1 | TXC   |
+      | car3.LCU.CPU3      | car8.CCU.sys2.TXC | 1,1,1,1,1,1,1,1 | car1.CCU.sys1 | car8.CCU.sys2 | TXC   |
+      | car3.LCU.CPU3      | car1.LCU.RXC      | 1,1,1,1,1,1,1,1 | car1.CCU.sys1 | car1.LCU      | RXC   |
+      | car3.LCU.CPU3      | car2.LCU.RXC      | 1,1,1,1,1,1,1,1 | car1.CCU.sys1 | car2.LCU      | RXC   |
+      | car3.LCU.CPU3      | car4.LCU.RXC      | 1,1,1,1,1,1,1,1 | car1.CCU.sys1 | car4.LCU      | RXC   |
+      | car3.LCU.CPU3      | car5.LCU.RXC      | 1,1,1,1,1,1,1,1 | car1.CCU.sys1 | car5.LCU      | RXC   |
+      | car3.LCU.CPU3      | car6.LCU.RXC      | 1,1,1,1,1,1,1,1 | car1.CCU.sys1 | car6.LCU      | RXC   |
+      | car3.LCU.CPU3      | car7.LCU.RXC      | 1,1,1,1,1,1,1,1 | car1.CCU.sys1 | car7.LCU      | RXC   |
+      | car3.LCU.CPU3      | car8.LCU.RXC      | 1,1,1,1,1,1,1,1 | car1.CCU.sys1 | car8.LCU      | RXC   |
+      | car3.LCU.MDM8      | car1.CCU.sys1.TXC | 1,1,3,1,1,1,1,1 | car1.CCU.sys2 | car1.CCU.sys1 | TXC   |
+      | car3.LCU.MDM8      | car1.CCU.sys2.TXC | 1,1,3,1,1,1,1,1 | car1.CCU.sys1 | car1.CCU.sys2 | TXC   |
+      | car3.LCU.MDM8      | car8.CCU.sys1.TXC | 1,1,3,1,1,1,1,1 | car1.CCU.sys1 | car8.CCU.sys1 | TXC   |
+      | car3.LCU.MDM8      | car8.CCU.sys2.TXC | 1,1,3,1,1,1,1,1 | car1.CCU.sys1 | car8.CCU.sys2 | TXC   |
+      | car3.LCU.MDM8      | car1.LCU.RXC      | 1,1,3,1,1,1,1,1 | car1.CCU.sys1 | car1.LCU      | RXC   |
+      | car3.LCU.MDM8      | car2.LCU.RXC      | 1,1,3,1,1,1,1,1 | car1.CCU.sys1 | car2.LCU      | RXC   |
+      | car3.LCU.MDM8      | car4.LCU.RXC      | 1,1,3,1,1,1,1,1 | car1.CCU.sys1 | car4.LCU      | RXC   |
+      | car3.LCU.MDM8      | car5.LCU.RXC      | 1,1,3,1,1,1,1,1 | car1.CCU.sys1 | car5.LCU      | RXC   |
+      | car3.LCU.MDM8      | car6.LCU.RXC      | 1,1,3,1,1,1,1,1 | car1.CCU.sys1 | car6.LCU      | RXC   |
+      | car3.LCU.MDM8      | car7.LCU.RXC      | 1,1,3,1,1,1,1,1 | car1.CCU.sys1 | car7.LCU      | RXC   |
+      | car3.LCU.MDM8      | car8.LCU.RXC      | 1,1,3,1,1,1,1,1 | car1.CCU.sys1 | car8.LCU      | RXC   |
+      | car3.LCU.MDM9      | car1.CCU.sys1     | 1,1,2,1,1,1,1,1 | car1.CCU.sys2 | car3.LCU      | MDM9  |
+      | car3.LCU.MDM9      | car1.CCU.sys2     | 1,1,2,1,1,1,1,1 | car1.CCU.sys1 | car3.LCU      | MDM9  |
+      | car3.LCU.MDM9      | car8.CCU.sys1     | 1,1,2,1,1,1,1,1 | car1.CCU.sys1 | car3.LCU      | MDM9  |
+      | car3.LCU.MDM9      | car8.CCU.sys2     | 1,1,2,1,1,1,1,1 | car1.CCU.sys1 | car3.LCU      | MDM9  |
+      | car3.LCU.MDM9      | car1.LCU          | 3,1,2,1,1,1,1,1 | car1.CCU.sys1 | car3.LCU      | MDM9  |
+      | car3.LCU.MDM9      | car2.LCU          | 1,3,2,1,1,1,1,1 | car1.CCU.sys1 | car3.LCU      | MDM9  |
+      | car3.LCU.MDM9      | car4.LCU          | 1,1,2,3,1,1,1,1 | car1.CCU.sys1 | car3.LCU      | MDM9  |
+      | car3.LCU.MDM9      | car5.LCU          | 1,1,2,1,3,1,1,1 | car1.CCU.sys1 | car3.LCU      | MDM9  |
+      | car3.LCU.MDM9      | car6.LCU          | 1,1,2,1,1,3,1,1 | car1.CCU.sys1 | car3.LCU      | MDM9  |
+      | car3.LCU.MDM9      | car7.LCU          | 1,1,2,1,1,1,3,1 | car1.CCU.sys1 | car3.LCU      | MDM9  |
+      | car3.LCU.MDM9      | car8.LCU          | 1,1,2,1,1,1,1,3 | car1.CCU.sys1 | car3.LCU      | MDM9  |
+      | car3.LCU.RXC       | car1.CCU.sys1     | 1,1,1,1,1,1,1,1 | car1.CCU.sys2 | car3.LCU      | RXC   |
+      | car3.LCU.RXC       | car1.CCU.sys2     | 1,1,1,1,1,1,1,1 | car1.CCU.sys1 | car3.LCU      | RXC   |
+      | car3.LCU.RXC       | car8.CCU.sys1     | 1,1,1,1,1,1,1,1 | car1.CCU.sys1 | car3.LCU      | RXC   |
+      | car3.LCU.RXC       | car8.CCU.sys2     | 1,1,1,1,1,1,1,1 | car1.CCU.sys1 | car3.LCU      | RXC   |
+      | car3.LCU.RXC       | car1.LCU          | 3,1,1,1,1,1,1,1 | car1.CCU.sys1 | car3.LCU      | RXC   |
+      | car3.LCU.RXC       | car2.LCU          | 1,3,1,1,1,1,1,1 | car1.CCU.sys1 | car3.LCU      | RXC   |
+      | car3.LCU.RXC       | car3.LCU.RXC      | 1,1,1,1,1,1,1,1 | car1.CCU.sys1 | car3.LCU      | RXC   |
+      | car3.LCU.RXC       | car4.LCU          | 1,1,1,3,1,1,1,1 | car1.CCU.sys1 | car3.LCU      | RXC   |
+      | car3.LCU.RXC       | car5.LCU          | 1,1,1,1,3,1,1,1 | car1.CCU.sys1 | car3.LCU      | RXC   |
+      | car3.LCU.RXC       | car6.LCU          | 1,1,1,1,1,3,1,1 | car1.CCU.sys1 | car3.LCU      | RXC   |
+      | car3.LCU.RXC       | car7.LCU          | 1,1,1,1,1,1,3,1 | car1.CCU.sys1 | car3.LCU      | RXC   |
+      | car3.LCU.RXC       | car8.LCU          | 1,1,1,1,1,1,1,3 | car1.CCU.sys1 | car3.LCU      | RXC   |
+      | car4.LCU.CPU3      | car1.CCU.sys1.TXC | 1,1,1,1,1,1,1,1 | car1.CCU.sys2 | car1.CCU.sys1 | TXC   |
+      | car4.LCU.CPU3      | car1.CCU.sys2.TXC | 1,1,1,1,1,1,1,1 | car1.CCU.sys1 | car1.CCU.sys2 | TXC   |
+      | car4.LCU.CPU3      | car8.CCU.sys1.TXC | 1,1,1,1,1,1,1,1 | car1.CCU.sys1 | car8.CCU.sys1 | TXC   |
+      | car4.LCU.CPU3      | car8.CCU.sys2.TXC | 1,1,1,1,1,1,1,1 | car1.CCU.sys1 | car8.CCU.sys2 | TXC   |
+      | car4.LCU.CPU3      | car1.LCU.RXC      | 1,1,1,1,1,1,1,1 | car1.CCU.sys1 | car1.LCU      | RXC   |
+      | car4.LCU.CPU3      | car2.LCU.RXC      | 1,1,1,1,1,1,1,1 | car1.CCU.sys1 | car2.LCU      | RXC   |
+      | car4.LCU.CPU3      | car3.LCU.RXC      | 1,1,1,1,1,1,1,1 | car1.CCU.sys1 | car3.LCU      | RXC   |
+      | car4.LCU.CPU3      | car5.LCU.RXC      | 1,1,1,1,1,1,1,1 | car1.CCU.sys1 | car5.LCU      | RXC   |
+      | car4.LCU.CPU3      | car6.LCU.RXC      | 1,1,1,1,1,1,1,1 | car1.CCU.sys1 | car6.LCU      | RXC   |
+      | car4.LCU.CPU3      | car7.LCU.RXC      | 1,1,1,1,1,1,1,1 | car1.CCU.sys1 | car7.LCU      | RXC   |
+      | car4.LCU.CPU3      | car8.LCU.RXC      | 1,1,1,1,1,1,1,1 | car1.CCU.sys1 | car8.LCU      | RXC   |
+      | car4.LCU.MDM8      | car1.CCU.sys1.TXC | 1,1,1,3,1,1,1,1 | car1.CCU.sys2 | car1.CCU.sys1 | TXC   |
+      | car4.LCU.MDM8      | car1.CCU.sys2.TXC | 1,1,1,3,1,1,1,1 | car1.CCU.sys1 | car1.CCU.sys2 | TXC   |
+      | car4.LCU.MDM8      | car8.CCU.sys1.TXC | 1,1,1,3,1,1,1,1 | car1.CCU.sys1 | car8.CCU.sys1 | TXC   |
+      | car4.LCU.MDM8      | car8.CCU.sys2.TXC | 1,1,1,3,1,1,1,1 | car1.CCU.sys1 | car8.CCU.sys2 | TXC   |
+      | car4.LCU.MDM8      | car1.LCU.RXC      | 1,1,1,3,1,1,1,1 | car1.CCU.sys1 | car1.LCU      | RXC   |
+      | car4.LCU.MDM8      | car2.LCU.RXC      | 1,1,1,3,1,1,1,1 | car1.CCU.sys1 | car2.LCU      | RXC   |
+      | car4.LCU.MDM8      | car3.LCU.RXC      | 1,1,1,3,1,1,1,1 | car1.CCU.sys1 | car3.LCU      | RXC   |
+      | car4.LCU.MDM8      | car5.LCU.RXC      | 1,1,1,3,1,1,1,1 | car1.CCU.sys1 | car5.LCU      | RXC   |
+      | car4.LCU.MDM8      | car6.LCU.RXC      | 1,1,1,3,1,1,1,1 | car1.CCU.sys1 | car6.LCU      | RXC   |
+      | car4.LCU.MDM8      | car7.LCU.RXC      | 1,1,1,3,1,1,1,1 | car1.CCU.sys1 | car7.LCU      | RXC   |
+      | car4.LCU.MDM8      | car8.LCU.RXC      | 1,1,1,3,1,1,1,1 | car1.CCU.sys1 | car8.LCU      | RXC   |
+      | car4.LCU.MDM9      | car1.CCU.sys1     | 1,1,1,2,1,1,1,1 | car1.CCU.sys2 | car4.LCU      | MDM9  |
+      | car4.LCU.MDM9      | car1.CCU.sys2     | 1,1,1,2,1,1,1,1 | car1.CCU.sys1 | car4.LCU      | MDM9  |
+      | car4.LCU.MDM9      | car8.CCU.sys1     | 1,1,1,2,1,1,1,1 | car1.CCU.sys1 | car4.LCU      | MDM9  |
+      | car4.LCU.MDM9      | car8.CCU.sys2     | 1,1,1,2,1,1,1,1 | car1.CCU.sys1 | car4.LCU      | MDM9  |
+      | car4.LCU.MDM9      | car1.LCU          | 3,1,1,2,1,1,1,1 | car1.CCU.sys1 | car4.LCU      | MDM9  |
+      | car4.LCU.MDM9      | car2.LCU          | 1,3,1,2,1,1,1,1 | car1.CCU.sys1 | car4.LCU      | MDM9  |
+      | car4.LCU.MDM9      | car3.LCU          | 1,1,3,2,1,1,1,1 | car1.CCU.sys1 | car4.LCU      | MDM9  |
+      | car4.LCU.MDM9      | car5.LCU          | 1,1,1,2,3,1,1,1 | car1.CCU.sys1 | car4.LCU      | MDM9  |
+      | car4.LCU.MDM9      | car6.LCU          | 1,1,1,2,1,3,1,1 | car1.CCU.sys1 | car4.LCU      | MDM9  |
+      | car4.LCU.MDM9      | car7.LCU          | 1,1,1,2,1,1,3,1 | car1.CCU.sys1 | car4.LCU      | MDM9  |
+      | car4.LCU.MDM9      | car8.LCU          | 1,1,1,2,1,1,1,3 | car1.CCU.sys1 | car4.LCU      | MDM9  |
+      | car4.LCU.RXC       | car1.CCU.sys1     | 1,1,1,1,1,1,1,1 | car1.CCU.sys2 | car4.LCU      | RXC   |
+      | car4.LCU.RXC       | car1.CCU.sys2     | 1,1,1,1,1,1,1,1 | car1.CCU.sys1 | car4.LCU      | RXC   |
+      | car4.LCU.RXC       | car8.CCU.sys1     | 1,1,1,1,1,1,1,1 | car1.CCU.sys1 | car4.LCU      | RXC   |
+      | car4.LCU.RXC       | car8.CCU.sys2     | 1,1,1,1,1,1,1,1 | car1.CCU.sys1 | car4.LCU      | RXC   |
+      | car4.LCU.RXC       | car1.LCU          | 3,1,1,1,1,1,1,1 | car1.CCU.sys1 | car4.LCU      | RXC   |
+      | car4.LCU.RXC       | car2.LCU          | 1,3,1,1,1,1,1,1 | car1.CCU.sys1 | car4.LCU      | RXC   |
+      | car4.LCU.RXC       | car3.LCU          | 1,1,3,1,1,1,1,1 | car1.CCU.sys1 | car4.LCU      | RXC   |
+      | car4.LCU.RXC       | car4.LCU.RXC      | 1,1,1,1,1,1,1,1 | car1.CCU.sys1 | car4.LCU      | RXC   |
+      | car4.LCU.RXC       | car5.LCU          | 1,1,1,1,3,1,1,1 | car1.CCU.sys1 | car4.LCU      | RXC   |
+      | car4.LCU.RXC       | car6.LCU          | 1,1,1,1,1,3,1,1 | car1.CCU.sys1 | car4.LCU      | RXC   |
+      | car4.LCU.RXC       | car7.LCU          | 1,1,1,1,1,1,3,1 | car1.CCU.sys1 | car4.LCU      | RXC   |
+      | car4.LCU.RXC       | car8.LCU          | 1,1,1,1,1,1,1,3 | car1.CCU.sys1 | car4.LCU      | RXC   |
+      | car5.LCU.CPU3      | car1.CCU.sys1.TXC | 1,1,1,1,1,1,1,1 | car1.CCU.sys2 | car1.CCU.sys1 | TXC   |
+      | car5.LCU.CPU3      | car1.CCU.sys2.TXC | 1,1,1,1,1,1,1,1 | car1.CCU.sys1 | car1.CCU.sys2 | TXC   |
+      | car5.LCU.CPU3      | car8.CCU.sys1.TXC | 1,1,1,1,1,1,1,1 | car1.CCU.sys1 | car8.CCU.sys1 | TXC   |
+      | car5.LCU.CPU3      | car8.CCU.sys2.TXC | 1,1,1,1,1,1,1,1 | car1.CCU.sys1 | car8.CCU.sys2 | TXC   |
+      | car5.LCU.CPU3      | car1.LCU.RXC      | 1,1,1,1,1,1,1,1 | car1.CCU.sys1 | car1.LCU      | RXC   |
+      | car5.LCU.CPU3      | car2.LCU.RXC      | 1,1,1,1,1,1,1,1 | car1.CCU.sys1 | car2.LCU      | RXC   |
+      | car5.LCU.CPU3      | car3.LCU.RXC      | 1,1,1,1,1,1,1,1 | car1.CCU.sys1 | car3.LCU      | RXC   |
+      | car5.LCU.CPU3      | car4.LCU.RXC      | 1,1,1,1,1,1,1,1 | car1.CCU.sys1 | car4.LCU      | RXC   |
+      | car5.LCU.CPU3      | car6.LCU.RXC      | 1,1,1,1,1,1,1,1 | car1.CCU.sys1 | car6.LCU      | RXC   |
+      | car5.LCU.CPU3      | car7.LCU.RXC      | 1,1,1,1,1,1,1,1 | car1.CCU.sys1 | car7.LCU      | RXC   |
+      | car5.LCU.CPU3      | car8.LCU.RXC      | 1,1,1,1,1,1,1,1 | car1.CCU.sys1 | car8.LCU      | RXC   |
+      | car5.LCU.MDM8      | car1.CCU.sys1.TXC | 1,1,1,1,3,1,1,1 | car1.CCU.sys2 | car1.CCU.sys1 | TXC   |
+      | car5.LCU.MDM8      | car1.CCU.sys2.TXC | 1,1,1,1,3,1,1,1 | car1.CCU.sys1 | car1.CCU.sys2 | TXC   |
+      | car5.LCU.MDM8      | car8.CCU.sys1.TXC | 1,1,1,1,3,1,1,1 | car1.CCU.sys1 | car8.CCU.sys1 | TXC   |
+      | car5.LCU.MDM8      | car8.CCU.sys2.TXC | 1,1,1,1,3,1,1,1 | car1.CCU.sys1 | car8.CCU.sys2 | TXC   |
+      | car5.LCU.MDM8      | car1.LCU.RXC      | 1,1,1,1,3,1,1,1 | car1.CCU.sys1 | car1.LCU      | RXC   |
+      | car5.LCU.MDM8      | car2.LCU.RXC      | 1,1,1,1,3,1,1,1 | car1.CCU.sys1 | car2.LCU      | RXC   |
+      | car5.LCU.MDM8      | car3.LCU.RXC      | 1,1,1,1,3,1,1,1 | car1.CCU.sys1 | car3.LCU      | RXC   |
+      | car5.LCU.MDM8      | car4.LCU.RXC      | 1,1,1,1,3,1,1,1 | car1.CCU.sys1 | car4.LCU      | RXC   |
+      | car5.LCU.MDM8      | car6.LCU.RXC      | 1,1,1,1,3,1,1,1 | car1.CCU.sys1 | car6.LCU      | RXC   |
+      | car5.LCU.MDM8      | car7.LCU.RXC      | 1,1,1,1,3,1,1,1 | car1.CCU.sys1 | car7.LCU      | RXC   |
+      | car5.LCU.MDM8      | car8.LCU.RXC      | 1,1,1,1,3,1,1,1 | car1.CCU.sys1 | car8.LCU      | RXC   |
+      | car5.LCU.MDM9      | car1.CCU.sys1     | 1,1,1,1,2,1,1,1 | car1.CCU.sys2 | car5.LCU      | MDM9  |
+      | car5.LCU.MDM9      | car1.CCU.sys2     | 1,1,1,1,2,1,1,1 | car1.CCU.sys1 | car5.LCU      | MDM9  |
+      | car5.LCU.MDM9      | car8.CCU.sys1     | 1,1,1,1,2,1,1,1 | car1.CCU.sys1 | car5.LCU      | MDM9  |
+      | car5.LCU.MDM9      | car8.CCU.sys2     | 1,1,1,1,2,1,1,1 | car1.CCU.sys1 | car5.LCU      | MDM9  |
+      | car5.LCU.MDM9      | car1.LCU          | 3,1,1,1,2,1,1,1 | car1.CCU.sys1 | car5.LCU      | MDM9  |
+      | car5.LCU.MDM9      | car2.LCU          | 1,3,1,1,2,1,1,1 | car1.CCU.sys1 | car5.LCU      | MDM9  |
+      | car5.LCU.MDM9      | car3.LCU          | 1,1,3,1,2,1,1,1 | car1.CCU.sys1 | car5.LCU      | MDM9  |
+      | car5.LCU.MDM9      | car4.LCU          | 1,1,1,3,2,1,1,1 | car1.CCU.sys1 | car5.LCU      | MDM9  |
+      | car5.LCU.MDM9      | car6.LCU          | 1,1,1,1,2,3,1,1 | car1.CCU.sys1 | car5.LCU      | MDM9  |
+      | car5.LCU.MDM9      | car7.LCU          | 1,1,1,1,2,1,3,1 | car1.CCU.sys1 | car5.LCU      | MDM9  |
+      | car5.LCU.MDM9      | car8.LCU          | 1,1,1,1,2,1,1,3 | car1.CCU.sys1 | car5.LCU      | MDM9  |
+      | car5.LCU.RXC       | car1.CCU.sys1     | 1,1,1,1,1,1,1,1 | car1.CCU.sys2 | car5.LCU      | RXC   |
+      | car5.LCU.RXC       | car1.CCU.sys2     | 1,1,1,1,1,1,1,1 | car1.CCU.sys1 | car5.LCU      | RXC   |
+      | car5.LCU.RXC       | car8.CCU.sys1     | 1,1,1,1,1,1,1,1 | car1.CCU.sys1 | car5.LCU      | RXC   |
+      | car5.LCU.RXC       | car8.CCU.sys2     | 1,1,1,1,1,1,1,1 | car1.CCU.sys1 | car5.LCU      | RXC   |
+      | car5.LCU.RXC       | car1.LCU          | 3,1,1,1,1,1,1,1 | car1.CCU.sys1 | car5.LCU      | RXC   |
+      | car5.LCU.RXC       | car2.LCU          | 1,3,1,1,1,1,1,1 | car1.CCU.sys1 | car5.LCU      | RXC   |
+      | car5.LCU.RXC       | car3.LCU          | 1,1,3,1,1,1,1,1 | car1.CCU.sys1 | car5.LCU      | RXC   |
+      | car5.LCU.RXC       | car4.LCU          | 1,1,1,3,1,1,1,1 | car1.CCU.sys1 | car5.LCU      | RXC   |
+      | car5.LCU.RXC       | car5.LCU.RXC      | 1,1,1,1,1,1,1,1 | car1.CCU.sys1 | car5.LCU      | RXC   |
+      | car5.LCU.RXC       | car6.LCU          | 1,1,1,1,1,3,1,1 | car1.CCU.sys1 | car5.LCU      | RXC   |
+      | car5.LCU.RXC       | car7.LCU          | 1,1,1,1,1,1,3,1 | car1.CCU.sys1 | car5.LCU      | RXC   |
+      | car5.LCU.RXC       | car8.LCU          | 1,1,1,1,1,1,1,3 | car1.CCU.sys1 | car5.LCU      | RXC   |
+      | car6.LCU.CPU3      | car1.CCU.sys1.TXC | 1,1,1,1,1,1,1,1 | car1.CCU.sys2 | car1.CCU.sys1 | TXC   |
+      | car6.LCU.CPU3      | car1.CCU.sys2.TXC | 1,1,1,1,1,1,1,1 | car1.CCU.sys1 | car1.CCU.sys2 | TXC   |
+      | car6.LCU.CPU3      | car8.CCU.sys1.TXC | 1,1,1,1,1,1,1,1 | car1.CCU.sys1 | car8.CCU.sys1 | TXC   |
+      | car6.LCU.CPU3      | car8.CCU.sys2.TXC | 1,1,1,1,1,1,1,1 | car1.CCU.sys1 | car8.CCU.sys2 | TXC   |
+      | car6.LCU.CPU3      | car1.LCU.RXC      | 1,1,1,1,1,1,1,1 | car1.CCU.sys1 | car1.LCU      | RXC   |
+      | car6.LCU.CPU3      | car2.LCU.RXC      | 1,1,1,1,1,1,1,1 | car1.CCU.sys1 | car2.LCU      | RXC   |
+      | car6.LCU.CPU3      | car3.LCU.RXC      | 1,1,1,1,1,1,1,1 | car1.CCU.sys1 | car3.LCU      | RXC   |
+      | car6.LCU.CPU3      | car4.LCU.RXC      | 1,1,1,1,1,1,1,1 | car1.CCU.sys1 | car4.LCU      | RXC   |
+      | car6.LCU.CPU3      | car5.LCU.RXC      | 1,1,1,1,1,1,1,1 | car1.CCU.sys1 | car5.LCU      | RXC   |
+      | car6.LCU.CPU3      | car7.LCU.RXC      | 1,1,1,1,1,1,1,1 | car1.CCU.sys1 | car7.LCU      | RXC   |
+      | car6.LCU.CPU3      | car8.LCU.RXC      | 1,1,1,1,1,1,1,1 | car1.CCU.sys1 | car8.LCU      | RXC   |
+      | car6.LCU.MDM8      | car1.CCU.sys1.TXC | 1,1,1,1,1,3,1,1 | car1.CCU.sys2 | car1.CCU.sys1 | TXC   |
+      | car6.LCU.MDM8      | car1.CCU.sys2.TXC | 1,1,1,1,1,3,1,1 | car1.CCU.sys1 | car1.CCU.sys2 | TXC   |
+      | car6.LCU.MDM8      | car8.CCU.sys1.TXC | 1,1,1,1,1,3,1,1 | car1.CCU.sys1 | car8.CCU.sys1 | TXC   |
+      | car6.LCU.MDM8      | car8.CCU.sys2.TXC | 1,1,1,1,1,3,1,1 | car1.CCU.sys1 | car8.CCU.sys2 | TXC   |
+      | car6.LCU.MDM8      | car1.LCU.RXC      | 1,1,1,1,1,3,1,1 | car1.CCU.sys1 | car1.LCU      | RXC   |
+      | car6.LCU.MDM8      | car2.LCU.RXC      | 1,1,1,1,1,3,1,1 | car1.CCU.sys1 | car2.LCU      | RXC   |
+      | car6.LCU.MDM8      | car3.LCU.RXC      | 1,1,1,1,1,3,1,1 | car1.CCU.sys1 | car3.LCU      | RXC   |
+      | car6.LCU.MDM8      | car4.LCU.RXC      | 1,1,1,1,1,3,1,1 | car1.CCU.sys1 | car4.LCU      | RXC   |
+      | car6.LCU.MDM8      | car5.LCU.RXC      | 1,1,1,1,1,3,1,1 | car1.CCU.sys1 | car5.LCU      | RXC   |
+      | car6.LCU.MDM8      | car7.LCU.RXC      | 1,1,1,1,1,3,1,1 | car1.CCU.sys1 | car7.LCU      | RXC   |
+      | car6.LCU.MDM8      | car8.LCU.RXC      | 1,1,1,1,1,3,1,1 | car1.CCU.sys1 | car8.LCU      | RXC   |
+      | car6.LCU.MDM9      | car1.CCU.sys1     | 1,1,1,1,1,2,1,1 | car1.CCU.sys2 | car6.LCU      | MDM9  |
+      | car6.LCU.MDM9      | car1.CCU.sys2     | 1,1,1,1,1,2,1,1 | car1.CCU.sys1 | car6.LCU      | MDM9  |
+      | car6.LCU.MDM9      | car8.CCU.sys1     | 1,1,1,1,1,2,1,1 | car1.CCU.sys1 | car6.LCU      | MDM9  |
+      | car6.LCU.MDM9      | car8.CCU.sys2     | 1,1,1,1,1,2,1,1 | car1.CCU.sys1 | car6.LCU      | MDM9  |
+      | car6.LCU.MDM9      | car1.LCU          | 3,1,1,1,1,2,1,1 | car1.CCU.sys1 | car6.LCU      | MDM9  |
+      | car6.LCU.MDM9      | car2.LCU          | 1,3,1,1,1,2,1,1 | car1.CCU.sys1 | car6.LCU      | MDM9  |
+      | car6.LCU.MDM9      | car3.LCU          | 1,1,3,1,1,2,1,1 | car1.CCU.sys1 | car6.LCU      | MDM9  |
+      | car6.LCU.MDM9      | car4.LCU          | 1,1,1,3,1,2,1,1 | car1.CCU.sys1 | car6.LCU      | MDM9  |
+      | car6.LCU.MDM9      | car5.LCU          | 1,1,1,1,3,2,1,1 | car1.CCU.sys1 | car6.LCU      | MDM9  |
+      | car6.LCU.MDM9      | car7.LCU          | 1,1,1,1,1,2,3,1 | car1.CCU.sys1 | car6.LCU      | MDM9  |
+      | car6.LCU.MDM9      | car8.LCU          | 1,1,1,1,1,2,1,3 | car1.CCU.sys1 | car6.LCU      | MDM9  |
+      | car6.LCU.RXC       | car1.CCU.sys1     | 1,1,1,1,1,1,1,1 | car1.CCU.sys2 | car6.LCU      | RXC   |
+      | car6.LCU.RXC       | car1.CCU.sys2     | 1,1,1,1,1,1,1,1 | car1.CCU.sys1 | car6.LCU      | RXC   |
+      | car6.LCU.RXC       | car8.CCU.sys1     | 1,1,1,1,1,1,1,1 | car1.CCU.sys1 | car6.LCU      | RXC   |
+      | car6.LCU.RXC       | car8.CCU.sys2     | 1,1,1,1,1,1,1,1 | car1.CCU.sys1 | car6.LCU      | RXC   |
+      | car6.LCU.RXC       | car1.LCU          | 3,1,1,1,1,1,1,1 | car1.CCU.sys1 | car6.LCU      | RXC   |
+      | car6.LCU.RXC       | car2.LCU          | 1,3,1,1,1,1,1,1 | car1.CCU.sys1 | car6.LCU      | RXC   |
+      | car6.LCU.RXC       | car3.LCU          | 1,1,3,1,1,1,1,1 | car1.CCU.sys1 | car6.LCU      | RXC   |
+      | car6.LCU.RXC       | car4.LCU          | 1,1,1,3,1,1,1,1 | car1.CCU.sys1 | car6.LCU      | RXC   |
+      | car6.LCU.RXC       | car5.LCU          | 1,1,1,1,3,1,1,1 | car1.CCU.sys1 | car6.LCU      | RXC   |
+      | car6.LCU.RXC       | car6.LCU.RXC      | 1,1,1,1,1,1,1,1 | car1.CCU.sys1 | car6.LCU      | RXC   |
+      | car6.LCU.RXC       | car7.LCU          | 1,1,1,1,1,1,3,1 | car1.CCU.sys1 | car6.LCU      | RXC   |
+      | car6.LCU.RXC       | car8.LCU          | 1,1,1,1,1,1,1,3 | car1.CCU.sys1 | car6.LCU      | RXC   |
+      | car7.LCU.CPU3      | car1.CCU.sys1.TXC | 1,1,1,1,1,1,1,1 | car1.CCU.sys2 | car1.CCU.sys1 | TXC   |
+      | car7.LCU.CPU3      | car1.CCU.sys2.TXC | 1,1,1,1,1,1,1,1 | car1.CCU.sys1 | car1.CCU.sys2 | TXC   |
+      | car7.LCU.CPU3      | car8.CCU.sys1.TXC | 1,1,1,1,1,1,1,1 | car1.CCU.sys1 | car8.CCU.sys1 | TXC   |
+      | car7.LCU.CPU3      | car8.CCU.sys2.TXC | 1,1,1,1,1,1,1,1 | car1.CCU.sys1 | car8.CCU.sys2 | TXC   |
+      | car7.LCU.CPU3      | car1.LCU.RXC      | 1,1,1,1,1,1,1,1 | car1.CCU.sys1 | car1.LCU      | RXC   |
+      | car7.LCU.CPU3      | car2.LCU.RXC      | 1,1,1,1,1,1,1,1 | car1.CCU.sys1 | car2.LCU      | RXC   |
+      | car7.LCU.CPU3      | car3.LCU.RXC      | 1,1,1,1,1,1,1,1 | car1.CCU.sys1 | car3.LCU      | RXC   |
+      | car7.LCU.CPU3      | car4.LCU.RXC      | 1,1,1,1,1,1,1,1 | car1.CCU.sys1 | car4.LCU      | RXC   |
+      | car7.LCU.CPU3      | car5.LCU.RXC      | 1,1,1,1,1,1,1,1 | car1.CCU.sys1 | car5.LCU      | RXC   |
+      | car7.LCU.CPU3      | car6.LCU.RXC      | 1,1,1,1,1,1,1,1 | car1.CCU.sys1 | car6.LCU      | RXC   |
+      | car7.LCU.CPU3      | car8.LCU.RXC      | 1,1,1,1,1,1,1,1 | car1.CCU.sys1 | car8.LCU      | RXC   |
+      | car7.LCU.MDM8      | car1.CCU.sys1.TXC | 1,1,1,1,1,1,3,1 | car1.CCU.sys2 | car1.CCU.sys1 | TXC   |
+      | car7.LCU.MDM8      | car1.CCU.sys2.TXC | 1,1,1,1,1,1,3,1 | car1.CCU.sys1 | car1.CCU.sys2 | TXC   |
+      | car7.LCU.MDM8      | car8.CCU.sys1.TXC | 1,1,1,1,1,1,3,1 | car1.CCU.sys1 | car8.CCU.sys1 | TXC   |
+      | car7.LCU.MDM8      | car8.CCU.sys2.TXC | 1,1,1,1,1,1,3,1 | car1.CCU.sys1 | car8.CCU.sys2 | TXC   |
+      | car7.LCU.MDM8      | car1.LCU.RXC      | 1,1,1,1,1,1,3,1 | car1.CCU.sys1 | car1.LCU      | RXC   |
+      | car7.LCU.MDM8      | car2.LCU.RXC      | 1,1,1,1,1,1,3,1 | car1.CCU.sys1 | car2.LCU      | RXC   |
+      | car7.LCU.MDM8      | car3.LCU.RXC      | 1,1,1,1,1,1,3,1 | car1.CCU.sys1 | car3.LCU      | RXC   |
+      | car7.LCU.MDM8      | car4.LCU.RXC      | 1,1,1,1,1,1,3,1 | car1.CCU.sys1 | car4.LCU      | RXC   |
+      | car7.LCU.MDM8      | car5.LCU.RXC      | 1,1,1,1,1,1,3,1 | car1.CCU.sys1 | car5.LCU      | RXC   |
+      | car7.LCU.MDM8      | car6.LCU.RXC      | 1,1,1,1,1,1,3,1 | car1.CCU.sys1 | car6.LCU      | RXC   |
+      | car7.LCU.MDM8      | car8.LCU.RXC      | 1,1,1,1,1,1,3,1 | car1.CCU.sys1 | car8.LCU      | RXC   |
+      | car7.LCU.MDM9      | car1.CCU.sys1     | 1,1,1,1,1,1,2,1 | car1.CCU.sys2 | car7.LCU      | MDM9  |
+      | car7.LCU.MDM9      | car1.CCU.sys2     | 1,1,1,1,1,1,2,1 | car1.CCU.sys1 | car7.LCU      | MDM9  |
+      | car7.LCU.MDM9      | car8.CCU.sys1     | 1,1,1,1,1,1,2,1 | car1.CCU.sys1 | car7.LCU      | MDM9  |
+      | car7.LCU.MDM9      | car8.CCU.sys2     | 1,1,1,1,1,1,2,1 | car1.CCU.sys1 | car7.LCU      | MDM9  |
+      | car7.LCU.MDM9      | car1.LCU          | 3,1,1,1,1,1,2,1 | car1.CCU.sys1 | car7.LCU      | MDM9  |
+      | car7.LCU.MDM9      | car2.LCU          | 1,3,1,1,1,1,2,1 | car1.CCU.sys1 | car7.LCU      | MDM9  |
+      | car7.LCU.MDM9      | car3.LCU          | 1,1,3,1,1,1,2,1 | car1.CCU.sys1 | car7.LCU      | MDM9  |
+      | car7.LCU.MDM9      | car4.LCU          | 1,1,1,3,1,1,2,1 | car1.CCU.sys1 | car7.LCU      | MDM9  |
+      | car7.LCU.MDM9      | car5.LCU          | 1,1,1,1,3,1,2,1 | car1.CCU.sys1 | car7.LCU      | MDM9  |
+      | car7.LCU.MDM9      | car6.LCU          | 1,1,1,1,1,3,2,1 | car1.CCU.sys1 | car7.LCU      | MDM9  |
+      | car7.LCU.MDM9      | car8.LCU          | 1,1,1,1,1,1,2,3 | car1.CCU.sys1 | car7.LCU      | MDM9  |
+      | car7.LCU.RXC       | car1.CCU.sys1     | 1,1,1,1,1,1,1,1 | car1.CCU.sys2 | car7.LCU      | RXC   |
+      | car7.LCU.RXC       | car1.CCU.sys2     | 1,1,1,1,1,1,1,1 | car1.CCU.sys1 | car7.LCU      | RXC   |
+      | car7.LCU.RXC       | car8.CCU.sys1     | 1,1,1,1,1,1,1,1 | car1.CCU.sys1 | car7.LCU      | RXC   |
+      | car7.LCU.RXC       | car8.CCU.sys2     | 1,1,1,1,1,1,1,1 | car1.CCU.sys1 | car7.LCU      | RXC   |
+      | car7.LCU.RXC       | car1.LCU          | 3,1,1,1,1,1,1,1 | car1.CCU.sys1 | car7.LCU      | RXC   |
+      | car7.LCU.RXC       | car2.LCU          | 1,3,1,1,1,1,1,1 | car1.CCU.sys1 | car7.LCU      | RXC   |
+      | car7.LCU.RXC       | car3.LCU          | 1,1,3,1,1,1,1,1 | car1.CCU.sys1 | car7.LCU      | RXC   |
+      | car7.LCU.RXC       | car4.LCU          | 1,1,1,3,1,1,1,1 | car1.CCU.sys1 | car7.LCU      | RXC   |
+      | car7.LCU.RXC       | car5.LCU          | 1,1,1,1,3,1,1,1 | car1.CCU.sys1 | car7.LCU      | RXC   |
+      | car7.LCU.RXC       | car6.LCU          | 1,1,1,1,1,3,1,1 | car1.CCU.sys1 | car7.LCU      | RXC   |
+      | car7.LCU.RXC       | car7.LCU.RXC      | 1,1,1,1,1,1,1,1 | car1.CCU.sys1 | car7.LCU      | RXC   |
+      | car7.LCU.RXC       | car8.LCU          | 1,1,1,1,1,1,1,3 | car1.CCU.sys1 | car7.LCU      | RXC   |
+      | car8.LCU.CPU3      | car1.CCU.sys1.TXC | 1,1,1,1,1,1,1,1 | car1.CCU.sys2 | car1.CCU.sys1 | TXC   |
+      | car8.LCU.CPU3      | car1.CCU.sys2.TXC | 1,1,1,1,1,1,1,1 | car1.CCU.sys1 | car1.CCU.sys2 | TXC   |
+      | car8.LCU.CPU3      | car8.CCU.sys1.TXC | 1,1,1,1,1,1,1,1 | car1.CCU.sys1 | car8.CCU.sys1 | TXC   |
+      | car8.LCU.CPU3      | car8.CCU.sys2.TXC | 1,1,1,1,1,1,1,1 | car1.CCU.sys1 | car8.CCU.sys2 | TXC   |
+      | car8.LCU.CPU3      | car1.LCU.RXC      | 1,1,1,1,1,1,1,1 | car1.CCU.sys1 | car1.LCU      | RXC   |
+      | car8.LCU.CPU3      | car2.LCU.RXC      | 1,1,1,1,1,1,1,1 | car1.CCU.sys1 | car2.LCU      | RXC   |
+      | car8.LCU.CPU3      | car3.LCU.RXC      | 1,1,1,1,1,1,1,1 | car1.CCU.sys1 | car3.LCU      | RXC   |
+      | car8.LCU.CPU3      | car4.LCU.RXC      | 1,1,1,1,1,1,1,1 | car1.CCU.sys1 | car4.LCU      | RXC   |
+      | car8.LCU.CPU3      | car5.LCU.RXC      | 1,1,1,1,1,1,1,1 | car1.CCU.sys1 | car5.LCU      | RXC   |
+      | car8.LCU.CPU3      | car6.LCU.RXC      | 1,1,1,1,1,1,1,1 | car1.CCU.sys1 | car6.LCU      | RXC   |
+      | car8.LCU.CPU3      | car7.LCU.RXC      | 1,1,1,1,1,1,1,1 | car1.CCU.sys1 | car7.LCU      | RXC   |
+      | car8.LCU.MDM8      | car1.CCU.sys1.TXC | 1,1,1,1,1,1,1,3 | car1.CCU.sys2 | car1.CCU.sys1 | TXC   |
+      | car8.LCU.MDM8      | car1.CCU.sys2.TXC | 1,1,1,1,1,1,1,3 | car1.CCU.sys1 | car1.CCU.sys2 | TXC   |
+      | car8.LCU.MDM8      | car8.CCU.sys1.TXC | 1,1,1,1,1,1,1,3 | car1.CCU.sys1 | car8.CCU.sys1 | TXC   |
+      | car8.LCU.MDM8      | car8.CCU.sys2.TXC | 1,1,1,1,1,1,1,3 | car1.CCU.sys1 | car8.CCU.sys2 | TXC   |
+      | car8.LCU.MDM8      | car1.LCU.RXC      | 1,1,1,1,1,1,1,3 | car1.CCU.sys1 | car1.LCU      | RXC   |
+      | car8.LCU.MDM8      | car2.LCU.RXC      | 1,1,1,1,1,1,1,3 | car1.CCU.sys1 | car2.LCU      | RXC   |
+      | car8.LCU.MDM8      | car3.LCU.RXC      | 1,1,1,1,1,1,1,3 | car1.CCU.sys1 | car3.LCU      | RXC   |
+      | car8.LCU.MDM8      | car4.LCU.RXC      | 1,1,1,1,1,1,1,3 | car1.CCU.sys1 | car4.LCU      | RXC   |
+      | car8.LCU.MDM8      | car5.LCU.RXC      | 1,1,1,1,1,1,1,3 | car1.CCU.sys1 | car5.LCU      | RXC   |
+      | car8.LCU.MDM8      | car6.LCU.RXC      | 1,1,1,1,1,1,1,3 | car1.CCU.sys1 | car6.LCU      | RXC   |
+      | car8.LCU.MDM8      | car7.LCU.RXC      | 1,1,1,1,1,1,1,3 | car1.CCU.sys1 | car7.LCU      | RXC   |
+      | car8.LCU.MDM9      | car1.CCU.sys1     | 1,1,1,1,1,1,1,2 | car1.CCU.sys2 | car8.LCU      | MDM9  |
+      | car8.LCU.MDM9      | car1.CCU.sys2     | 1,1,1,1,1,1,1,2 | car1.CCU.sys1 | car8.LCU      | MDM9  |
+      | car8.LCU.MDM9      | car8.CCU.sys1     | 1,1,1,1,1,1,1,2 | car1.CCU.sys1 | car8.LCU      | MDM9  |
+      | car8.LCU.MDM9      | car8.CCU.sys2     | 1,1,1,1,1,1,1,2 | car1.CCU.sys1 | car8.LCU      | MDM9  |
+      | car8.LCU.MDM9      | car1.LCU          | 3,1,1,1,1,1,1,2 | car1.CCU.sys1 | car8.LCU      | MDM9  |
+      | car8.LCU.MDM9      | car2.LCU          | 1,3,1,1,1,1,1,2 | car1.CCU.sys1 | car8.LCU      | MDM9  |
+      | car8.LCU.MDM9      | car3.LCU          | 1,1,3,1,1,1,1,2 | car1.CCU.sys1 | car8.LCU      | MDM9  |
+      | car8.LCU.MDM9      | car4.LCU          | 1,1,1,3,1,1,1,2 | car1.CCU.sys1 | car8.LCU      | MDM9  |
+      | car8.LCU.MDM9      | car5.LCU          | 1,1,1,1,3,1,1,2 | car1.CCU.sys1 | car8.LCU      | MDM9  |
+      | car8.LCU.MDM9      | car6.LCU          | 1,1,1,1,1,3,1,2 | car1.CCU.sys1 | car8.LCU      | MDM9  |
+      | car8.LCU.MDM9      | car7.LCU          | 1,1,1,1,1,1,3,2 | car1.CCU.sys1 | car8.LCU      | MDM9  |
+      | car8.LCU.RXC       | car1.CCU.sys1     | 1,1,1,1,1,1,1,1 | car1.CCU.sys2 | car8.LCU      | RXC   |
+      | car8.LCU.RXC       | car1.CCU.sys2     | 1,1,1,1,1,1,1,1 | car1.CCU.sys1 | car8.LCU      | RXC   |
+      | car8.LCU.RXC       | car8.CCU.sys1     | 1,1,1,1,1,1,1,1 | car1.CCU.sys1 | car8.LCU      | RXC   |
+      | car8.LCU.RXC       | car8.CCU.sys2     | 1,1,1,1,1,1,1,1 | car1.CCU.sys1 | car8.LCU      | RXC   |
+      | car8.LCU.RXC       | car1.LCU          | 3,1,1,1,1,1,1,1 | car1.CCU.sys1 | car8.LCU      | RXC   |
+      | car8.LCU.RXC       | car2.LCU          | 1,3,1,1,1,1,1,1 | car1.CCU.sys1 | car8.LCU      | RXC   |
+      | car8.LCU.RXC       | car3.LCU          | 1,1,3,1,1,1,1,1 | car1.CCU.sys1 | car8.LCU      | RXC   |
+      | car8.LCU.RXC       | car4.LCU          | 1,1,1,3,1,1,1,1 | car1.CCU.sys1 | car8.LCU      | RXC   |
+      | car8.LCU.RXC       | car5.LCU          | 1,1,1,1,3,1,1,1 | car1.CCU.sys1 | car8.LCU      | RXC   |
+      | car8.LCU.RXC       | car6.LCU          | 1,1,1,1,1,3,1,1 | car1.CCU.sys1 | car8.LCU      | RXC   |
+      | car8.LCU.RXC       | car7.LCU          | 1,1,1,1,1,1,3,1 | car1.CCU.sys1 | car8.LCU      | RXC   |
+      | car8.LCU.RXC       | car8.LCU.RXC      | 1,1,1,1,1,1,1,1 | car1.CCU.sys1 | car8.LCU      | RXC   |
+      | car8.CCU.sys2.CPU3 | car1.CCU.sys1.TXC | 1,1,1,1,1,1,1,1 | car1.CCU.sys2 | car1.CCU.sys1 | TXC   |
+      | car8.CCU.sys2.CPU3 | car1.CCU.sys2.TXC | 1,1,1,1,1,1,1,1 | car1.CCU.sys1 | car1.CCU.sys2 | TXC   |
+      | car8.CCU.sys2.CPU3 | car8.CCU.sys1.TXC | 1,1,1,1,1,1,1,1 | car1.CCU.sys1 | car8.CCU.sys1 | TXC   |
+      | car8.CCU.sys2.CPU3 | car1.LCU.RXC      | 1,1,1,1,1,1,1,1 | car1.CCU.sys1 | car1.LCU      | RXC   |
+      | car8.CCU.sys2.CPU3 | car2.LCU.RXC      | 1,1,1,1,1,1,1,1 | car1.CCU.sys1 | car2.LCU      | RXC   |
+      | car8.CCU.sys2.CPU3 | car3.LCU.RXC      | 1,1,1,1,1,1,1,1 | car1.CCU.sys1 | car3.LCU      | RXC   |
+      | car8.CCU.sys2.CPU3 | car4.LCU.RXC      | 1,1,1,1,1,1,1,1 | car1.CCU.sys1 | car4.LCU      | RXC   |
+      | car8.CCU.sys2.CPU3 | car5.LCU.RXC      | 1,1,1,1,1,1,1,1 | car1.CCU.sys1 | car5.LCU      | RXC   |
+      | car8.CCU.sys2.CPU3 | car6.LCU.RXC      | 1,1,1,1,1,1,1,1 | car1.CCU.sys1 | car6.LCU      | RXC   |
+      | car8.CCU.sys2.CPU3 | car7.LCU.RXC      | 1,1,1,1,1,1,1,1 | car1.CCU.sys1 | car7.LCU      | RXC   |
+      | car8.CCU.sys2.CPU3 | car8.LCU.RXC      | 1,1,1,1,1,1,1,1 | car1.CCU.sys1 | car8.LCU      | RXC   |
+      | car8.CCU.sys2.MDM8 | car1.CCU.sys1.TXC | 1,1,1,1,1,1,1,1 | car1.CCU.sys2 | car1.CCU.sys1 | TXC   |
+      | car8.CCU.sys2.MDM8 | car1.CCU.sys2.TXC | 1,1,1,1,1,1,1,1 | car1.CCU.sys1 | car1.CCU.sys2 | TXC   |
+      | car8.CCU.sys2.MDM8 | car8.CCU.sys1.TXC | 1,1,1,1,1,1,1,1 | car1.CCU.sys1 | car8.CCU.sys1 | TXC   |
+      | car8.CCU.sys2.MDM8 | car1.LCU.RXC      | 1,1,1,1,1,1,1,1 | car1.CCU.sys1 | car1.LCU      | RXC   |
+      | car8.CCU.sys2.MDM8 | car2.LCU.RXC      | 1,1,1,1,1,1,1,1 | car1.CCU.sys1 | car2.LCU      | RXC   |
+      | car8.CCU.sys2.MDM8 | car3.LCU.RXC      | 1,1,1,1,1,1,1,1 | car1.CCU.sys1 | car3.LCU      | RXC   |
+      | car8.CCU.sys2.MDM8 | car4.LCU.RXC      | 1,1,1,1,1,1,1,1 | car1.CCU.sys1 | car4.LCU      | RXC   |
+      | car8.CCU.sys2.MDM8 | car5.LCU.RXC      | 1,1,1,1,1,1,1,1 | car1.CCU.sys1 | car5.LCU      | RXC   |
+      | car8.CCU.sys2.MDM8 | car6.LCU.RXC      | 1,1,1,1,1,1,1,1 | car1.CCU.sys1 | car6.LCU      | RXC   |
+      | car8.CCU.sys2.MDM8 | car7.LCU.RXC      | 1,1,1,1,1,1,1,1 | car1.CCU.sys1 | car7.LCU      | RXC   |
+      | car8.CCU.sys2.MDM8 | car8.LCU.RXC      | 1,1,1,1,1,1,1,1 | car1.CCU.sys1 | car8.LCU      | RXC   |
+      | car8.CCU.sys2.TXC  | car1.CCU.sys1     | 1,1,1,1,1,1,1,1 | car1.CCU.sys2 | car8.CCU.sys2 | TXC   |
+      | car8.CCU.sys2.TXC  | car1.CCU.sys2     | 1,1,1,1,1,1,1,1 | car1.CCU.sys1 | car8.CCU.sys2 | TXC   |
+      | car8.CCU.sys2.TXC  | car8.CCU.sys1     | 1,1,1,1,1,1,1,1 | car1.CCU.sys1 | car8.CCU.sys2 | TXC   |
+      | car8.CCU.sys2.TXC  | car8.CCU.sys2.TXC | 1,1,1,1,1,1,1,1 | car1.CCU.sys1 | car8.CCU.sys2 | TXC   |
+      | car8.CCU.sys2.TXC  | car1.LCU          | 3,1,1,1,1,1,1,1 | car1.CCU.sys1 | car8.CCU.sys2 | TXC   |
+      | car8.CCU.sys2.TXC  | car2.LCU          | 1,3,1,1,1,1,1,1 | car1.CCU.sys1 | car8.CCU.sys2 | TXC   |
+      | car8.CCU.sys2.TXC  | car3.LCU          | 1,1,3,1,1,1,1,1 | car1.CCU.sys1 | car8.CCU.sys2 | TXC   |
+      | car8.CCU.sys2.TXC  | car4.LCU          | 1,1,1,3,1,1,1,1 | car1.CCU.sys1 | car8.CCU.sys2 | TXC   |
+      | car8.CCU.sys2.TXC  | car5.LCU          | 1,1,1,1,3,1,1,1 | car1.CCU.sys1 | car8.CCU.sys2 | TXC   |
+      | car8.CCU.sys2.TXC  | car6.LCU          | 1,1,1,1,1,3,1,1 | car1.CCU.sys1 | car8.CCU.sys2 | TXC   |
+      | car8.CCU.sys2.TXC  | car7.LCU          | 1,1,1,1,1,1,3,1 | car1.CCU.sys1 | car8.CCU.sys2 | TXC   |
+      | car8.CCU.sys2.TXC  | car8.LCU          | 1,1,1,1,1,1,1,3 | car1.CCU.sys1 | car8.CCU.sys2 | TXC   |
+      | car8.CCU.sys1.CPU3 | car1.CCU.sys1.TXC | 1,1,1,1,1,1,1,1 | car1.CCU.sys2 | car1.CCU.sys1 | TXC   |
+      | car8.CCU.sys1.CPU3 | car1.CCU.sys2.TXC | 1,1,1,1,1,1,1,1 | car1.CCU.sys1 | car1.CCU.sys2 | TXC   |
+      | car8.CCU.sys1.CPU3 | car8.CCU.sys2.TXC | 1,1,1,1,1,1,1,1 | car1.CCU.sys1 | car8.CCU.sys2 | TXC   |
+      | car8.CCU.sys1.CPU3 | car1.LCU.RXC      | 1,1,1,1,1,1,1,1 | car1.CCU.sys1 | car1.LCU      | RXC   |
+      | car8.CCU.sys1.CPU3 | car2.LCU.RXC      | 1,1,1,1,1,1,1,1 | car1.CCU.sys1 | car2.LCU      | RXC   |
+      | car8.CCU.sys1.CPU3 | car3.LCU.RXC      | 1,1,1,1,1,1,1,1 | car1.CCU.sys1 | car3.LCU      | RXC   |
+      | car8.CCU.sys1.CPU3 | car4.LCU.RXC      | 1,1,1,1,1,1,1,1 | car1.CCU.sys1 | car4.LCU      | RXC   |
+      | car8.CCU.sys1.CPU3 | car5.LCU.RXC      | 1,1,1,1,1,1,1,1 | car1.CCU.sys1 | car5.LCU      | RXC   |
+      | car8.CCU.sys1.CPU3 | car6.LCU.RXC      | 1,1,1,1,1,1,1,1 | car1.CCU.sys1 | car6.LCU      | RXC   |
+      | car8.CCU.sys1.CPU3 | car7.LCU.RXC      | 1,1,1,1,1,1,1,1 | car1.CCU.sys1 | car7.LCU      | RXC   |
+      | car8.CCU.sys1.CPU3 | car8.LCU.RXC      | 1,1,1,1,1,1,1,1 | car1.CCU.sys1 | car8.LCU      | RXC   |
+      | car8.CCU.sys1.MDM8 | car1.CCU.sys1.TXC | 1,1,1,1,1,1,1,1 | car1.CCU.sys2 | car1.CCU.sys1 | TXC   |
+      | car8.CCU.sys1.MDM8 | car1.CCU.sys2.TXC | 1,1,1,1,1,1,1,1 | car1.CCU.sys1 | car1.CCU.sys2 | TXC   |
+      | car8.CCU.sys1.MDM8 | car8.CCU.sys2.TXC | 1,1,1,1,1,1,1,1 | car1.CCU.sys1 | car8.CCU.sys2 | TXC   |
+      | car8.CCU.sys1.MDM8 | car1.LCU.RXC      | 1,1,1,1,1,1,1,1 | car1.CCU.sys1 | car1.LCU      | RXC   |
+      | car8.CCU.sys1.MDM8 | car2.LCU.RXC      | 1,1,1,1,1,1,1,1 | car1.CCU.sys1 | car2.LCU      | RXC   |
+      | car8.CCU.sys1.MDM8 | car3.LCU.RXC      | 1,1,1,1,1,1,1,1 | car1.CCU.sys1 | car3.LCU      | RXC   |
+      | car8.CCU.sys1.MDM8 | car4.LCU.RXC      | 1,1,1,1,1,1,1,1 | car1.CCU.sys1 | car4.LCU      | RXC   |
+      | car8.CCU.sys1.MDM8 | car5.LCU.RXC      | 1,1,1,1,1,1,1,1 | car1.CCU.sys1 | car5.LCU      | RXC   |
+      | car8.CCU.sys1.MDM8 | car6.LCU.RXC      | 1,1,1,1,1,1,1,1 | car1.CCU.sys1 | car6.LCU      | RXC   |
+      | car8.CCU.sys1.MDM8 | car7.LCU.RXC      | 1,1,1,1,1,1,1,1 | car1.CCU.sys1 | car7.LCU      | RXC   |
+      | car8.CCU.sys1.MDM8 | car8.LCU.RXC      | 1,1,1,1,1,1,1,1 | car1.CCU.sys1 | car8.LCU      | RXC   |
+      | car8.CCU.sys1.TXC  | car1.CCU.sys1     | 1,1,1,1,1,1,1,1 | car1.CCU.sys2 | car8.CCU.sys1 | TXC   |
+      | car8.CCU.sys1.TXC  | car1.CCU.sys2     | 1,1,1,1,1,1,1,1 | car1.CCU.sys1 | car8.CCU.sys1 | TXC   |
+      | car8.CCU.sys1.TXC  | car8.CCU.sys2     | 1,1,1,1,1,1,1,1 | car1.CCU.sys1 | car8.CCU.sys1 | TXC   |
+      | car8.CCU.sys1.TXC  | car8.CCU.sys1.TXC | 1,1,1,1,1,1,1,1 | car1.CCU.sys1 | car8.CCU.sys1 | TXC   |
+      | car8.CCU.sys1.TXC  | car1.LCU          | 3,1,1,1,1,1,1,1 | car1.CCU.sys1 | car8.CCU.sys1 | TXC   |
+      | car8.CCU.sys1.TXC  | car2.LCU          | 1,3,1,1,1,1,1,1 | car1.CCU.sys1 | car8.CCU.sys1 | TXC   |
+      | car8.CCU.sys1.TXC  | car3.LCU          | 1,1,3,1,1,1,1,1 | car1.CCU.sys1 | car8.CCU.sys1 | TXC   |
+      | car8.CCU.sys1.TXC  | car4.LCU          | 1,1,1,3,1,1,1,1 | car1.CCU.sys1 | car8.CCU.sys1 | TXC   |
+      | car8.CCU.sys1.TXC  | car5.LCU          | 1,1,1,1,3,1,1,1 | car1.CCU.sys1 | car8.CCU.sys1 | TXC   |
+      | car8.CCU.sys1.TXC  | car6.LCU          | 1,1,1,1,1,3,1,1 | car1.CCU.sys1 | car8.CCU.sys1 | TXC   |
+      | car8.CCU.sys1.TXC  | car7.LCU          | 1,1,1,1,1,1,3,1 | car1.CCU.sys1 | car8.CCU.sys1 | TXC   |
+      | car8.CCU.sys1.TXC  | car8.LCU          | 1,1,1,1,1,1,1,3 | car1.CCU.sys1 | car8.CCU.sys1 | TXC   |
+
+  @req:NET-03 @req:CMD-01 @req:CMD-02 @req:CMD-03 @req:CMD-04 @req:RED-01 @req:RED-02 @req:PRO-06
+  Scenario Outline: F-NET-32 Board <board1> failed and board <board2> failed: each car by the path left to it, both faults recorded at the master
+    When board "<board1>" fails
+    And board "<board2>" fails
+    And the driver moves the traction notch of cab 1 to 6
+    And 200 ms pass
+    Then car by car the CI and BCU receive traction notch 6 or traction step "B" by the paths <paths> within 100 ms
+    And no CI or BCU of a car with a path in <paths> goes without a command for more than 100 ms
+    And no CI or BCU ever receives a traction notch other than 0 or 6
+    And no command over path 2 or 3 ever carried more than the traction and brake steps A and B
+    And "<master>" holds a fault record of "<node1>" saying "<part1>" failed at most 1820 ms after it
+    And "<master>" holds a fault record of "<node2>" saying "<part2>" failed at most 1820 ms after it
+
+    Examples:
+      | board1            | board2            | paths           | master        | node1         | part1 | node2         | part2 |
+      | car1.CCU.sys1.TXC | car1.CCU.sys2.TXC | -,-,-,-,-,-,-,- | car1.CCU.sys1 | car1.CCU.sys1 | TXC   | car1.CCU.sys2 | TXC   |
+      | car1.CCU.sys1.TXC | car1.LCU.MDM9     | 2,1,1,1,1,1,1,1 | car1.CCU.sys2 | car1.CCU.sys1 | TXC   | car1.LCU      | MDM9  |
+      | car1.CCU.sys1.TXC | car1.LCU.RXC      | 1,1,1,1,1,1,1,1 | car1.CCU.sys2 | car1.CCU.sys1 | TXC   | car1.LCU      | RXC   |
+      | car1.CCU.sys1.TXC | car2.LCU.MDM9     | 1,2,1,1,1,1,1,1 | car1.CCU.sys2 | car1.CCU.sys1 | TXC   | car2.LCU      | MDM9  |
+      | car1.CCU.sys1.TXC | car2.LCU.RXC      | 1,1,1,1,1,1,1,1 | car1.CCU.sys2 | car1.CCU.sys1 | TXC   | car2.LCU      | RXC   |
+      | car1.CCU.sys1.TXC | car3.LCU.MDM9     | 1,1,2,1,1,1,1,1 | car1.CCU.sys2 | car1.CCU.sys1 | TXC   | car3.LCU      | MDM9  |
+      | car1.CCU.sys1.TXC | car3.LCU.RXC      | 1,1,1,1,1,1,1,1 | car1.CCU.sys2 | car1.CCU.sys1 | TXC   | car3.LCU      | RXC   |
+      | car1.CCU.sys1.TXC | car4.LCU.MDM9     | 1,1,1,2,1,1,1,1 | car1.CCU.sys2 | car1.CCU.sys1 | TXC   | car4.LCU      | MDM9  |
+      | car1.CCU.sys1.TXC | car4.LCU.RXC      | 1,1,1,1,1,1,1,1 | car1.CCU.sys2 | car1.CCU.sys1 | TXC   | car4.LCU      | RXC   |
+      | car1.CCU.sys1.TXC | car5.LCU.MDM9     | 1,1,1,1,2,1,1,1 | car1.CCU.sys2 | car1.CCU.sys1 | TXC   | car5.LCU      | MDM9  |
+      | car1.CCU.sys1.TXC | car5.LCU.RXC      | 1,1,1,1,1,1,1,1 | car1.CCU.sys2 | car1.CCU.sys1 | TXC   | car5.LCU      | RXC   |
+      | car1.CCU.sys1.TXC | car6.LCU.MDM9     | 1,1,1,1,1,2,1,1 | car1.CCU.sys2 | car1.CCU.sys1 | TXC   | car6.LCU      | MDM9  |
+      | car1.CCU.sys1.TXC | car6.LCU.RXC      | 1,1,1,1,1,1,1,1 | car1.CCU.sys2 | car1.CCU.sys1 | TXC   | car6.LCU      | RXC   |
+      | car1.CCU.sys1.TXC | car7.LCU.MDM9     | 1,1,1,1,1,1,2,1 | car1.CCU.sys2 | car1.CCU.sys1 | TXC   | car7.LCU      | MDM9  |
+      | car1.CCU.sys1.TXC | car7.LCU.RXC      | 1,1,1,1,1,1,1,1 | car1.CCU.sys2 | car1.CCU.sys1 | TXC   | car7.LCU      | RXC   |
+      | car1.CCU.sys1.TXC | car8.LCU.MDM9     | 1,1,1,1,1,1,1,2 | car1.CCU.sys2 | car1.CCU.sys1 | TXC   | car8.LCU      | MDM9  |
+      | car1.CCU.sys1.TXC | car8.LCU.RXC      | 1,1,1,1,1,1,1,1 | car1.CCU.sys2 | car1.CCU.sys1 | TXC   | car8.LCU      | RXC   |
+      | car1.CCU.sys1.TXC | car8.CCU.sys2.TXC | 1,1,1,1,1,1,1,1 | car1.CCU.sys2 | car1.CCU.sys1 | TXC   | car8.CCU.sys2 | TXC   |
+      | car1.CCU.sys1.TXC | car8.CCU.sys1.TXC | 1,1,1,1,1,1,1,1 | car1.CCU.sys2 | car1.CCU.sys1 | TXC   | car8.CCU.sys1 | TXC   |
+      | car1.CCU.sys2.TXC | car1.LCU.MDM9     | 2,1,1,1,1,1,1,1 | car1.CCU.sys1 | car1.CCU.sys2 | TXC   | car1.LCU      | MDM9  |
+      | car1.CCU.sys2.TXC | car1.LCU.RXC      | 1,1,1,1,1,1,1,1 | car1.CCU.sys1 | car1.CCU.sys2 | TXC   | car1.LCU      | RXC   |
+      | car1.CCU.sys2.TXC | car2.LCU.MDM9     | 1,2,1,1,1,1,1,1 | car1.CCU.sys1 | car1.CCU.sys2 | TXC   | car2.LCU      | MDM9  |
+      | car1.CCU.sys2.TXC | car2.LCU.RXC      | 1,1,1,1,1,1,1,1 | car1.CCU.sys1 | car1.CCU.sys2 | TXC   | car2.LCU      | RXC   |
+      | car1.CCU.sys2.TXC | car3.LCU.MDM9     | 1,1,2,1,1,1,1,1 | car1.CCU.sys1 | car1.CCU.sys2 | TXC   | car3.LCU      | MDM9  |
+      | car1.CCU.sys2.TXC | car3.LCU.RXC      | 1,1,1,1,1,1,1,1 | car1.CCU.sys1 | car1.CCU.sys2 | TXC   | car3.LCU      | RXC   |
+      | car1.CCU.sys2.TXC | car4.LCU.MDM9     | 1,1,1,2,1,1,1,1 | car1.CCU.sys1 | car1.CCU.sys2 | TXC   | car4.LCU      | MDM9  |
+      | car1.CCU.sys2.TXC | car4.LCU.RXC      | 1,1,1,1,1,1,1,1 | car1.CCU.sys1 | car1.CCU.sys2 | TXC   | car4.LCU      | RXC   |
+      | car1.CCU.sys2.TXC | car5.LCU.MDM9     | 1,1,1,1,2,1,1,1 | car1.CCU.sys1 | car1.CCU.sys2 | TXC   | car5.LCU      | MDM9  |
+      | car1.CCU.sys2.TXC | car5.LCU.RXC      | 1,1,1,1,1,1,1,1 | car1.CCU.sys1 | car1.CCU.sys2 | TXC   | car5.LCU      | RXC   |
+      | car1.CCU.sys2.TXC | car6.LCU.MDM9     | 1,1,1,1,1,2,1,1 | car1.CCU.sys1 | car1.CCU.sys2 | TXC   | car6.LCU      | MDM9  |
+      | car1.CCU.sys2.TXC | car6.LCU.RXC      | 1,1,1,1,1,1,1,1 | car1.CCU.sys1 | car1.CCU.sys2 | TXC   | car6.LCU      | RXC   |
+      | car1.CCU.sys2.TXC | car7.LCU.MDM9     | 1,1,1,1,1,1,2,1 | car1.CCU.sys1 | car1.CCU.sys2 | TXC   | car7.LCU      | MDM9  |
+      | car1.CCU.sys2.TXC | car7.LCU.RXC      | 1,1,1,1,1,1,1,1 | car1.CCU.sys1 | car1.CCU.sys2 | TXC   | car7.LCU      | RXC   |
+      | car1.CCU.sys2.TXC | car8.LCU.MDM9     | 1,1,1,1,1,1,1,2 | car1.CCU.sys1 | car1.CCU.sys2 | TXC   | car8.LCU      | MDM9  |
+      | car1.CCU.sys2.TXC | car8.LCU.RXC      | 1,1,1,1,1,1,1,1 | car1.CCU.sys1 | car1.CCU.sys2 | TXC   | car8.LCU      | RXC   |
+      | car1.CCU.sys2.TXC | car8.CCU.sys2.TXC | 1,1,1,1,1,1,1,1 | car1.CCU.sys1 | car1.CCU.sys2 | TXC   | car8.CCU.sys2 | TXC   |
+      | car1.CCU.sys2.TXC | car8.CCU.sys1.TXC | 1,1,1,1,1,1,1,1 | car1.CCU.sys1 | car1.CCU.sys2 | TXC   | car8.CCU.sys1 | TXC   |
+      | car1.LCU.MDM9     | car1.LCU.RXC      | -,1,1,1,1,1,1,1 | car1.CCU.sys1 | car1.LCU      | MDM9  | car1.LCU      | RXC   |
+      | car1.LCU.MDM9     | car2.LCU.MDM9     | 2,2,1,1,1,1,1,1 | car1.CCU.sys1 | car1.LCU      | MDM9  | car2.LCU      | MDM9  |
+      | car1.LCU.MDM9     | car2.LCU.RXC      | 2,1,1,1,1,1,1,1 | car1.CCU.sys1 | car1.LCU      | MDM9  | car2.LCU      | RXC   |
+      | car1.LCU.MDM9     | car3.LCU.MDM9     | 2,1,2,1,1,1,1,1 | car1.CCU.sys1 | car1.LCU      | MDM9  | car3.LCU      | MDM9  |
+      | car1.LCU.MDM9     | car3.LCU.RXC      | 2,1,1,1,1,1,1,1 | car1.CCU.sys1 | car1.LCU      | MDM9  | car3.LCU      | RXC   |
+      | car1.LCU.MDM9     | car4.LCU.MDM9     | 2,1,1,2,1,1,1,1 | car1.CCU.sys1 | car1.LCU      | MDM9  | car4.LCU      | MDM9  |
+      | car1.LCU.MDM9     | car4.LCU.RXC      | 2,1,1,1,1,1,1,1 | car1.CCU.sys1 | car1.LCU      | MDM9  | car4.LCU      | RXC   |
+      | car1.LCU.MDM9     | car5.LCU.MDM9     | 2,1,1,1,2,1,1,1 | car1.CCU.sys1 | car1.LCU      | MDM9  | car5.LCU      | MDM9  |
+      | car1.LCU.MDM9     | car5.LCU.RXC      | 2,1,1,1,1,1,1,1 | car1.CCU.sys1 | car1.LCU      | MDM9  | car5.LCU      | RXC   |
+      | car1.LCU.MDM9     | car6.LCU.MDM9     | 2,1,1,1,1,2,1,1 | car1.CCU.sys1 | car1.LCU      | MDM9  | car6.LCU      | MDM9  |
+      | car1.LCU.MDM9     | car6.LCU.RXC      | 2,1,1,1,1,1,1,1 | car1.CCU.sys1 | car1.LCU      | MDM9  | car6.LCU      | RXC   |
+      | car1.LCU.MDM9     | car7.LCU.MDM9     | 2,1,1,1,1,1,2,1 | car1.CCU.sys1 | car1.LCU      | MDM9  | car7.LCU      | MDM9  |
+      | car1.LCU.MDM9     | car7.LCU.RXC      | 2,1,1,1,1,1,1,1 | car1.CCU.sys1 | car1.LCU      | MDM9  | car7.LCU      | RXC   |
+      | car1.LCU.MDM9     | car8.LCU.MDM9     | 2,1,1,1,1,1,1,2 | car1.CCU.sys1 | car1.LCU      | MDM9  | car8.LCU      | MDM9  |
+      | car1.LCU.MDM9     | car8.LCU.RXC      | 2,1,1,1,1,1,1,1 | car1.CCU.sys1 | car1.LCU      | MDM9  | car8.LCU      | RXC   |
+      | car1.LCU.MDM9     | car8.CCU.sys2.TXC | 2,1,1,1,1,1,1,1 | car1.CCU.sys1 | car1.LCU      | MDM9  | car8.CCU.sys2 | TXC   |
+      | car1.LCU.MDM9     | car8.CCU.sys1.TXC | 2,1,1,1,1,1,1,1 | car1.CCU.sys1 | car1.LCU      | MDM9  | car8.CCU.sys1 | TXC   |
+      | car1.LCU.RXC      | car2.LCU.MDM9     | 1,2,1,1,1,1,1,1 | car1.CCU.sys1 | car1.LCU      | RXC   | car2.LCU      | MDM9  |
+      | car1.LCU.RXC      | car2.LCU.RXC      | 1,1,1,1,1,1,1,1 | car1.CCU.sys1 | car1.LCU      | RXC   | car2.LCU      | RXC   |
+      | car1.LCU.RXC      | car3.LCU.MDM9     | 1,1,2,1,1,1,1,1 | car1.CCU.sys1 | car1.LCU      | RXC   | car3.LCU      | MDM9  |
+      | car1.LCU.RXC      | car3.LCU.RXC      | 1,1,1,1,1,1,1,1 | car1.CCU.sys1 | car1.LCU      | RXC   | car3.LCU      | RXC   |
+      | car1.LCU.RXC      | car4.LCU.MDM9     | 1,1,1,2,1,1,1,1 | car1.CCU.sys1 | car1.LCU      | RXC   | car4.LCU      | MDM9  |
+      | car1.LCU.RXC      | car4.LCU.RXC      | 1,1,1,1,1,1,1,1 | car1.CCU.sys1 | car1.LCU      | RXC   | car4.LCU      | RXC   |
+      | car1.LCU.RXC      | car5.LCU.MDM9     | 1,1,1,1,2,1,1,1 | car1.CCU.sys1 | car1.LCU      | RXC   | car5.LCU      | MDM9  |
+      | car1.LCU.RXC      | car5.LCU.RXC      | 1,1,1,1,1,1,1,1 | car1.CCU.sys1 | car1.LCU      | RXC   | car5.LCU      | RXC   |
+      | car1.LCU.RXC      | car6.LCU.MDM9     | 1,1,1,1,1,2,1,1 | car1.CCU.sys1 | car1.LCU      | RXC   | car6.LCU      | MDM9  |
+      | car1.LCU.RXC      | car6.LCU.RXC      | 1,1,1,1,1,1,1,1 | car1.CCU.sys1 | car1.LCU      | RXC   | car6.LCU      | RXC   |
+      | car1.LCU.RXC      | car7.LCU.MDM9     | 1,1,1,1,1,1,2,1 | car1.CCU.sys1 | car1.LCU      | RXC   | car7.LCU      | MDM9  |
+      | car1.LCU.RXC      | car7.LCU.RXC      | 1,1,1,1,1,1,1,1 | car1.CCU.sys1 | car1.LCU      | RXC   | car7.LCU      | RXC   |
+      | car1.LCU.RXC      | car8.LCU.MDM9     | 1,1,1,1,1,1,1,2 | car1.CCU.sys1 | car1.LCU      | RXC   | car8.LCU      | MDM9  |
+      | car1.LCU.RXC      | car8.LCU.RXC      | 1,1,1,1,1,1,1,1 | car1.CCU.sys1 | car1.LCU      | RXC   | car8.LCU      | RXC   |
+      | car1.LCU.RXC      | car8.CCU.sys2.TXC | 1,1,1,1,1,1,1,1 | car1.CCU.sys1 | car1.LCU      | RXC   | car8.CCU.sys2 | TXC   |
+      | car1.LCU.RXC      | car8.CCU.sys1.TXC | 1,1,1,1,1,1,1,1 | car1.CCU.sys1 | car1.LCU      | RXC   | car8.CCU.sys1 | TXC   |
+      | car2.LCU.MDM9     | car2.LCU.RXC      | 1,-,1,1,1,1,1,1 | car1.CCU.sys1 | car2.LCU      | MDM9  | car2.LCU      | RXC   |
+      | car2.LCU.MDM9     | car3.LCU.MDM9     | 1,2,2,1,1,1,1,1 | car1.CCU.sys1 | car2.LCU      | MDM9  | car3.LCU      | MDM9  |
+      | car2.LCU.MDM9     | car3.LCU.RXC      | 1,2,1,1,1,1,1,1 | car1.CCU.sys1 | car2.LCU      | MDM9  | car3.LCU      | RXC   |
+      | car2.LCU.MDM9     | car4.LCU.MDM9     | 1,2,1,2,1,1,1,1 | car1.CCU.sys1 | car2.LCU      | MDM9  | car4.LCU      | MDM9  |
+      | car2.LCU.MDM9     | car4.LCU.RXC      | 1,2,1,1,1,1,1,1 | car1.CCU.sys1 | car2.LCU      | MDM9  | car4.LCU      | RXC   |
+      | car2.LCU.MDM9     | car5.LCU.MDM9     | 1,2,1,1,2,1,1,1 | car1.CCU.sys1 | car2.LCU      | MDM9  | car5.LCU      | MDM9  |
+      | car2.LCU.MDM9     | car5.LCU.RXC      | 1,2,1,1,1,1,1,1 | car1.CCU.sys1 | car2.LCU      | MDM9  | car5.LCU      | RXC   |
+      | car2.LCU.MDM9     | car6.LCU.MDM9     | 1,2,1,1,1,2,1,1 | car1.CCU.sys1 | car2.LCU      | MDM9  | car6.LCU      | MDM9  |
+      | car2.LCU.MDM9     | car6.LCU.RXC      | 1,2,1,1,1,1,1,1 | car1.CCU.sys1 | car2.LCU      | MDM9  | car6.LCU      | RXC   |
+      | car2.LCU.MDM9     | car7.LCU.MDM9     | 1,2,1,1,1,1,2,1 | car1.CCU.sys1 | car2.LCU      | MDM9  | car7.LCU      | MDM9  |
+      | car2.LCU.MDM9     | car7.LCU.RXC      | 1,2,1,1,1,1,1,1 | car1.CCU.sys1 | car2.LCU      | MDM9  | car7.LCU      | RXC   |
+      | car2.LCU.MDM9     | car8.LCU.MDM9     | 1,2,1,1,1,1,1,2 | car1.CCU.sys1 | car2.LCU      | MDM9  | car8.LCU      | MDM9  |
+      | car2.LCU.MDM9     | car8.LCU.RXC      | 1,2,1,1,1,1,1,1 | car1.CCU.sys1 | car2.LCU      | MDM9  | car8.LCU      | RXC   |
+      | car2.LCU.MDM9     | car8.CCU.sys2.TXC | 1,2,1,1,1,1,1,1 | car1.CCU.sys1 | car2.LCU      | MDM9  | car8.CCU.sys2 | TXC   |
+      | car2.LCU.MDM9     | car8.CCU.sys1.TXC | 1,2,1,1,1,1,1,1 | car1.CCU.sys1 | car2.LCU      | MDM9  | car8.CCU.sys1 | TXC   |
+      | car2.LCU.RXC      | car3.LCU.MDM9     | 1,1,2,1,1,1,1,1 | car1.CCU.sys1 | car2.LCU      | RXC   | car3.LCU      | MDM9  |
+      | car2.LCU.RXC      | car3.LCU.RXC      | 1,1,1,1,1,1,1,1 | car1.CCU.sys1 | car2.LCU      | RXC   | car3.LCU      | RXC   |
+      | car2.LCU.RXC      | car4.LCU.MDM9     | 1,1,1,2,1,1,1,1 | car1.CCU.sys1 | car2.LCU      | RXC   | car4.LCU      | MDM9  |
+      | car2.LCU.RXC      | car4.LCU.RXC      | 1,1,1,1,1,1,1,1 | car1.CCU.sys1 | car2.LCU      | RXC   | car4.LCU      | RXC   |
+      | car2.LCU.RXC      | car5.LCU.MDM9     | 1,1,1,1,2,1,1,1 | car1.CCU.sys1 | car2.LCU      | RXC   | car5.LCU      | MDM9  |
+      | car2.LCU.RXC      | car5.LCU.RXC      | 1,1,1,1,1,1,1,1 | car1.CCU.sys1 | car2.LCU      | RXC   | car5.LCU      | RXC   |
+      | car2.LCU.RXC      | car6.LCU.MDM9     | 1,1,1,1,1,2,1,1 | car1.CCU.sys1 | car2.LCU      | RXC   | car6.LCU      | MDM9  |
+      | car2.LCU.RXC      | car6.LCU.RXC      | 1,1,1,1,1,1,1,1 | car1.CCU.sys1 | car2.LCU      | RXC   | car6.LCU      | RXC   |
+      | car2.LCU.RXC      | car7.LCU.MDM9     | 1,1,1,1,1,1,2,1 | car1.CCU.sys1 | car2.LCU      | RXC   | car7.LCU      | MDM9  |
+      | car2.LCU.RXC      | car7.LCU.RXC      | 1,1,1,1,1,1,1,1 | car1.CCU.sys1 | car2.LCU      | RXC   | car7.LCU      | RXC   |
+      | car2.LCU.RXC      | car8.LCU.MDM9     | 1,1,1,1,1,1,1,2 | car1.CCU.sys1 | car2.LCU      | RXC   | car8.LCU      | MDM9  |
+      | car2.LCU.RXC      | car8.LCU.RXC      | 1,1,1,1,1,1,1,1 | car1.CCU.sys1 | car2.LCU      | RXC   | car8.LCU      | RXC   |
+      | car2.LCU.RXC      | car8.CCU.sys2.TXC | 1,1,1,1,1,1,1,1 | car1.CCU.sys1 | car2.LCU      | RXC   | car8.CCU.sys2 | TXC   |
+      | car2.LCU.RXC      | car8.CCU.sys1.TXC | 1,1,1,1,1,1,1,1 | car1.CCU.sys1 | car2.LCU      | RXC   | car8.CCU.sys1 | TXC   |
+      | car3.LCU.MDM9     | car3.LCU.RXC      | 1,1,-,1,1,1,1,1 | car1.CCU.sys1 | car3.LCU      | MDM9  | car3.LCU      | RXC   |
+      | car3.LCU.MDM9     | car4.LCU.MDM9     | 1,1,2,2,1,1,1,1 | car1.CCU.sys1 | car3.LCU      | MDM9  | car4.LCU      | MDM9  |
+      | car3.LCU.MDM9     | car4.LCU.RXC      | 1,1,2,1,1,1,1,1 | car1.CCU.sys1 | car3.LCU      | MDM9  | car4.LCU      | RXC   |
+      | car3.LCU.MDM9     | car5.LCU.MDM9     | 1,1,2,1,2,1,1,1 | car1.CCU.sys1 | car3.LCU      | MDM9  | car5.LCU      | MDM9  |
+      | car3.LCU.MDM9     | car5.LCU.RXC      | 1,1,2,1,1,1,1,1 | car1.CCU.sys1 | car3.LCU      | MDM9  | car5.LCU      | RXC   |
+      | car3.LCU.MDM9     | car6.LCU.MDM9     | 1,1,2,1,1,2,1,1 | car1.CCU.sys1 | car3.LCU      | MDM9  | car6.LCU      | MDM9  |
+      | car3.LCU.MDM9     | car6.LCU.RXC      | 1,1,2,1,1,1,1,1 | car1.CCU.sys1 | car3.LCU      | MDM9  | car6.LCU      | RXC   |
+      | car3.LCU.MDM9     | car7.LCU.MDM9     | 1,1,2,1,1,1,2,1 | car1.CCU.sys1 | car3.LCU      | MDM9  | car7.LCU      | MDM9  |
+      | car3.LCU.MDM9     | car7.LCU.RXC      | 1,1,2,1,1,1,1,1 | car1.CCU.sys1 | car3.LCU      | MDM9  | car7.LCU      | RXC   |
+      | car3.LCU.MDM9     | car8.LCU.MDM9     | 1,1,2,1,1,1,1,2 | car1.CCU.sys1 | car3.LCU      | MDM9  | car8.LCU      | MDM9  |
+      | car3.LCU.MDM9     | car8.LCU.RXC      | 1,1,2,1,1,1,1,1 | car1.CCU.sys1 | car3.LCU      | MDM9  | car8.LCU      | RXC   |
+      | car3.LCU.MDM9     | car8.CCU.sys2.TXC | 1,1,2,1,1,1,1,1 | car1.CCU.sys1 | car3.LCU      | MDM9  | car8.CCU.sys2 | TXC   |
+      | car3.LCU.MDM9     | car8.CCU.sys1.TXC | 1,1,2,1,1,1,1,1 | car1.CCU.sys1 | car3.LCU      | MDM9  | car8.CCU.sys1 | TXC   |
+      | car3.LCU.RXC      | car4.LCU.MDM9     | 1,1,1,2,1,1,1,1 | car1.CCU.sys1 | car3.LCU      | RXC   | car4.LCU      | MDM9  |
+      | car3.LCU.RXC      | car4.LCU.RXC      | 1,1,1,1,1,1,1,1 | car1.CCU.sys1 | car3.LCU      | RXC   | car4.LCU      | RXC   |
+      | car3.LCU.RXC      | car5.LCU.MDM9     | 1,1,1,1,2,1,1,1 | car1.CCU.sys1 | car3.LCU      | RXC   | car5.LCU      | MDM9  |
+      | car3.LCU.RXC      | car5.LCU.RXC      | 1,1,1,1,1,1,1,1 | car1.CCU.sys1 | car3.LCU      | RXC   | car5.LCU      | RXC   |
+      | car3.LCU.RXC      | car6.LCU.MDM9     | 1,1,1,1,1,2,1,1 | car1.CCU.sys1 | car3.LCU      | RXC   | car6.LCU      | MDM9  |
+      | car3.LCU.RXC      | car6.LCU.RXC      | 1,1,1,1,1,1,1,1 | car1.CCU.sys1 | car3.LCU      | RXC   | car6.LCU      | RXC   |
+      | car3.LCU.RXC      | car7.LCU.MDM9     | 1,1,1,1,1,1,2,1 | car1.CCU.sys1 | car3.LCU      | RXC   | car7.LCU      | MDM9  |
+      | car3.LCU.RXC      | car7.LCU.RXC      | 1,1,1,1,1,1,1,1 | car1.CCU.sys1 | car3.LCU      | RXC   | car7.LCU      | RXC   |
+      | car3.LCU.RXC      | car8.LCU.MDM9     | 1,1,1,1,1,1,1,2 | car1.CCU.sys1 | car3.LCU      | RXC   | car8.LCU      | MDM9  |
+      | car3.LCU.RXC      | car8.LCU.RXC      | 1,1,1,1,1,1,1,1 | car1.CCU.sys1 | car3.LCU      | RXC   | car8.LCU      | RXC   |
+      | car3.LCU.RXC      | car8.CCU.sys2.TXC | 1,1,1,1,1,1,1,1 | car1.CCU.sys1 | car3.LCU      | RXC   | car8.CCU.sys2 | TXC   |
+      | car3.LCU.RXC      | car8.CCU.sys1.TXC | 1,1,1,1,1,1,1,1 | car1.CCU.sys1 | car3.LCU      | RXC   | car8.CCU.sys1 | TXC   |
+      | car4.LCU.MDM9     | car4.LCU.RXC      | 1,1,1,-,1,1,1,1 | car1.CCU.sys1 | car4.LCU      | MDM9  | car4.LCU      | RXC   |
+      | car4.LCU.MDM9     | car5.LCU.MDM9     | 1,1,1,2,2,1,1,1 | car1.CCU.sys1 | car4.LCU      | MDM9  | car5.LCU      | MDM9  |
+      | car4.LCU.MDM9     | car5.LCU.RXC      | 1,1,1,2,1,1,1,1 | car1.CCU.sys1 | car4.LCU      | MDM9  | car5.LCU      | RXC   |
+      | car4.LCU.MDM9     | car6.LCU.MDM9     | 1,1,1,2,1,2,1,1 | car1.CCU.sys1 | car4.LCU      | MDM9  | car6.LCU      | MDM9  |
+      | car4.LCU.MDM9     | car6.LCU.RXC      | 1,1,1,2,1,1,1,1 | car1.CCU.sys1 | car4.LCU      | MDM9  | car6.LCU      | RXC   |
+      | car4.LCU.MDM9     | car7.LCU.MDM9     | 1,1,1,2,1,1,2,1 | car1.CCU.sys1 | car4.LCU      | MDM9  | car7.LCU      | MDM9  |
+      | car4.LCU.MDM9     | car7.LCU.RXC      | 1,1,1,2,1,1,1,1 | car1.CCU.sys1 | car4.LCU      | MDM9  | car7.LCU      | RXC   |
+      | car4.LCU.MDM9     | car8.LCU.MDM9     | 1,1,1,2,1,1,1,2 | car1.CCU.sys1 | car4.LCU      | MDM9  | car8.LCU      | MDM9  |
+      | car4.LCU.MDM9     | car8.LCU.RXC      | 1,1,1,2,1,1,1,1 | car1.CCU.sys1 | car4.LCU      | MDM9  | car8.LCU      | RXC   |
+      | car4.LCU.MDM9     | car8.CCU.sys2.TXC | 1,1,1,2,1,1,1,1 | car1.CCU.sys1 | car4.LCU      | MDM9  | car8.CCU.sys2 | TXC   |
+      | car4.LCU.MDM9     | car8.CCU.sys1.TXC | 1,1,1,2,1,1,1,1 | car1.CCU.sys1 | car4.LCU      | MDM9  | car8.CCU.sys1 | TXC   |
+      | car4.LCU.RXC      | car5.LCU.MDM9     | 1,1,1,1,2,1,1,1 | car1.CCU.sys1 | car4.LCU      | RXC   | car5.LCU      | MDM9  |
+      | car4.LCU.RXC      | car5.LCU.RXC      | 1,1,1,1,1,1,1,1 | car1.CCU.sys1 | car4.LCU      | RXC   | car5.LCU      | RXC   |
+      | car4.LCU.RXC      | car6.LCU.MDM9     | 1,1,1,1,1,2,1,1 | car1.CCU.sys1 | car4.LCU      | RXC   | car6.LCU      | MDM9  |
+      | car4.LCU.RXC      | car6.LCU.RXC      | 1,1,1,1,1,1,1,1 | car1.CCU.sys1 | car4.LCU      | RXC   | car6.LCU      | RXC   |
+      | car4.LCU.RXC      | car7.LCU.MDM9     | 1,1,1,1,1,1,2,1 | car1.CCU.sys1 | car4.LCU      | RXC   | car7.LCU      | MDM9  |
+      | car4.LCU.RXC      | car7.LCU.RXC      | 1,1,1,1,1,1,1,1 | car1.CCU.sys1 | car4.LCU      | RXC   | car7.LCU      | RXC   |
+      | car4.LCU.RXC      | car8.LCU.MDM9     | 1,1,1,1,1,1,1,2 | car1.CCU.sys1 | car4.LCU      | RXC   | car8.LCU      | MDM9  |
+      | car4.LCU.RXC      | car8.LCU.RXC      | 1,1,1,1,1,1,1,1 | car1.CCU.sys1 | car4.LCU      | RXC   | car8.LCU      | RXC   |
+      | car4.LCU.RXC      | car8.CCU.sys2.TXC | 1,1,1,1,1,1,1,1 | car1.CCU.sys1 | car4.LCU      | RXC   | car8.CCU.sys2 | TXC   |
+      | car4.LCU.RXC      | car8.CCU.sys1.TXC | 1,1,1,1,1,1,1,1 | car1.CCU.sys1 | car4.LCU      | RXC   | car8.CCU.sys1 | TXC   |
+      | car5.LCU.MDM9     | car5.LCU.RXC      | 1,1,1,1,-,1,1,1 | car1.CCU.sys1 | car5.LCU      | MDM9  | car5.LCU      | RXC   |
+      | car5.LCU.MDM9     | car6.LCU.MDM9     | 1,1,1,1,2,2,1,1 | car1.CCU.sys1 | car5.LCU      | MDM9  | car6.LCU      | MDM9  |
+      | car5.LCU.MDM9     | car6.LCU.RXC      | 1,1,1,1,2,1,1,1 | car1.CCU.sys1 | car5.LCU      | MDM9  | car6.LCU      | RXC   |
+      | car5.LCU.MDM9     | car7.LCU.MDM9     | 1,1,1,1,2,1,2,1 | car1.CCU.sys1 | car5.LCU      | MDM9  | car7.LCU      | MDM9  |
+      | car5.LCU.MDM9     | car7.LCU.RXC      | 1,1,1,1,2,1,1,1 | car1.CCU.sys1 | car5.LCU      | MDM9  | car7.LCU      | RXC   |
+      | car5.LCU.MDM9     | car8.LCU.MDM9     | 1,1,1,1,2,1,1,2 | car1.CCU.sys1 | car5.LCU      | MDM9  | car8.LCU      | MDM9  |
+      | car5.LCU.MDM9     | car8.LCU.RXC      | 1,1,1,1,2,1,1,1 | car1.CCU.sys1 | car5.LCU      | MDM9  | car8.LCU      | RXC   |
+      | car5.LCU.MDM9     | car8.CCU.sys2.TXC | 1,1,1,1,2,1,1,1 | car1.CCU.sys1 | car5.LCU      | MDM9  | car8.CCU.sys2 | TXC   |
+      | car5.LCU.MDM9     | car8.CCU.sys1.TXC | 1,1,1,1,2,1,1,1 | car1.CCU.sys1 | car5.LCU      | MDM9  | car8.CCU.sys1 | TXC   |
+      | car5.LCU.RXC      | car6.LCU.MDM9     | 1,1,1,1,1,2,1,1 | car1.CCU.sys1 | car5.LCU      | RXC   | car6.LCU      | MDM9  |
+      | car5.LCU.RXC      | car6.LCU.RXC      | 1,1,1,1,1,1,1,1 | car1.CCU.sys1 | car5.LCU      | RXC   | car6.LCU      | RXC   |
+      | car5.LCU.RXC      | car7.LCU.MDM9     | 1,1,1,1,1,1,2,1 | car1.CCU.sys1 | car5.LCU      | RXC   | car7.LCU      | MDM9  |
+      | car5.LCU.RXC      | car7.LCU.RXC      | 1,1,1,1,1,1,1,1 | car1.CCU.sys1 | car5.LCU      | RXC   | car7.LCU      | RXC   |
+      | car5.LCU.RXC      | car8.LCU.MDM9     | 1,1,1,1,1,1,1,2 | car1.CCU.sys1 | car5.LCU      | RXC   | car8.LCU      | MDM9  |
+      | car5.LCU.RXC      | car8.LCU.RXC      | 1,1,1,1,1,1,1,1 | car1.CCU.sys1 | car5.LCU      | RXC   | car8.LCU      | RXC   |
+      | car5.LCU.RXC      | car8.CCU.sys2.TXC | 1,1,1,1,1,1,1,1 | car1.CCU.sys1 | car5.LCU      | RXC   | car8.CCU.sys2 | TXC   |
+      | car5.LCU.RXC      | car8.CCU.sys1.TXC | 1,1,1,1,1,1,1,1 | car1.CCU.sys1 | car5.LCU      | RXC   | car8.CCU.sys1 | TXC   |
+      | car6.LCU.MDM9     | car6.LCU.RXC      | 1,1,1,1,1,-,1,1 | car1.CCU.sys1 | car6.LCU      | MDM9  | car6.LCU      | RXC   |
+      | car6.LCU.MDM9     | car7.LCU.MDM9     | 1,1,1,1,1,2,2,1 | car1.CCU.sys1 | car6.LCU      | MDM9  | car7.LCU      | MDM9  |
+      | car6.LCU.MDM9     | car7.LCU.RXC      | 1,1,1,1,1,2,1,1 | car1.CCU.sys1 | car6.LCU      | MDM9  | car7.LCU      | RXC   |
+      | car6.LCU.MDM9     | car8.LCU.MDM9     | 1,1,1,1,1,2,1,2 | car1.CCU.sys1 | car6.LCU      | MDM9  | car8.LCU      | MDM9  |
+      | car6.LCU.MDM9     | car8.LCU.RXC      | 1,1,1,1,1,2,1,1 | car1.CCU.sys1 | car6.LCU      | MDM9  | car8.LCU      | RXC   |
+      | car6.LCU.MDM9     | car8.CCU.sys2.TXC | 1,1,1,1,1,2,1,1 | car1.CCU.sys1 | car6.LCU      | MDM9  | car8.CCU.sys2 | TXC   |
+      | car6.LCU.MDM9     | car8.CCU.sys1.TXC | 1,1,1,1,1,2,1,1 | car1.CCU.sys1 | car6.LCU      | MDM9  | car8.CCU.sys1 | TXC   |
+      | car6.LCU.RXC      | car7.LCU.MDM9     | 1,1,1,1,1,1,2,1 | car1.CCU.sys1 | car6.LCU      | RXC   | car7.LCU      | MDM9  |
+      | car6.LCU.RXC      | car7.LCU.RXC      | 1,1,1,1,1,1,1,1 | car1.CCU.sys1 | car6.LCU      | RXC   | car7.LCU      | RXC   |
+      | car6.LCU.RXC      | car8.LCU.MDM9     | 1,1,1,1,1,1,1,2 | car1.CCU.sys1 | car6.LCU      | RXC   | car8.LCU      | MDM9  |
+      | car6.LCU.RXC      | car8.LCU.RXC      | 1,1,1,1,1,1,1,1 | car1.CCU.sys1 | car6.LCU      | RXC   | car8.LCU      | RXC   |
+      | car6.LCU.RXC      | car8.CCU.sys2.TXC | 1,1,1,1,1,1,1,1 | car1.CCU.sys1 | car6.LCU      | RXC   | car8.CCU.sys2 | TXC   |
+      | car6.LCU.RXC      | car8.CCU.sys1.TXC | 1,1,1,1,1,1,1,1 | car1.CCU.sys1 | car6.LCU      | RXC   | car8.CCU.sys1 | TXC   |
+      | car7.LCU.MDM9     | car7.LCU.RXC      | 1,1,1,1,1,1,-,1 | car1.CCU.sys1 | car7.LCU      | MDM9  | car7.LCU      | RXC   |
+      | car7.LCU.MDM9     | car8.LCU.MDM9     | 1,1,1,1,1,1,2,2 | car1.CCU.sys1 | car7.LCU      | MDM9  | car8.LCU      | MDM9  |
+      | car7.LCU.MDM9     | car8.LCU.RXC      | 1,1,1,1,1,1,2,1 | car1.CCU.sys1 | car7.LCU      | MDM9  | car8.LCU      | RXC   |
+      | car7.LCU.MDM9     | car8.CCU.sys2.TXC | 1,1,1,1,1,1,2,1 | car1.CCU.sys1 | car7.LCU      | MDM9  | car8.CCU.sys2 | TXC   |
+      | car7.LCU.MDM9     | car8.CCU.sys1.TXC | 1,1,1,1,1,1,2,1 | car1.CCU.sys1 | car7.LCU      | MDM9  | car8.CCU.sys1 | TXC   |
+      | car7.LCU.RXC      | car8.LCU.MDM9     | 1,1,1,1,1,1,1,2 | car1.CCU.sys1 | car7.LCU      | RXC   | car8.LCU      | MDM9  |
+      | car7.LCU.RXC      | car8.LCU.RXC      | 1,1,1,1,1,1,1,1 | car1.CCU.sys1 | car7.LCU      | RXC   | car8.LCU      | RXC   |
+      | car7.LCU.RXC      | car8.CCU.sys2.TXC | 1,1,1,1,1,1,1,1 | car1.CCU.sys1 | car7.LCU      | RXC   | car8.CCU.sys2 | TXC   |
+      | car7.LCU.RXC      | car8.CCU.sys1.TXC | 1,1,1,1,1,1,1,1 | car1.CCU.sys1 | car7.LCU      | RXC   | car8.CCU.sys1 | TXC   |
+      | car8.LCU.MDM9     | car8.LCU.RXC      | 1,1,1,1,1,1,1,- | car1.CCU.sys1 | car8.LCU      | MDM9  | car8.LCU      | RXC   |
+      | car8.LCU.MDM9     | car8.CCU.sys2.TXC | 1,1,1,1,1,1,1,2 | car1.CCU.sys1 | car8.LCU      | MDM9  | car8.CCU.sys2 | TXC   |
+      | car8.LCU.MDM9     | car8.CCU.sys1.TXC | 1,1,1,1,1,1,1,2 | car1.CCU.sys1 | car8.LCU      | MDM9  | car8.CCU.sys1 | TXC   |
+      | car8.LCU.RXC      | car8.CCU.sys2.TXC | 1,1,1,1,1,1,1,1 | car1.CCU.sys1 | car8.LCU      | RXC   | car8.CCU.sys2 | TXC   |
+      | car8.LCU.RXC      | car8.CCU.sys1.TXC | 1,1,1,1,1,1,1,1 | car1.CCU.sys1 | car8.LCU      | RXC   | car8.CCU.sys1 | TXC   |
+      | car8.CCU.sys2.TXC | car8.CCU.sys1.TXC | 1,1,1,1,1,1,1,1 | car1.CCU.sys1 | car8.CCU.sys2 | TXC   | car8.CCU.sys1 | TXC   |
+
+  @req:NET-03 @req:CMD-01 @req:CMD-02 @req:CMD-03 @req:CMD-04 @req:RED-01 @req:RED-02 @req:PRO-06
+  Scenario Outline: F-NET-32 Board <board> failed and supply <supply> off: each car by the path left to it, both faults recorded at the master
+    When board "<board>" fails
+    And the supply "<supply>" is switched off
+    And the driver moves the traction notch of cab 1 to 6
+    And 200 ms pass
+    Then car by car the CI and BCU receive traction notch 6 or traction step "B" by the paths <paths> within 100 ms
+    And no CI or BCU of a car with a path in <paths> goes without a command for more than 100 ms
+    And no CI or BCU ever receives a traction notch other than 0 or 6
+    And no command over path 2 or 3 ever carried more than the traction and brake steps A and B
+    And "<master>" holds a fault record of "<node1>" saying "<part1>" failed at most 1820 ms after it
+    And "<master>" holds a fault record of "<node2>" saying "<part2>" failed at most 1820 ms after it
+
+    Examples:
+      | board             | supply            | paths           | master        | node1         | part1 | node2         | part2 |
+      | car1.CCU.sys1.TXC | car1.CCU.sys2.TXC | -,-,-,-,-,-,-,- | car1.CCU.sys1 | car1.CCU.sys1 | TXC   | car1.CCU.sys2 | TXC   |
+      | car1.CCU.sys1.TXC | car8.CCU.sys1.TXC | 1,1,1,1,1,1,1,1 | car1.CCU.sys2 | car1.CCU.sys1 | TXC   | car8.CCU.sys1 | TXC   |
+      | car1.CCU.sys1.TXC | car8.CCU.sys2.TXC | 1,1,1,1,1,1,1,1 | car1.CCU.sys2 | car1.CCU.sys1 | TXC   | car8.CCU.sys2 | TXC   |
+      | car1.CCU.sys1.TXC | car1.LCU.RXC      | 1,1,1,1,1,1,1,1 | car1.CCU.sys2 | car1.CCU.sys1 | TXC   | car1.LCU      | RXC   |
+      | car1.CCU.sys1.TXC | car2.LCU.RXC      | 1,1,1,1,1,1,1,1 | car1.CCU.sys2 | car1.CCU.sys1 | TXC   | car2.LCU      | RXC   |
+      | car1.CCU.sys1.TXC | car3.LCU.RXC      | 1,1,1,1,1,1,1,1 | car1.CCU.sys2 | car1.CCU.sys1 | TXC   | car3.LCU      | RXC   |
+      | car1.CCU.sys1.TXC | car4.LCU.RXC      | 1,1,1,1,1,1,1,1 | car1.CCU.sys2 | car1.CCU.sys1 | TXC   | car4.LCU      | RXC   |
+      | car1.CCU.sys1.TXC | car5.LCU.RXC      | 1,1,1,1,1,1,1,1 | car1.CCU.sys2 | car1.CCU.sys1 | TXC   | car5.LCU      | RXC   |
+      | car1.CCU.sys1.TXC | car6.LCU.RXC      | 1,1,1,1,1,1,1,1 | car1.CCU.sys2 | car1.CCU.sys1 | TXC   | car6.LCU      | RXC   |
+      | car1.CCU.sys1.TXC | car7.LCU.RXC      | 1,1,1,1,1,1,1,1 | car1.CCU.sys2 | car1.CCU.sys1 | TXC   | car7.LCU      | RXC   |
+      | car1.CCU.sys1.TXC | car8.LCU.RXC      | 1,1,1,1,1,1,1,1 | car1.CCU.sys2 | car1.CCU.sys1 | TXC   | car8.LCU      | RXC   |
+      | car1.CCU.sys2.TXC | car1.CCU.sys1.TXC | -,-,-,-,-,-,-,- | car1.CCU.sys1 | car1.CCU.sys2 | TXC   | car1.CCU.sys1 | TXC   |
+      | car1.CCU.sys2.TXC | car8.CCU.sys1.TXC | 1,1,1,1,1,1,1,1 | car1.CCU.sys1 | car1.CCU.sys2 | TXC   | car8.CCU.sys1 | TXC   |
+      | car1.CCU.sys2.TXC | car8.CCU.sys2.TXC | 1,1,1,1,1,1,1,1 | car1.CCU.sys1 | car1.CCU.sys2 | TXC   | car8.CCU.sys2 | TXC   |
+      | car1.CCU.sys2.TXC | car1.LCU.RXC      | 1,1,1,1,1,1,1,1 | car1.CCU.sys1 | car1.CCU.sys2 | TXC   | car1.LCU      | RXC   |
+      | car1.CCU.sys2.TXC | car2.LCU.RXC      | 1,1,1,1,1,1,1,1 | car1.CCU.sys1 | car1.CCU.sys2 | TXC   | car2.LCU      | RXC   |
+      | car1.CCU.sys2.TXC | car3.LCU.RXC      | 1,1,1,1,1,1,1,1 | car1.CCU.sys1 | car1.CCU.sys2 | TXC   | car3.LCU      | RXC   |
+      | car1.CCU.sys2.TXC | car4.LCU.RXC      | 1,1,1,1,1,1,1,1 | car1.CCU.sys1 | car1.CCU.sys2 | TXC   | car4.LCU      | RXC   |
+      | car1.CCU.sys2.TXC | car5.LCU.RXC      | 1,1,1,1,1,1,1,1 | car1.CCU.sys1 | car1.CCU.sys2 | TXC   | car5.LCU      | RXC   |
+      | car1.CCU.sys2.TXC | car6.LCU.RXC      | 1,1,1,1,1,1,1,1 | car1.CCU.sys1 | car1.CCU.sys2 | TXC   | car6.LCU      | RXC   |
+      | car1.CCU.sys2.TXC | car7.LCU.RXC      | 1,1,1,1,1,1,1,1 | car1.CCU.sys1 | car1.CCU.sys2 | TXC   | car7.LCU      | RXC   |
+      | car1.CCU.sys2.TXC | car8.LCU.RXC      | 1,1,1,1,1,1,1,1 | car1.CCU.sys1 | car1.CCU.sys2 | TXC   | car8.LCU      | RXC   |
+      | car1.LCU.MDM9     | car1.CCU.sys1.TXC | 2,1,1,1,1,1,1,1 | car1.CCU.sys2 | car1.LCU      | MDM9  | car1.CCU.sys1 | TXC   |
+      | car1.LCU.MDM9     | car1.CCU.sys2.TXC | 2,1,1,1,1,1,1,1 | car1.CCU.sys1 | car1.LCU      | MDM9  | car1.CCU.sys2 | TXC   |
+      | car1.LCU.MDM9     | car8.CCU.sys1.TXC | 2,1,1,1,1,1,1,1 | car1.CCU.sys1 | car1.LCU      | MDM9  | car8.CCU.sys1 | TXC   |
+      | car1.LCU.MDM9     | car8.CCU.sys2.TXC | 2,1,1,1,1,1,1,1 | car1.CCU.sys1 | car1.LCU      | MDM9  | car8.CCU.sys2 | TXC   |
+      | car1.LCU.MDM9     | car1.LCU.RXC      | -,1,1,1,1,1,1,1 | car1.CCU.sys1 | car1.LCU      | MDM9  | car1.LCU      | RXC   |
+      | car1.LCU.MDM9     | car2.LCU.RXC      | 2,1,1,1,1,1,1,1 | car1.CCU.sys1 | car1.LCU      | MDM9  | car2.LCU      | RXC   |
+      | car1.LCU.MDM9     | car3.LCU.RXC      | 2,1,1,1,1,1,1,1 | car1.CCU.sys1 | car1.LCU      | MDM9  | car3.LCU      | RXC   |
+      | car1.LCU.MDM9     | car4.LCU.RXC      | 2,1,1,1,1,1,1,1 | car1.CCU.sys1 | car1.LCU      | MDM9  | car4.LCU      | RXC   |
+      | car1.LCU.MDM9     | car5.LCU.RXC      | 2,1,1,1,1,1,1,1 | car1.CCU.sys1 | car1.LCU      | MDM9  | car5.LCU      | RXC   |
+      | car1.LCU.MDM9     | car6.LCU.RXC      | 2,1,1,1,1,1,1,1 | car1.CCU.sys1 | car1.LCU      | MDM9  | car6.LCU      | RXC   |
+      | car1.LCU.MDM9     | car7.LCU.RXC      | 2,1,1,1,1,1,1,1 | car1.CCU.sys1 | car1.LCU      | MDM9  | car7.LCU      | RXC   |
+      | car1.LCU.MDM9     | car8.LCU.RXC      | 2,1,1,1,1,1,1,1 | car1.CCU.sys1 | car1.LCU      | MDM9  | car8.LCU      | RXC   |
+      | car1.LCU.RXC      | car1.CCU.sys1.TXC | 1,1,1,1,1,1,1,1 | car1.CCU.sys2 | car1.LCU      | RXC   | car1.CCU.sys1 | TXC   |
+      | car1.LCU.RXC      | car1.CCU.sys2.TXC | 1,1,1,1,1,1,1,1 | car1.CCU.sys1 | car1.LCU      | RXC   | car1.CCU.sys2 | TXC   |
+      | car1.LCU.RXC      | car8.CCU.sys1.TXC | 1,1,1,1,1,1,1,1 | car1.CCU.sys1 | car1.LCU      | RXC   | car8.CCU.sys1 | TXC   |
+      | car1.LCU.RXC      | car8.CCU.sys2.TXC | 1,1,1,1,1,1,1,1 | car1.CCU.sys1 | car1.LCU      | RXC   | car8.CCU.sys2 | TXC   |
+      | car1.LCU.RXC      | car2.LCU.RXC      | 1,1,1,1,1,1,1,1 | car1.CCU.sys1 | car1.LCU      | RXC   | car2.LCU      | RXC   |
+      | car1.LCU.RXC      | car3.LCU.RXC      | 1,1,1,1,1,1,1,1 | car1.CCU.sys1 | car1.LCU      | RXC   | car3.LCU      | RXC   |
+      | car1.LCU.RXC      | car4.LCU.RXC      | 1,1,1,1,1,1,1,1 | car1.CCU.sys1 | car1.LCU      | RXC   | car4.LCU      | RXC   |
+      | car1.LCU.RXC      | car5.LCU.RXC      | 1,1,1,1,1,1,1,1 | car1.CCU.sys1 | car1.LCU      | RXC   | car5.LCU      | RXC   |
+      | car1.LCU.RXC      | car6.LCU.RXC      | 1,1,1,1,1,1,1,1 | car1.CCU.sys1 | car1.LCU      | RXC   | car6.LCU      | RXC   |
+      | car1.LCU.RXC      | car7.LCU.RXC      | 1,1,1,1,1,1,1,1 | car1.CCU.sys1 | car1.LCU      | RXC   | car7.LCU      | RXC   |
+      | car1.LCU.RXC      | car8.LCU.RXC      | 1,1,1,1,1,1,1,1 | car1.CCU.sys1 | car1.LCU      | RXC   | car8.LCU      | RXC   |
+      | car2.LCU.MDM9     | car1.CCU.sys1.TXC | 1,2,1,1,1,1,1,1 | car1.CCU.sys2 | car2.LCU      | MDM9  | car1.CCU.sys1 | TXC   |
+      | car2.LCU.MDM9     | car1.CCU.sys2.TXC | 1,2,1,1,1,1,1,1 | car1.CCU.sys1 | car2.LCU      | MDM9  | car1.CCU.sys2 | TXC   |
+      | car2.LCU.MDM9     | car8.CCU.sys1.TXC | 1,2,1,1,1,1,1,1 | car1.CCU.sys1 | car2.LCU      | MDM9  | car8.CCU.sys1 | TXC   |
+      | car2.LCU.MDM9     | car8.CCU.sys2.TXC | 1,2,1,1,1,1,1,1 | car1.CCU.sys1 | car2.LCU      | MDM9  | car8.CCU.sys2 | TXC   |
+      | car2.LCU.MDM9     | car1.LCU.RXC      | 1,2,1,1,1,1,1,1 | car1.CCU.sys1 | car2.LCU      | MDM9  | car1.LCU      | RXC   |
+      | car2.LCU.MDM9     | car2.LCU.RXC      | 1,-,1,1,1,1,1,1 | car1.CCU.sys1 | car2.LCU      | MDM9  | car2.LCU      | RXC   |
+      | car2.LCU.MDM9     | car3.LCU.RXC      | 1,2,1,1,1,1,1,1 | car1.CCU.sys1 | car2.LCU      | MDM9  | car3.LCU      | RXC   |
+      | car2.LCU.MDM9     | car4.LCU.RXC      | 1,2,1,1,1,1,1,1 | car1.CCU.sys1 | car2.LCU      | MDM9  | car4.LCU      | RXC   |
+      | car2.LCU.MDM9     | car5.LCU.RXC      | 1,2,1,1,1,1,1,1 | car1.CCU.sys1 | car2.LCU      | MDM9  | car5.LCU      | RXC   |
+      | car2.LCU.MDM9     | car6.LCU.RXC      | 1,2,1,1,1,1,1,1 | car1.CCU.sys1 | car2.LCU      | MDM9  | car6.LCU      | RXC   |
+      | car2.LCU.MDM9     | car7.LCU.RXC      | 1,2,1,1,1,1,1,1 | car1.CCU.sys1 | car2.LCU      | MDM9  | car7.LCU      | RXC   |
+      | car2.LCU.MDM9     | car8.LCU.RXC      | 1,2,1,1,1,1,1,1 | car1.CCU.sys1 | car2.LCU      | MDM9  | car8.LCU      | RXC   |
+      | car2.LCU.RXC      | car1.CCU.sys1.TXC | 1,1,1,1,1,1,1,1 | car1.CCU.sys2 | car2.LCU      | RXC   | car1.CCU.sys1 | TXC   |
+      | car2.LCU.RXC      | car1.CCU.sys2.TXC | 1,1,1,1,1,1,1,1 | car1.CCU.sys1 | car2.LCU      | RXC   | car1.CCU.sys2 | TXC   |
+      | car2.LCU.RXC      | car8.CCU.sys1.TXC | 1,1,1,1,1,1,1,1 | car1.CCU.sys1 | car2.LCU      | RXC   | car8.CCU.sys1 | TXC   |
+      | car2.LCU.RXC      | car8.CCU.sys2.TXC | 1,1,1,1,1,1,1,1 | car1.CCU.sys1 | car2.LCU      | RXC   | car8.CCU.sys2 | TXC   |
+      | car2.LCU.RXC      | car1.LCU.RXC      | 1,1,1,1,1,1,1,1 | car1.CCU.sys1 | car2.LCU      | RXC   | car1.LCU      | RXC   |
+      | car2.LCU.RXC      | car3.LCU.RXC      | 1,1,1,1,1,1,1,1 | car1.CCU.sys1 | car2.LCU      | RXC   | car3.LCU      | RXC   |
+      | car2.LCU.RXC      | car4.LCU.RXC      | 1,1,1,1,1,1,1,1 | car1.CCU.sys1 | car2.LCU      | RXC   | car4.LCU      | RXC   |
+      | car2.LCU.RXC      | car5.LCU.RXC      | 1,1,1,1,1,1,1,1 | car1.CCU.sys1 | car2.LCU      | RXC   | car5.LCU      | RXC   |
+      | car2.LCU.RXC      | car6.LCU.RXC      | 1,1,1,1,1,1,1,1 | car1.CCU.sys1 | car2.LCU      | RXC   | car6.LCU      | RXC   |
+      | car2.LCU.RXC      | car7.LCU.RXC      | 1,1,1,1,1,1,1,1 | car1.CCU.sys1 | car2.LCU      | RXC   | car7.LCU      | RXC   |
+      | car2.LCU.RXC      | car8.LCU.RXC      | 1,1,1,1,1,1,1,1 | car1.CCU.sys1 | car2.LCU      | RXC   | car8.LCU      | RXC   |
+      | car3.LCU.MDM9     | car1.CCU.sys1.TXC | 1,1,2,1,1,1,1,1 | car1.CCU.sys2 | car3.LCU      | MDM9  | car1.CCU.sys1 | TXC   |
+      | car3.LCU.MDM9     | car1.CCU.sys2.TXC | 1,1,2,1,1,1,1,1 | car1.CCU.sys1 | car3.LCU      | MDM9  | car1.CCU.sys2 | TXC   |
+      | car3.LCU.MDM9     | car8.CCU.sys1.TXC | 1,1,2,1,1,1,1,1 | car1.CCU.sys1 | car3.LCU      | MDM9  | car8.CCU.sys1 | TXC   |
+      | car3.LCU.MDM9     | car8.CCU.sys2.TXC | 1,1,2,1,1,1,1,1 | car1.CCU.sys1 | car3.LCU      | MDM9  | car8.CCU.sys2 | TXC   |
+      | car3.LCU.MDM9     | car1.LCU.RXC      | 1,1,2,1,1,1,1,1 | car1.CCU.sys1 | car3.LCU      | MDM9  | car1.LCU      | RXC   |
+      | car3.LCU.MDM9     | car2.LCU.RXC      | 1,1,2,1,1,1,1,1 | car1.CCU.sys1 | car3.LCU      | MDM9  | car2.LCU      | RXC   |
+      | car3.LCU.MDM9     | car3.LCU.RXC      | 1,1,-,1,1,1,1,1 | car1.CCU.sys1 | car3.LCU      | MDM9  | car3.LCU      | RXC   |
+      | car3.LCU.MDM9     | car4.LCU.RXC      | 1,1,2,1,1,1,1,1 | car1.CCU.sys1 | car3.LCU      | MDM9  | car4.LCU      | RXC   |
+      | car3.LCU.MDM9     | car5.LCU.RXC      | 1,1,2,1,1,1,1,1 | car1.CCU.sys1 | car3.LCU      | MDM9  | car5.LCU      | RXC   |
+      | car3.LCU.MDM9     | car6.LCU.RXC      | 1,1,2,1,1,1,1,1 | car1.CCU.sys1 | car3.LCU      | MDM9  | car6.LCU      | RXC   |
+      | car3.LCU.MDM9     | car7.LCU.RXC      | 1,1,2,1,1,1,1,1 | car1.CCU.sys1 | car3.LCU      | MDM9  | car7.LCU      | RXC   |
+      | car3.LCU.MDM9     | car8.LCU.RXC      | 1,1,2,1,1,1,1,1 | car1.CCU.sys1 | car3.LCU      | MDM9  | car8.LCU      | RXC   |
+      | car3.LCU.RXC      | car1.CCU.sys1.TXC | 1,1,1,1,1,1,1,1 | car1.CCU.sys2 | car3.LCU      | RXC   | car1.CCU.sys1 | TXC   |
+      | car3.LCU.RXC      | car1.CCU.sys2.TXC | 1,1,1,1,1,1,1,1 | car1.CCU.sys1 | car3.LCU      | RXC   | car1.CCU.sys2 | TXC   |
+      | car3.LCU.RXC      | car8.CCU.sys1.TXC | 1,1,1,1,1,1,1,1 | car1.CCU.sys1 | car3.LCU      | RXC   | car8.CCU.sys1 | TXC   |
+      | car3.LCU.RXC      | car8.CCU.sys2.TXC | 1,1,1,1,1,1,1,1 | car1.CCU.sys1 | car3.LCU      | RXC   | car8.CCU.sys2 | TXC   |
+      | car3.LCU.RXC      | car1.LCU.RXC      | 1,1,1,1,1,1,1,1 | car1.CCU.sys1 | car3.LCU      | RXC   | car1.LCU      | RXC   |
+      | car3.LCU.RXC      | car2.LCU.RXC      | 1,1,1,1,1,1,1,1 | car1.CCU.sys1 | car3.LCU      | RXC   | car2.LCU      | RXC   |
+      | car3.LCU.RXC      | car4.LCU.RXC      | 1,1,1,1,1,1,1,1 | car1.CCU.sys1 | car3.LCU      | RXC   | car4.LCU      | RXC   |
+      | car3.LCU.RXC      | car5.LCU.RXC      | 1,1,1,1,1,1,1,1 | car1.CCU.sys1 | car3.LCU      | RXC   | car5.LCU      | RXC   |
+      | car3.LCU.RXC      | car6.LCU.RXC      | 1,1,1,1,1,1,1,1 | car1.CCU.sys1 | car3.LCU      | RXC   | car6.LCU      | RXC   |
+      | car3.LCU.RXC      | car7.LCU.RXC      | 1,1,1,1,1,1,1,1 | car1.CCU.sys1 | car3.LCU      | RXC   | car7.LCU      | RXC   |
+      | car3.LCU.RXC      | car8.LCU.RXC      | 1,1,1,1,1,1,1,1 | car1.CCU.sys1 | car3.LCU      | RXC   | car8.LCU      | RXC   |
+      | car4.LCU.MDM9     | car1.CCU.sys1.TXC | 1,1,1,2,1,1,1,1 | car1.CCU.sys2 | car4.LCU      | MDM9  | car1.CCU.sys1 | TXC   |
+      | car4.LCU.MDM9     | car1.CCU.sys2.TXC | 1,1,1,2,1,1,1,1 | car1.CCU.sys1 | car4.LCU      | MDM9  | car1.CCU.sys2 | TXC   |
+      | car4.LCU.MDM9     | car8.CCU.sys1.TXC | 1,1,1,2,1,1,1,1 | car1.CCU.sys1 | car4.LCU      | MDM9  | car8.CCU.sys1 | TXC   |
+      | car4.LCU.MDM9     | car8.CCU.sys2.TXC | 1,1,1,2,1,1,1,1 | car1.CCU.sys1 | car4.LCU      | MDM9  | car8.CCU.sys2 | TXC   |
+      | car4.LCU.MDM9     | car1.LCU.RXC      | 1,1,1,2,1,1,1,1 | car1.CCU.sys1 | car4.LCU      | MDM9  | car1.LCU      | RXC   |
+      | car4.LCU.MDM9     | car2.LCU.RXC      | 1,1,1,2,1,1,1,1 | car1.CCU.sys1 | car4.LCU      | MDM9  | car2.LCU      | RXC   |
+      | car4.LCU.MDM9     | car3.LCU.RXC      | 1,1,1,2,1,1,1,1 | car1.CCU.sys1 | car4.LCU      | MDM9  | car3.LCU      | RXC   |
+      | car4.LCU.MDM9     | car4.LCU.RXC      | 1,1,1,-,1,1,1,1 | car1.CCU.sys1 | car4.LCU      | MDM9  | car4.LCU      | RXC   |
+      | car4.LCU.MDM9     | car5.LCU.RXC      | 1,1,1,2,1,1,1,1 | car1.CCU.sys1 | car4.LCU      | MDM9  | car5.LCU      | RXC   |
+      | car4.LCU.MDM9     | car6.LCU.RXC      | 1,1,1,2,1,1,1,1 | car1.CCU.sys1 | car4.LCU      | MDM9  | car6.LCU      | RXC   |
+      | car4.LCU.MDM9     | car7.LCU.RXC      | 1,1,1,2,1,1,1,1 | car1.CCU.sys1 | car4.LCU      | MDM9  | car7.LCU      | RXC   |
+      | car4.LCU.MDM9     | car8.LCU.RXC      | 1,1,1,2,1,1,1,1 | car1.CCU.sys1 | car4.LCU      | MDM9  | car8.LCU      | RXC   |
+      | car4.LCU.RXC      | car1.CCU.sys1.TXC | 1,1,1,1,1,1,1,1 | car1.CCU.sys2 | car4.LCU      | RXC   | car1.CCU.sys1 | TXC   |
+      | car4.LCU.RXC      | car1.CCU.sys2.TXC | 1,1,1,1,1,1,1,1 | car1.CCU.sys1 | car4.LCU      | RXC   | car1.CCU.sys2 | TXC   |
+      | car4.LCU.RXC      | car8.CCU.sys1.TXC | 1,1,1,1,1,1,1,1 | car1.CCU.sys1 | car4.LCU      | RXC   | car8.CCU.sys1 | TXC   |
+      | car4.LCU.RXC      | car8.CCU.sys2.TXC | 1,1,1,1,1,1,1,1 | car1.CCU.sys1 | car4.LCU      | RXC   | car8.CCU.sys2 | TXC   |
+      | car4.LCU.RXC      | car1.LCU.RXC      | 1,1,1,1,1,1,1,1 | car1.CCU.sys1 | car4.LCU      | RXC   | car1.LCU      | RXC   |
+      | car4.LCU.RXC      | car2.LCU.RXC      | 1,1,1,1,1,1,1,1 | car1.CCU.sys1 | car4.LCU      | RXC   | car2.LCU      | RXC   |
+      | car4.LCU.RXC      | car3.LCU.RXC      | 1,1,1,1,1,1,1,1 | car1.CCU.sys1 | car4.LCU      | RXC   | car3.LCU      | RXC   |
+      | car4.LCU.RXC      | car5.LCU.RXC      | 1,1,1,1,1,1,1,1 | car1.CCU.sys1 | car4.LCU      | RXC   | car5.LCU      | RXC   |
+      | car4.LCU.RXC      | car6.LCU.RXC      | 1,1,1,1,1,1,1,1 | car1.CCU.sys1 | car4.LCU      | RXC   | car6.LCU      | RXC   |
+      | car4.LCU.RXC      | car7.LCU.RXC      | 1,1,1,1,1,1,1,1 | car1.CCU.sys1 | car4.LCU      | RXC   | car7.LCU      | RXC   |
+      | car4.LCU.RXC      | car8.LCU.RXC      | 1,1,1,1,1,1,1,1 | car1.CCU.sys1 | car4.LCU      | RXC   | car8.LCU      | RXC   |
+      | car5.LCU.MDM9     | car1.CCU.sys1.TXC | 1,1,1,1,2,1,1,1 | car1.CCU.sys2 | car5.LCU      | MDM9  | car1.CCU.sys1 | TXC   |
+      | car5.LCU.MDM9     | car1.CCU.sys2.TXC | 1,1,1,1,2,1,1,1 | car1.CCU.sys1 | car5.LCU      | MDM9  | car1.CCU.sys2 | TXC   |
+      | car5.LCU.MDM9     | car8.CCU.sys1.TXC | 1,1,1,1,2,1,1,1 | car1.CCU.sys1 | car5.LCU      | MDM9  | car8.CCU.sys1 | TXC   |
+      | car5.LCU.MDM9     | car8.CCU.sys2.TXC | 1,1,1,1,2,1,1,1 | car1.CCU.sys1 | car5.LCU      | MDM9  | car8.CCU.sys2 | TXC   |
+      | car5.LCU.MDM9     | car1.LCU.RXC      | 1,1,1,1,2,1,1,1 | car1.CCU.sys1 | car5.LCU      | MDM9  | car1.LCU      | RXC   |
+      | car5.LCU.MDM9     | car2.LCU.RXC      | 1,1,1,1,2,1,1,1 | car1.CCU.sys1 | car5.LCU      | MDM9  | car2.LCU      | RXC   |
+      | car5.LCU.MDM9     | car3.LCU.RXC      | 1,1,1,1,2,1,1,1 | car1.CCU.sys1 | car5.LCU      | MDM9  | car3.LCU      | RXC   |
+      | car5.LCU.MDM9     | car4.LCU.RXC      | 1,1,1,1,2,1,1,1 | car1.CCU.sys1 | car5.LCU      | MDM9  | car4.LCU      | RXC   |
+      | car5.LCU.MDM9     | car5.LCU.RXC      | 1,1,1,1,-,1,1,1 | car1.CCU.sys1 | car5.LCU      | MDM9  | car5.LCU      | RXC   |
+      | car5.LCU.MDM9     | car6.LCU.RXC      | 1,1,1,1,2,1,1,1 | car1.CCU.sys1 | car5.LCU      | MDM9  | car6.LCU      | RXC   |
+      | car5.LCU.MDM9     | car7.LCU.RXC      | 1,1,1,1,2,1,1,1 | car1.CCU.sys1 | car5.LCU      | MDM9  | car7.LCU      | RXC   |
+      | car5.LCU.MDM9     | car8.LCU.RXC      | 1,1,1,1,2,1,1,1 | car1.CCU.sys1 | car5.LCU      | MDM9  | car8.LCU      | RXC   |
+      | car5.LCU.RXC      | car1.CCU.sys1.TXC | 1,1,1,1,1,1,1,1 | car1.CCU.sys2 | car5.LCU      | RXC   | car1.CCU.sys1 | TXC   |
+      | car5.LCU.RXC      | car1.CCU.sys2.TXC | 1,1,1,1,1,1,1,1 | car1.CCU.sys1 | car5.LCU      | RXC   | car1.CCU.sys2 | TXC   |
+      | car5.LCU.RXC      | car8.CCU.sys1.TXC | 1,1,1,1,1,1,1,1 | car1.CCU.sys1 | car5.LCU      | RXC   | car8.CCU.sys1 | TXC   |
+      | car5.LCU.RXC      | car8.CCU.sys2.TXC | 1,1,1,1,1,1,1,1 | car1.CCU.sys1 | car5.LCU      | RXC   | car8.CCU.sys2 | TXC   |
+      | car5.LCU.RXC      | car1.LCU.RXC      | 1,1,1,1,1,1,1,1 | car1.CCU.sys1 | car5.LCU      | RXC   | car1.LCU      | RXC   |
+      | car5.LCU.RXC      | car2.LCU.RXC      | 1,1,1,1,1,1,1,1 | car1.CCU.sys1 | car5.LCU      | RXC   | car2.LCU      | RXC   |
+      | car5.LCU.RXC      | car3.LCU.RXC      | 1,1,1,1,1,1,1,1 | car1.CCU.sys1 | car5.LCU      | RXC   | car3.LCU      | RXC   |
+      | car5.LCU.RXC      | car4.LCU.RXC      | 1,1,1,1,1,1,1,1 | car1.CCU.sys1 | car5.LCU      | RXC   | car4.LCU      | RXC   |
+      | car5.LCU.RXC      | car6.LCU.RXC      | 1,1,1,1,1,1,1,1 | car1.CCU.sys1 | car5.LCU      | RXC   | car6.LCU      | RXC   |
+      | car5.LCU.RXC      | car7.LCU.RXC      | 1,1,1,1,1,1,1,1 | car1.CCU.sys1 | car5.LCU      | RXC   | car7.LCU      | RXC   |
+      | car5.LCU.RXC      | car8.LCU.RXC      | 1,1,1,1,1,1,1,1 | car1.CCU.sys1 | car5.LCU      | RXC   | car8.LCU      | RXC   |
+      | car6.LCU.MDM9     | car1.CCU.sys1.TXC | 1,1,1,1,1,2,1,1 | car1.CCU.sys2 | car6.LCU      | MDM9  | car1.CCU.sys1 | TXC   |
+      | car6.LCU.MDM9     | car1.CCU.sys2.TXC | 1,1,1,1,1,2,1,1 | car1.CCU.sys1 | car6.LCU      | MDM9  | car1.CCU.sys2 | TXC   |
+      | car6.LCU.MDM9     | car8.CCU.sys1.TXC | 1,1,1,1,1,2,1,1 | car1.CCU.sys1 | car6.LCU      | MDM9  | car8.CCU.sys1 | TXC   |
+      | car6.LCU.MDM9     | car8.CCU.sys2.TXC | 1,1,1,1,1,2,1,1 | car1.CCU.sys1 | car6.LCU      | MDM9  | car8.CCU.sys2 | TXC   |
+      | car6.LCU.MDM9     | car1.LCU.RXC      | 1,1,1,1,1,2,1,1 | car1.CCU.sys1 | car6.LCU      | MDM9  | car1.LCU      | RXC   |
+      | car6.LCU.MDM9     | car2.LCU.RXC      | 1,1,1,1,1,2,1,1 | car1.CCU.sys1 | car6.LCU      | MDM9  | car2.LCU      | RXC   |
+      | car6.LCU.MDM9     | car3.LCU.RXC      | 1,1,1,1,1,2,1,1 | car1.CCU.sys1 | car6.LCU      | MDM9  | car3.LCU      | RXC   |
+      | car6.LCU.MDM9     | car4.LCU.RXC      | 1,1,1,1,1,2,1,1 | car1.CCU.sys1 | car6.LCU      | MDM9  | car4.LCU      | RXC   |
+      | car6.LCU.MDM9     | car5.LCU.RXC      | 1,1,1,1,1,2,1,1 | car1.CCU.sys1 | car6.LCU      | MDM9  | car5.LCU      | RXC   |
+      | car6.LCU.MDM9     | car6.LCU.RXC      | 1,1,1,1,1,-,1,1 | car1.CCU.sys1 | car6.LCU      | MDM9  | car6.LCU      | RXC   |
+      | car6.LCU.MDM9     | car7.LCU.RXC      | 1,1,1,1,1,2,1,1 | car1.CCU.sys1 | car6.LCU      | MDM9  | car7.LCU      | RXC   |
+      | car6.LCU.MDM9     | car8.LCU.RXC      | 1,1,1,1,1,2,1,1 | car1.CCU.sys1 | car6.LCU      | MDM9  | car8.LCU      | RXC   |
+      | car6.LCU.RXC      | car1.CCU.sys1.TXC | 1,1,1,1,1,1,1,1 | car1.CCU.sys2 | car6.LCU      | RXC   | car1.CCU.sys1 | TXC   |
+      | car6.LCU.RXC      | car1.CCU.sys2.TXC | 1,1,1,1,1,1,1,1 | car1.CCU.sys1 | car6.LCU      | RXC   | car1.CCU.sys2 | TXC   |
+      | car6.LCU.RXC      | car8.CCU.sys1.TXC | 1,1,1,1,1,1,1,1 | car1.CCU.sys1 | car6.LCU      | RXC   | car8.CCU.sys1 | TXC   |
+      | car6.LCU.RXC      | car8.CCU.sys2.TXC | 1,1,1,1,1,1,1,1 | car1.CCU.sys1 | car6.LCU      | RXC   | car8.CCU.sys2 | TXC   |
+      | car6.LCU.RXC      | car1.LCU.RXC      | 1,1,1,1,1,1,1,1 | car1.CCU.sys1 | car6.LCU      | RXC   | car1.LCU      | RXC   |
+      | car6.LCU.RXC      | car2.LCU.RXC      | 1,1,1,1,1,1,1,1 | car1.CCU.sys1 | car6.LCU      | RXC   | car2.LCU      | RXC   |
+      | car6.LCU.RXC      | car3.LCU.RXC      | 1,1,1,1,1,1,1,1 | car1.CCU.sys1 | car6.LCU      | RXC   | car3.LCU      | RXC   |
+      | car6.LCU.RXC      | car4.LCU.RXC      | 1,1,1,1,1,1,1,1 | car1.CCU.sys1 | car6.LCU      | RXC   | car4.LCU      | RXC   |
+      | car6.LCU.RXC      | car5.LCU.RXC      | 1,1,1,1,1,1,1,1 | car1.CCU.sys1 | car6.LCU      | RXC   | car5.LCU      | RXC   |
+      | car6.LCU.RXC      | car7.LCU.RXC      | 1,1,1,1,1,1,1,1 | car1.CCU.sys1 | car6.LCU      | RXC   | car7.LCU      | RXC   |
+      | car6.LCU.RXC      | car8.LCU.RXC      | 1,1,1,1,1,1,1,1 | car1.CCU.sys1 | car6.LCU      | RXC   | car8.LCU      | RXC   |
+      | car7.LCU.MDM9     | car1.CCU.sys1.TXC | 1,1,1,1,1,1,2,1 | car1.CCU.sys2 | car7.LCU      | MDM9  | car1.CCU.sys1 | TXC   |
+      | car7.LCU.MDM9     | car1.CCU.sys2.TXC | 1,1,1,1,1,1,2,1 | car1.CCU.sys1 | car7.LCU      | MDM9  | car1.CCU.sys2 | TXC   |
+      | car7.LCU.MDM9     | car8.CCU.sys1.TXC | 1,1,1,1,1,1,2,1 | car1.CCU.sys1 | car7.LCU      | MDM9  | car8.CCU.sys1 | TXC   |
+      | car7.LCU.MDM9     | car8.CCU.sys2.TXC | 1,1,1,1,1,1,2,1 | car1.CCU.sys1 | car7.LCU      | MDM9  | car8.CCU.sys2 | TXC   |
+      | car7.LCU.MDM9     | car1.LCU.RXC      | 1,1,1,1,1,1,2,1 | car1.CCU.sys1 | car7.LCU      | MDM9  | car1.LCU      | RXC   |
+      | car7.LCU.MDM9     | car2.LCU.RXC      | 1,1,1,1,1,1,2,1 | car1.CCU.sys1 | car7.LCU      | MDM9  | car2.LCU      | RXC   |
+      | car7.LCU.MDM9     | car3.LCU.RXC      | 1,1,1,1,1,1,2,1 | car1.CCU.sys1 | car7.LCU      | MDM9  | car3.LCU      | RXC   |
+      | car7.LCU.MDM9     | car4.LCU.RXC      | 1,1,1,1,1,1,2,1 | car1.CCU.sys1 | car7.LCU      | MDM9  | car4.LCU      | RXC   |
+      | car7.LCU.MDM9     | car5.LCU.RXC      | 1,1,1,1,1,1,2,1 | car1.CCU.sys1 | car7.LCU      | MDM9  | car5.LCU      | RXC   |
+      | car7.LCU.MDM9     | car6.LCU.RXC      | 1,1,1,1,1,1,2,1 | car1.CCU.sys1 | car7.LCU      | MDM9  | car6.LCU      | RXC   |
+      | car7.LCU.MDM9     | car7.LCU.RXC      | 1,1,1,1,1,1,-,1 | car1.CCU.sys1 | car7.LCU      | MDM9  | car7.LCU      | RXC   |
+      | car7.LCU.MDM9     | car8.LCU.RXC      | 1,1,1,1,1,1,2,1 | car1.CCU.sys1 | car7.LCU      | MDM9  | car8.LCU      | RXC   |
+      | car7.LCU.RXC      | car1.CCU.sys1.TXC | 1,1,1,1,1,1,1,1 | car1.CCU.sys2 | car7.LCU      | RXC   | car1.CCU.sys1 | TXC   |
+      | car7.LCU.RXC      | car1.CCU.sys2.TXC | 1,1,1,1,1,1,1,1 | car1.CCU.sys1 | car7.LCU      | RXC   | car1.CCU.sys2 | TXC   |
+      | car7.LCU.RXC      | car8.CCU.sys1.TXC | 1,1,1,1,1,1,1,1 | car1.CCU.sys1 | car7.LCU      | RXC   | car8.CCU.sys1 | TXC   |
+      | car7.LCU.RXC      | car8.CCU.sys2.TXC | 1,1,1,1,1,1,1,1 | car1.CCU.sys1 | car7.LCU      | RXC   | car8.CCU.sys2 | TXC   |
+      | car7.LCU.RXC      | car1.LCU.RXC      | 1,1,1,1,1,1,1,1 | car1.CCU.sys1 | car7.LCU      | RXC   | car1.LCU      | RXC   |
+      | car7.LCU.RXC      | car2.LCU.RXC      | 1,1,1,1,1,1,1,1 | car1.CCU.sys1 | car7.LCU      | RXC   | car2.LCU      | RXC   |
+      | car7.LCU.RXC      | car3.LCU.RXC      | 1,1,1,1,1,1,1,1 | car1.CCU.sys1 | car7.LCU      | RXC   | car3.LCU      | RXC   |
+      | car7.LCU.RXC      | car4.LCU.RXC      | 1,1,1,1,1,1,1,1 | car1.CCU.sys1 | car7.LCU      | RXC   | car4.LCU      | RXC   |
+      | car7.LCU.RXC      | car5.LCU.RXC      | 1,1,1,1,1,1,1,1 | car1.CCU.sys1 | car7.LCU      | RXC   | car5.LCU      | RXC   |
+      | car7.LCU.RXC      | car6.LCU.RXC      | 1,1,1,1,1,1,1,1 | car1.CCU.sys1 | car7.LCU      | RXC   | car6.LCU      | RXC   |
+      | car7.LCU.RXC      | car8.LCU.RXC      | 1,1,1,1,1,1,1,1 | car1.CCU.sys1 | car7.LCU      | RXC   | car8.LCU      | RXC   |
+      | car8.LCU.MDM9     | car1.CCU.sys1.TXC | 1,1,1,1,1,1,1,2 | car1.CCU.sys2 | car8.LCU      | MDM9  | car1.CCU.sys1 | TXC   |
+      | car8.LCU.MDM9     | car1.CCU.sys2.TXC | 1,1,1,1,1,1,1,2 | car1.CCU.sys1 | car8.LCU      | MDM9  | car1.CCU.sys2 | TXC   |
+      | car8.LCU.MDM9     | car8.CCU.sys1.TXC | 1,1,1,1,1,1,1,2 | car1.CCU.sys1 | car8.LCU      | MDM9  | car8.CCU.sys1 | TXC   |
+      | car8.LCU.MDM9     | car8.CCU.sys2.TXC | 1,1,1,1,1,1,1,2 | car1.CCU.sys1 | car8.LCU      | MDM9  | car8.CCU.sys2 | TXC   |
+      | car8.LCU.MDM9     | car1.LCU.RXC      | 1,1,1,1,1,1,1,2 | car1.CCU.sys1 | car8.LCU      | MDM9  | car1.LCU      | RXC   |
+      | car8.LCU.MDM9     | car2.LCU.RXC      | 1,1,1,1,1,1,1,2 | car1.CCU.sys1 | car8.LCU      | MDM9  | car2.LCU      | RXC   |
+      | car8.LCU.MDM9     | car3.LCU.RXC      | 1,1,1,1,1,1,1,2 | car1.CCU.sys1 | car8.LCU      | MDM9  | car3.LCU      | RXC   |
+      | car8.LCU.MDM9     | car4.LCU.RXC      | 1,1,1,1,1,1,1,2 | car1.CCU.sys1 | car8.LCU      | MDM9  | car4.LCU      | RXC   |
+      | car8.LCU.MDM9     | car5.LCU.RXC      | 1,1,1,1,1,1,1,2 | car1.CCU.sys1 | car8.LCU      | MDM9  | car5.LCU      | RXC   |
+      | car8.LCU.MDM9     | car6.LCU.RXC      | 1,1,1,1,1,1,1,2 | car1.CCU.sys1 | car8.LCU      | MDM9  | car6.LCU      | RXC   |
+      | car8.LCU.MDM9     | car7.LCU.RXC      | 1,1,1,1,1,1,1,2 | car1.CCU.sys1 | car8.LCU      | MDM9  | car7.LCU      | RXC   |
+      | car8.LCU.MDM9     | car8.LCU.RXC      | 1,1,1,1,1,1,1,- | car1.CCU.sys1 | car8.LCU      | MDM9  | car8.LCU      | RXC   |
+      | car8.LCU.RXC      | car1.CCU.sys1.TXC | 1,1,1,1,1,1,1,1 | car1.CCU.sys2 | car8.LCU      | RXC   | car1.CCU.sys1 | TXC   |
+      | car8.LCU.RXC      | car1.CCU.sys2.TXC | 1,1,1,1,1,1,1,1 | car1.CCU.sys1 | car8.LCU      | RXC   | car1.CCU.sys2 | TXC   |
+      | car8.LCU.RXC      | car8.CCU.sys1.TXC | 1,1,1,1,1,1,1,1 | car1.CCU.sys1 | car8.LCU      | RXC   | car8.CCU.sys1 | TXC   |
+      | car8.LCU.RXC      | car8.CCU.sys2.TXC | 1,1,1,1,1,1,1,1 | car1.CCU.sys1 | car8.LCU      | RXC   | car8.CCU.sys2 | TXC   |
+      | car8.LCU.RXC      | car1.LCU.RXC      | 1,1,1,1,1,1,1,1 | car1.CCU.sys1 | car8.LCU      | RXC   | car1.LCU      | RXC   |
+      | car8.LCU.RXC      | car2.LCU.RXC      | 1,1,1,1,1,1,1,1 | car1.CCU.sys1 | car8.LCU      | RXC   | car2.LCU      | RXC   |
+      | car8.LCU.RXC      | car3.LCU.RXC      | 1,1,1,1,1,1,1,1 | car1.CCU.sys1 | car8.LCU      | RXC   | car3.LCU      | RXC   |
+      | car8.LCU.RXC      | car4.LCU.RXC      | 1,1,1,1,1,1,1,1 | car1.CCU.sys1 | car8.LCU      | RXC   | car4.LCU      | RXC   |
+      | car8.LCU.RXC      | car5.LCU.RXC      | 1,1,1,1,1,1,1,1 | car1.CCU.sys1 | car8.LCU      | RXC   | car5.LCU      | RXC   |
+      | car8.LCU.RXC      | car6.LCU.RXC      | 1,1,1,1,1,1,1,1 | car1.CCU.sys1 | car8.LCU      | RXC   | car6.LCU      | RXC   |
+      | car8.LCU.RXC      | car7.LCU.RXC      | 1,1,1,1,1,1,1,1 | car1.CCU.sys1 | car8.LCU      | RXC   | car7.LCU      | RXC   |
+      | car8.CCU.sys2.TXC | car1.CCU.sys1.TXC | 1,1,1,1,1,1,1,1 | car1.CCU.sys2 | car8.CCU.sys2 | TXC   | car1.CCU.sys1 | TXC   |
+      | car8.CCU.sys2.TXC | car1.CCU.sys2.TXC | 1,1,1,1,1,1,1,1 | car1.CCU.sys1 | car8.CCU.sys2 | TXC   | car1.CCU.sys2 | TXC   |
+      | car8.CCU.sys2.TXC | car8.CCU.sys1.TXC | 1,1,1,1,1,1,1,1 | car1.CCU.sys1 | car8.CCU.sys2 | TXC   | car8.CCU.sys1 | TXC   |
+      | car8.CCU.sys2.TXC | car1.LCU.RXC      | 1,1,1,1,1,1,1,1 | car1.CCU.sys1 | car8.CCU.sys2 | TXC   | car1.LCU      | RXC   |
+      | car8.CCU.sys2.TXC | car2.LCU.RXC      | 1,1,1,1,1,1,1,1 | car1.CCU.sys1 | car8.CCU.sys2 | TXC   | car2.LCU      | RXC   |
+      | car8.CCU.sys2.TXC | car3.LCU.RXC      | 1,1,1,1,1,1,1,1 | car1.CCU.sys1 | car8.CCU.sys2 | TXC   | car3.LCU      | RXC   |
+      | car8.CCU.sys2.TXC | car4.LCU.RXC      | 1,1,1,1,1,1,1,1 | car1.CCU.sys1 | car8.CCU.sys2 | TXC   | car4.LCU      | RXC   |
+      | car8.CCU.sys2.TXC | car5.LCU.RXC      | 1,1,1,1,1,1,1,1 | car1.CCU.sys1 | car8.CCU.sys2 | TXC   | car5.LCU      | RXC   |
+      | car8.CCU.sys2.TXC | car6.LCU.RXC      | 1,1,1,1,1,1,1,1 | car1.CCU.sys1 | car8.CCU.sys2 | TXC   | car6.LCU      | RXC   |
+      | car8.CCU.sys2.TXC | car7.LCU.RXC      | 1,1,1,1,1,1,1,1 | car1.CCU.sys1 | car8.CCU.sys2 | TXC   | car7.LCU      | RXC   |
+      | car8.CCU.sys2.TXC | car8.LCU.RXC      | 1,1,1,1,1,1,1,1 | car1.CCU.sys1 | car8.CCU.sys2 | TXC   | car8.LCU      | RXC   |
+      | car8.CCU.sys1.TXC | car1.CCU.sys1.TXC | 1,1,1,1,1,1,1,1 | car1.CCU.sys2 | car8.CCU.sys1 | TXC   | car1.CCU.sys1 | TXC   |
+      | car8.CCU.sys1.TXC | car1.CCU.sys2.TXC | 1,1,1,1,1,1,1,1 | car1.CCU.sys1 | car8.CCU.sys1 | TXC   | car1.CCU.sys2 | TXC   |
+      | car8.CCU.sys1.TXC | car8.CCU.sys2.TXC | 1,1,1,1,1,1,1,1 | car1.CCU.sys1 | car8.CCU.sys1 | TXC   | car8.CCU.sys2 | TXC   |
+      | car8.CCU.sys1.TXC | car1.LCU.RXC      | 1,1,1,1,1,1,1,1 | car1.CCU.sys1 | car8.CCU.sys1 | TXC   | car1.LCU      | RXC   |
+      | car8.CCU.sys1.TXC | car2.LCU.RXC      | 1,1,1,1,1,1,1,1 | car1.CCU.sys1 | car8.CCU.sys1 | TXC   | car2.LCU      | RXC   |
+      | car8.CCU.sys1.TXC | car3.LCU.RXC      | 1,1,1,1,1,1,1,1 | car1.CCU.sys1 | car8.CCU.sys1 | TXC   | car3.LCU      | RXC   |
+      | car8.CCU.sys1.TXC | car4.LCU.RXC      | 1,1,1,1,1,1,1,1 | car1.CCU.sys1 | car8.CCU.sys1 | TXC   | car4.LCU      | RXC   |
+      | car8.CCU.sys1.TXC | car5.LCU.RXC      | 1,1,1,1,1,1,1,1 | car1.CCU.sys1 | car8.CCU.sys1 | TXC   | car5.LCU      | RXC   |
+      | car8.CCU.sys1.TXC | car6.LCU.RXC      | 1,1,1,1,1,1,1,1 | car1.CCU.sys1 | car8.CCU.sys1 | TXC   | car6.LCU      | RXC   |
+      | car8.CCU.sys1.TXC | car7.LCU.RXC      | 1,1,1,1,1,1,1,1 | car1.CCU.sys1 | car8.CCU.sys1 | TXC   | car7.LCU      | RXC   |
+      | car8.CCU.sys1.TXC | car8.LCU.RXC      | 1,1,1,1,1,1,1,1 | car1.CCU.sys1 | car8.CCU.sys1 | TXC   | car8.LCU      | RXC   |
 
   @req:NET-03 @req:CMD-01 @req:CMD-02 @req:CMD-03 @req:CMD-04 @req:RED-01 @req:RED-02
   Scenario Outline: F-NET-32 Supply <supply1> off and supply <supply2> off: each car by the path left to it
@@ -2982,280 +3081,311 @@ Feature: F-NET-32 Double-fault campaign, 8-car set
     And no command over path 2 or 3 ever carried more than the traction and brake steps A and B
 
     Examples:
-      | supply1           | supply2           | paths           |
-      | car1.CCU.sys1     | car1.CCU.sys2     | 3,3,3,3,3,3,3,3 |
-      | car1.CCU.sys1     | car1.CCU.sys1.TXC | 1,1,1,1,1,1,1,1 |
-      | car1.CCU.sys1     | car1.CCU.sys2.TXC | 3,3,3,3,3,3,3,3 |
-      | car1.CCU.sys1     | car8.CCU.sys1     | 1,1,1,1,1,1,1,1 |
-      | car1.CCU.sys1     | car8.CCU.sys2     | 1,1,1,1,1,1,1,1 |
-      | car1.CCU.sys1     | car8.CCU.sys1.TXC | 1,1,1,1,1,1,1,1 |
-      | car1.CCU.sys1     | car8.CCU.sys2.TXC | 1,1,1,1,1,1,1,1 |
-      | car1.CCU.sys1     | car1.LCU          | 3,3,3,3,3,3,3,3 |
-      | car1.CCU.sys1     | car1.LCU.RXC      | 1,1,1,1,1,1,1,1 |
-      | car1.CCU.sys1     | car2.LCU          | 1,3,3,3,3,3,3,3 |
-      | car1.CCU.sys1     | car2.LCU.RXC      | 1,1,1,1,1,1,1,1 |
-      | car1.CCU.sys1     | car3.LCU          | 1,1,3,3,3,3,3,3 |
-      | car1.CCU.sys1     | car3.LCU.RXC      | 1,1,1,1,1,1,1,1 |
-      | car1.CCU.sys1     | car4.LCU          | 1,1,1,3,3,3,3,3 |
-      | car1.CCU.sys1     | car4.LCU.RXC      | 1,1,1,1,1,1,1,1 |
-      | car1.CCU.sys1     | car5.LCU          | 1,1,1,1,3,3,3,3 |
-      | car1.CCU.sys1     | car5.LCU.RXC      | 1,1,1,1,1,1,1,1 |
-      | car1.CCU.sys1     | car6.LCU          | 1,1,1,1,1,3,3,3 |
-      | car1.CCU.sys1     | car6.LCU.RXC      | 1,1,1,1,1,1,1,1 |
-      | car1.CCU.sys1     | car7.LCU          | 1,1,1,1,1,1,3,3 |
-      | car1.CCU.sys1     | car7.LCU.RXC      | 1,1,1,1,1,1,1,1 |
-      | car1.CCU.sys1     | car8.LCU          | 1,1,1,1,1,1,1,3 |
-      | car1.CCU.sys1     | car8.LCU.RXC      | 1,1,1,1,1,1,1,1 |
-      | car1.CCU.sys2     | car1.CCU.sys1.TXC | -,-,-,-,-,-,-,- |
-      | car1.CCU.sys2     | car1.CCU.sys2.TXC | 1,1,1,1,1,1,1,1 |
-      | car1.CCU.sys2     | car8.CCU.sys1     | 3,3,3,3,3,3,3,3 |
-      | car1.CCU.sys2     | car8.CCU.sys2     | 3,3,3,3,3,3,3,3 |
-      | car1.CCU.sys2     | car8.CCU.sys1.TXC | 1,1,1,1,1,1,1,1 |
-      | car1.CCU.sys2     | car8.CCU.sys2.TXC | 1,1,1,1,1,1,1,1 |
-      | car1.CCU.sys2     | car1.LCU          | 3,1,1,1,1,1,1,1 |
-      | car1.CCU.sys2     | car1.LCU.RXC      | 1,1,1,1,1,1,1,1 |
-      | car1.CCU.sys2     | car2.LCU          | 3,3,1,1,1,1,1,1 |
-      | car1.CCU.sys2     | car2.LCU.RXC      | 1,1,1,1,1,1,1,1 |
-      | car1.CCU.sys2     | car3.LCU          | 3,3,3,1,1,1,1,1 |
-      | car1.CCU.sys2     | car3.LCU.RXC      | 1,1,1,1,1,1,1,1 |
-      | car1.CCU.sys2     | car4.LCU          | 3,3,3,3,1,1,1,1 |
-      | car1.CCU.sys2     | car4.LCU.RXC      | 1,1,1,1,1,1,1,1 |
-      | car1.CCU.sys2     | car5.LCU          | 3,3,3,3,3,1,1,1 |
-      | car1.CCU.sys2     | car5.LCU.RXC      | 1,1,1,1,1,1,1,1 |
-      | car1.CCU.sys2     | car6.LCU          | 3,3,3,3,3,3,1,1 |
-      | car1.CCU.sys2     | car6.LCU.RXC      | 1,1,1,1,1,1,1,1 |
-      | car1.CCU.sys2     | car7.LCU          | 3,3,3,3,3,3,3,1 |
-      | car1.CCU.sys2     | car7.LCU.RXC      | 1,1,1,1,1,1,1,1 |
-      | car1.CCU.sys2     | car8.LCU          | 3,3,3,3,3,3,3,3 |
-      | car1.CCU.sys2     | car8.LCU.RXC      | 1,1,1,1,1,1,1,1 |
-      | car1.CCU.sys1.TXC | car1.CCU.sys2.TXC | -,-,-,-,-,-,-,- |
-      | car1.CCU.sys1.TXC | car8.CCU.sys1     | 1,1,1,1,1,1,1,1 |
-      | car1.CCU.sys1.TXC | car8.CCU.sys2     | 1,1,1,1,1,1,1,1 |
-      | car1.CCU.sys1.TXC | car8.CCU.sys1.TXC | 1,1,1,1,1,1,1,1 |
-      | car1.CCU.sys1.TXC | car8.CCU.sys2.TXC | 1,1,1,1,1,1,1,1 |
-      | car1.CCU.sys1.TXC | car1.LCU          | 3,1,1,1,1,1,1,1 |
-      | car1.CCU.sys1.TXC | car1.LCU.RXC      | 1,1,1,1,1,1,1,1 |
-      | car1.CCU.sys1.TXC | car2.LCU          | 1,3,1,1,1,1,1,1 |
-      | car1.CCU.sys1.TXC | car2.LCU.RXC      | 1,1,1,1,1,1,1,1 |
-      | car1.CCU.sys1.TXC | car3.LCU          | 1,1,3,1,1,1,1,1 |
-      | car1.CCU.sys1.TXC | car3.LCU.RXC      | 1,1,1,1,1,1,1,1 |
-      | car1.CCU.sys1.TXC | car4.LCU          | 1,1,1,3,1,1,1,1 |
-      | car1.CCU.sys1.TXC | car4.LCU.RXC      | 1,1,1,1,1,1,1,1 |
-      | car1.CCU.sys1.TXC | car5.LCU          | 1,1,1,1,3,1,1,1 |
-      | car1.CCU.sys1.TXC | car5.LCU.RXC      | 1,1,1,1,1,1,1,1 |
-      | car1.CCU.sys1.TXC | car6.LCU          | 1,1,1,1,1,3,1,1 |
-      | car1.CCU.sys1.TXC | car6.LCU.RXC      | 1,1,1,1,1,1,1,1 |
-      | car1.CCU.sys1.TXC | car7.LCU          | 1,1,1,1,1,1,3,1 |
-      | car1.CCU.sys1.TXC | car7.LCU.RXC      | 1,1,1,1,1,1,1,1 |
-      | car1.CCU.sys1.TXC | car8.LCU          | 1,1,1,1,1,1,1,3 |
-      | car1.CCU.sys1.TXC | car8.LCU.RXC      | 1,1,1,1,1,1,1,1 |
-      | car1.CCU.sys2.TXC | car8.CCU.sys1     | 1,1,1,1,1,1,1,1 |
-      | car1.CCU.sys2.TXC | car8.CCU.sys2     | 1,1,1,1,1,1,1,1 |
-      | car1.CCU.sys2.TXC | car8.CCU.sys1.TXC | 1,1,1,1,1,1,1,1 |
-      | car1.CCU.sys2.TXC | car8.CCU.sys2.TXC | 1,1,1,1,1,1,1,1 |
-      | car1.CCU.sys2.TXC | car1.LCU          | 3,1,1,1,1,1,1,1 |
-      | car1.CCU.sys2.TXC | car1.LCU.RXC      | 1,1,1,1,1,1,1,1 |
-      | car1.CCU.sys2.TXC | car2.LCU          | 1,3,1,1,1,1,1,1 |
-      | car1.CCU.sys2.TXC | car2.LCU.RXC      | 1,1,1,1,1,1,1,1 |
-      | car1.CCU.sys2.TXC | car3.LCU          | 1,1,3,1,1,1,1,1 |
-      | car1.CCU.sys2.TXC | car3.LCU.RXC      | 1,1,1,1,1,1,1,1 |
-      | car1.CCU.sys2.TXC | car4.LCU          | 1,1,1,3,1,1,1,1 |
-      | car1.CCU.sys2.TXC | car4.LCU.RXC      | 1,1,1,1,1,1,1,1 |
-      | car1.CCU.sys2.TXC | car5.LCU          | 1,1,1,1,3,1,1,1 |
-      | car1.CCU.sys2.TXC | car5.LCU.RXC      | 1,1,1,1,1,1,1,1 |
-      | car1.CCU.sys2.TXC | car6.LCU          | 1,1,1,1,1,3,1,1 |
-      | car1.CCU.sys2.TXC | car6.LCU.RXC      | 1,1,1,1,1,1,1,1 |
-      | car1.CCU.sys2.TXC | car7.LCU          | 1,1,1,1,1,1,3,1 |
-      | car1.CCU.sys2.TXC | car7.LCU.RXC      | 1,1,1,1,1,1,1,1 |
-      | car1.CCU.sys2.TXC | car8.LCU          | 1,1,1,1,1,1,1,3 |
-      | car1.CCU.sys2.TXC | car8.LCU.RXC      | 1,1,1,1,1,1,1,1 |
-      | car8.CCU.sys1     | car8.CCU.sys2     | 1,1,1,1,1,1,1,1 |
-      | car8.CCU.sys1     | car8.CCU.sys1.TXC | 1,1,1,1,1,1,1,1 |
-      | car8.CCU.sys1     | car8.CCU.sys2.TXC | 1,1,1,1,1,1,1,1 |
-      | car8.CCU.sys1     | car1.LCU          | 3,3,3,3,3,3,3,3 |
-      | car8.CCU.sys1     | car1.LCU.RXC      | 1,1,1,1,1,1,1,1 |
-      | car8.CCU.sys1     | car2.LCU          | 1,3,3,3,3,3,3,3 |
-      | car8.CCU.sys1     | car2.LCU.RXC      | 1,1,1,1,1,1,1,1 |
-      | car8.CCU.sys1     | car3.LCU          | 1,1,3,3,3,3,3,3 |
-      | car8.CCU.sys1     | car3.LCU.RXC      | 1,1,1,1,1,1,1,1 |
-      | car8.CCU.sys1     | car4.LCU          | 1,1,1,3,3,3,3,3 |
-      | car8.CCU.sys1     | car4.LCU.RXC      | 1,1,1,1,1,1,1,1 |
-      | car8.CCU.sys1     | car5.LCU          | 1,1,1,1,3,3,3,3 |
-      | car8.CCU.sys1     | car5.LCU.RXC      | 1,1,1,1,1,1,1,1 |
-      | car8.CCU.sys1     | car6.LCU          | 1,1,1,1,1,3,3,3 |
-      | car8.CCU.sys1     | car6.LCU.RXC      | 1,1,1,1,1,1,1,1 |
-      | car8.CCU.sys1     | car7.LCU          | 1,1,1,1,1,1,3,3 |
-      | car8.CCU.sys1     | car7.LCU.RXC      | 1,1,1,1,1,1,1,1 |
-      | car8.CCU.sys1     | car8.LCU          | 1,1,1,1,1,1,1,3 |
-      | car8.CCU.sys1     | car8.LCU.RXC      | 1,1,1,1,1,1,1,1 |
-      | car8.CCU.sys2     | car8.CCU.sys1.TXC | 1,1,1,1,1,1,1,1 |
-      | car8.CCU.sys2     | car8.CCU.sys2.TXC | 1,1,1,1,1,1,1,1 |
-      | car8.CCU.sys2     | car1.LCU          | 3,3,3,3,3,3,3,3 |
-      | car8.CCU.sys2     | car1.LCU.RXC      | 1,1,1,1,1,1,1,1 |
-      | car8.CCU.sys2     | car2.LCU          | 1,3,3,3,3,3,3,3 |
-      | car8.CCU.sys2     | car2.LCU.RXC      | 1,1,1,1,1,1,1,1 |
-      | car8.CCU.sys2     | car3.LCU          | 1,1,3,3,3,3,3,3 |
-      | car8.CCU.sys2     | car3.LCU.RXC      | 1,1,1,1,1,1,1,1 |
-      | car8.CCU.sys2     | car4.LCU          | 1,1,1,3,3,3,3,3 |
-      | car8.CCU.sys2     | car4.LCU.RXC      | 1,1,1,1,1,1,1,1 |
-      | car8.CCU.sys2     | car5.LCU          | 1,1,1,1,3,3,3,3 |
-      | car8.CCU.sys2     | car5.LCU.RXC      | 1,1,1,1,1,1,1,1 |
-      | car8.CCU.sys2     | car6.LCU          | 1,1,1,1,1,3,3,3 |
-      | car8.CCU.sys2     | car6.LCU.RXC      | 1,1,1,1,1,1,1,1 |
-      | car8.CCU.sys2     | car7.LCU          | 1,1,1,1,1,1,3,3 |
-      | car8.CCU.sys2     | car7.LCU.RXC      | 1,1,1,1,1,1,1,1 |
-      | car8.CCU.sys2     | car8.LCU          | 1,1,1,1,1,1,1,3 |
-      | car8.CCU.sys2     | car8.LCU.RXC      | 1,1,1,1,1,1,1,1 |
-      | car8.CCU.sys1.TXC | car8.CCU.sys2.TXC | 1,1,1,1,1,1,1,1 |
-      | car8.CCU.sys1.TXC | car1.LCU          | 3,1,1,1,1,1,1,1 |
-      | car8.CCU.sys1.TXC | car1.LCU.RXC      | 1,1,1,1,1,1,1,1 |
-      | car8.CCU.sys1.TXC | car2.LCU          | 1,3,1,1,1,1,1,1 |
-      | car8.CCU.sys1.TXC | car2.LCU.RXC      | 1,1,1,1,1,1,1,1 |
-      | car8.CCU.sys1.TXC | car3.LCU          | 1,1,3,1,1,1,1,1 |
-      | car8.CCU.sys1.TXC | car3.LCU.RXC      | 1,1,1,1,1,1,1,1 |
-      | car8.CCU.sys1.TXC | car4.LCU          | 1,1,1,3,1,1,1,1 |
-      | car8.CCU.sys1.TXC | car4.LCU.RXC      | 1,1,1,1,1,1,1,1 |
-      | car8.CCU.sys1.TXC | car5.LCU          | 1,1,1,1,3,1,1,1 |
-      | car8.CCU.sys1.TXC | car5.LCU.RXC      | 1,1,1,1,1,1,1,1 |
-      | car8.CCU.sys1.TXC | car6.LCU          | 1,1,1,1,1,3,1,1 |
-      | car8.CCU.sys1.TXC | car6.LCU.RXC      | 1,1,1,1,1,1,1,1 |
-      | car8.CCU.sys1.TXC | car7.LCU          | 1,1,1,1,1,1,3,1 |
-      | car8.CCU.sys1.TXC | car7.LCU.RXC      | 1,1,1,1,1,1,1,1 |
-      | car8.CCU.sys1.TXC | car8.LCU          | 1,1,1,1,1,1,1,3 |
-      | car8.CCU.sys1.TXC | car8.LCU.RXC      | 1,1,1,1,1,1,1,1 |
-      | car8.CCU.sys2.TXC | car1.LCU          | 3,1,1,1,1,1,1,1 |
-      | car8.CCU.sys2.TXC | car1.LCU.RXC      | 1,1,1,1,1,1,1,1 |
-      | car8.CCU.sys2.TXC | car2.LCU          | 1,3,1,1,1,1,1,1 |
-      | car8.CCU.sys2.TXC | car2.LCU.RXC      | 1,1,1,1,1,1,1,1 |
-      | car8.CCU.sys2.TXC | car3.LCU          | 1,1,3,1,1,1,1,1 |
-      | car8.CCU.sys2.TXC | car3.LCU.RXC      | 1,1,1,1,1,1,1,1 |
-      | car8.CCU.sys2.TXC | car4.LCU          | 1,1,1,3,1,1,1,1 |
-      | car8.CCU.sys2.TXC | car4.LCU.RXC      | 1,1,1,1,1,1,1,1 |
-      | car8.CCU.sys2.TXC | car5.LCU          | 1,1,1,1,3,1,1,1 |
-      | car8.CCU.sys2.TXC | car5.LCU.RXC      | 1,1,1,1,1,1,1,1 |
-      | car8.CCU.sys2.TXC | car6.LCU          | 1,1,1,1,1,3,1,1 |
-      | car8.CCU.sys2.TXC | car6.LCU.RXC      | 1,1,1,1,1,1,1,1 |
-      | car8.CCU.sys2.TXC | car7.LCU          | 1,1,1,1,1,1,3,1 |
-      | car8.CCU.sys2.TXC | car7.LCU.RXC      | 1,1,1,1,1,1,1,1 |
-      | car8.CCU.sys2.TXC | car8.LCU          | 1,1,1,1,1,1,1,3 |
-      | car8.CCU.sys2.TXC | car8.LCU.RXC      | 1,1,1,1,1,1,1,1 |
-      | car1.LCU          | car1.LCU.RXC      | -,1,1,1,1,1,1,1 |
-      | car1.LCU          | car2.LCU          | 3,3,1,1,1,1,1,1 |
-      | car1.LCU          | car2.LCU.RXC      | 3,1,1,1,1,1,1,1 |
-      | car1.LCU          | car3.LCU          | 3,3,3,1,1,1,1,1 |
-      | car1.LCU          | car3.LCU.RXC      | 3,1,1,1,1,1,1,1 |
-      | car1.LCU          | car4.LCU          | 3,3,3,3,1,1,1,1 |
-      | car1.LCU          | car4.LCU.RXC      | 3,1,1,1,1,1,1,1 |
-      | car1.LCU          | car5.LCU          | 3,3,3,3,3,1,1,1 |
-      | car1.LCU          | car5.LCU.RXC      | 3,1,1,1,1,1,1,1 |
-      | car1.LCU          | car6.LCU          | 3,3,3,3,3,3,1,1 |
-      | car1.LCU          | car6.LCU.RXC      | 3,1,1,1,1,1,1,1 |
-      | car1.LCU          | car7.LCU          | 3,3,3,3,3,3,3,1 |
-      | car1.LCU          | car7.LCU.RXC      | 3,1,1,1,1,1,1,1 |
-      | car1.LCU          | car8.LCU          | 3,3,3,3,3,3,3,3 |
-      | car1.LCU          | car8.LCU.RXC      | 3,1,1,1,1,1,1,1 |
-      | car1.LCU.RXC      | car2.LCU          | 1,3,1,1,1,1,1,1 |
-      | car1.LCU.RXC      | car2.LCU.RXC      | 1,1,1,1,1,1,1,1 |
-      | car1.LCU.RXC      | car3.LCU          | 1,1,3,1,1,1,1,1 |
-      | car1.LCU.RXC      | car3.LCU.RXC      | 1,1,1,1,1,1,1,1 |
-      | car1.LCU.RXC      | car4.LCU          | 1,1,1,3,1,1,1,1 |
-      | car1.LCU.RXC      | car4.LCU.RXC      | 1,1,1,1,1,1,1,1 |
-      | car1.LCU.RXC      | car5.LCU          | 1,1,1,1,3,1,1,1 |
-      | car1.LCU.RXC      | car5.LCU.RXC      | 1,1,1,1,1,1,1,1 |
-      | car1.LCU.RXC      | car6.LCU          | 1,1,1,1,1,3,1,1 |
-      | car1.LCU.RXC      | car6.LCU.RXC      | 1,1,1,1,1,1,1,1 |
-      | car1.LCU.RXC      | car7.LCU          | 1,1,1,1,1,1,3,1 |
-      | car1.LCU.RXC      | car7.LCU.RXC      | 1,1,1,1,1,1,1,1 |
-      | car1.LCU.RXC      | car8.LCU          | 1,1,1,1,1,1,1,3 |
-      | car1.LCU.RXC      | car8.LCU.RXC      | 1,1,1,1,1,1,1,1 |
-      | car2.LCU          | car2.LCU.RXC      | 1,-,1,1,1,1,1,1 |
-      | car2.LCU          | car3.LCU          | 1,3,3,1,1,1,1,1 |
-      | car2.LCU          | car3.LCU.RXC      | 1,3,1,1,1,1,1,1 |
-      | car2.LCU          | car4.LCU          | 1,3,3,3,1,1,1,1 |
-      | car2.LCU          | car4.LCU.RXC      | 1,3,1,1,1,1,1,1 |
-      | car2.LCU          | car5.LCU          | 1,3,3,3,3,1,1,1 |
-      | car2.LCU          | car5.LCU.RXC      | 1,3,1,1,1,1,1,1 |
-      | car2.LCU          | car6.LCU          | 1,3,3,3,3,3,1,1 |
-      | car2.LCU          | car6.LCU.RXC      | 1,3,1,1,1,1,1,1 |
-      | car2.LCU          | car7.LCU          | 1,3,3,3,3,3,3,1 |
-      | car2.LCU          | car7.LCU.RXC      | 1,3,1,1,1,1,1,1 |
-      | car2.LCU          | car8.LCU          | 1,3,3,3,3,3,3,3 |
-      | car2.LCU          | car8.LCU.RXC      | 1,3,1,1,1,1,1,1 |
-      | car2.LCU.RXC      | car3.LCU          | 1,1,3,1,1,1,1,1 |
-      | car2.LCU.RXC      | car3.LCU.RXC      | 1,1,1,1,1,1,1,1 |
-      | car2.LCU.RXC      | car4.LCU          | 1,1,1,3,1,1,1,1 |
-      | car2.LCU.RXC      | car4.LCU.RXC      | 1,1,1,1,1,1,1,1 |
-      | car2.LCU.RXC      | car5.LCU          | 1,1,1,1,3,1,1,1 |
-      | car2.LCU.RXC      | car5.LCU.RXC      | 1,1,1,1,1,1,1,1 |
-      | car2.LCU.RXC      | car6.LCU          | 1,1,1,1,1,3,1,1 |
-      | car2.LCU.RXC      | car6.LCU.RXC      | 1,1,1,1,1,1,1,1 |
-      | car2.LCU.RXC      | car7.LCU          | 1,1,1,1,1,1,3,1 |
-      | car2.LCU.RXC      | car7.LCU.RXC      | 1,1,1,1,1,1,1,1 |
-      | car2.LCU.RXC      | car8.LCU          | 1,1,1,1,1,1,1,3 |
-      | car2.LCU.RXC      | car8.LCU.RXC      | 1,1,1,1,1,1,1,1 |
-      | car3.LCU          | car3.LCU.RXC      | 1,1,-,1,1,1,1,1 |
-      | car3.LCU          | car4.LCU          | 1,1,3,3,1,1,1,1 |
-      | car3.LCU          | car4.LCU.RXC      | 1,1,3,1,1,1,1,1 |
-      | car3.LCU          | car5.LCU          | 1,1,3,3,3,1,1,1 |
-      | car3.LCU          | car5.LCU.RXC      | 1,1,3,1,1,1,1,1 |
-      | car3.LCU          | car6.LCU          | 1,1,3,3,3,3,1,1 |
-      | car3.LCU          | car6.LCU.RXC      | 1,1,3,1,1,1,1,1 |
-      | car3.LCU          | car7.LCU          | 1,1,3,3,3,3,3,1 |
-      | car3.LCU          | car7.LCU.RXC      | 1,1,3,1,1,1,1,1 |
-      | car3.LCU          | car8.LCU          | 1,1,3,3,3,3,3,3 |
-      | car3.LCU          | car8.LCU.RXC      | 1,1,3,1,1,1,1,1 |
-      | car3.LCU.RXC      | car4.LCU          | 1,1,1,3,1,1,1,1 |
-      | car3.LCU.RXC      | car4.LCU.RXC      | 1,1,1,1,1,1,1,1 |
-      | car3.LCU.RXC      | car5.LCU          | 1,1,1,1,3,1,1,1 |
-      | car3.LCU.RXC      | car5.LCU.RXC      | 1,1,1,1,1,1,1,1 |
-      | car3.LCU.RXC      | car6.LCU          | 1,1,1,1,1,3,1,1 |
-      | car3.LCU.RXC      | car6.LCU.RXC      | 1,1,1,1,1,1,1,1 |
-      | car3.LCU.RXC      | car7.LCU          | 1,1,1,1,1,1,3,1 |
-      | car3.LCU.RXC      | car7.LCU.RXC      | 1,1,1,1,1,1,1,1 |
-      | car3.LCU.RXC      | car8.LCU          | 1,1,1,1,1,1,1,3 |
-      | car3.LCU.RXC      | car8.LCU.RXC      | 1,1,1,1,1,1,1,1 |
-      | car4.LCU          | car4.LCU.RXC      | 1,1,1,-,1,1,1,1 |
-      | car4.LCU          | car5.LCU          | 1,1,1,3,3,1,1,1 |
-      | car4.LCU          | car5.LCU.RXC      | 1,1,1,3,1,1,1,1 |
-      | car4.LCU          | car6.LCU          | 1,1,1,3,3,3,1,1 |
-      | car4.LCU          | car6.LCU.RXC      | 1,1,1,3,1,1,1,1 |
-      | car4.LCU          | car7.LCU          | 1,1,1,3,3,3,3,1 |
-      | car4.LCU          | car7.LCU.RXC      | 1,1,1,3,1,1,1,1 |
-      | car4.LCU          | car8.LCU          | 1,1,1,3,3,3,3,3 |
-      | car4.LCU          | car8.LCU.RXC      | 1,1,1,3,1,1,1,1 |
-      | car4.LCU.RXC      | car5.LCU          | 1,1,1,1,3,1,1,1 |
-      | car4.LCU.RXC      | car5.LCU.RXC      | 1,1,1,1,1,1,1,1 |
-      | car4.LCU.RXC      | car6.LCU          | 1,1,1,1,1,3,1,1 |
-      | car4.LCU.RXC      | car6.LCU.RXC      | 1,1,1,1,1,1,1,1 |
-      | car4.LCU.RXC      | car7.LCU          | 1,1,1,1,1,1,3,1 |
-      | car4.LCU.RXC      | car7.LCU.RXC      | 1,1,1,1,1,1,1,1 |
-      | car4.LCU.RXC      | car8.LCU          | 1,1,1,1,1,1,1,3 |
-      | car4.LCU.RXC      | car8.LCU.RXC      | 1,1,1,1,1,1,1,1 |
-      | car5.LCU          | car5.LCU.RXC      | 1,1,1,1,-,1,1,1 |
-      | car5.LCU          | car6.LCU          | 1,1,1,1,3,3,1,1 |
-      | car5.LCU          | car6.LCU.RXC      | 1,1,1,1,3,1,1,1 |
-      | car5.LCU          | car7.LCU          | 1,1,1,1,3,3,3,1 |
-      | car5.LCU          | car7.LCU.RXC      | 1,1,1,1,3,1,1,1 |
-      | car5.LCU          | car8.LCU          | 1,1,1,1,3,3,3,3 |
-      | car5.LCU          | car8.LCU.RXC      | 1,1,1,1,3,1,1,1 |
-      | car5.LCU.RXC      | car6.LCU          | 1,1,1,1,1,3,1,1 |
-      | car5.LCU.RXC      | car6.LCU.RXC      | 1,1,1,1,1,1,1,1 |
-      | car5.LCU.RXC      | car7.LCU          | 1,1,1,1,1,1,3,1 |
-      | car5.LCU.RXC      | car7.LCU.RXC      | 1,1,1,1,1,1,1,1 |
-      | car5.LCU.RXC      | car8.LCU          | 1,1,1,1,1,1,1,3 |
-      | car5.LCU.RXC      | car8.LCU.RXC      | 1,1,1,1,1,1,1,1 |
-      | car6.LCU          | car6.LCU.RXC      | 1,1,1,1,1,-,1,1 |
-      | car6.LCU          | car7.LCU          | 1,1,1,1,1,3,3,1 |
-      | car6.LCU          | car7.LCU.RXC      | 1,1,1,1,1,3,1,1 |
-      | car6.LCU          | car8.LCU          | 1,1,1,1,1,3,3,3 |
-      | car6.LCU          | car8.LCU.RXC      | 1,1,1,1,1,3,1,1 |
-      | car6.LCU.RXC      | car7.LCU          | 1,1,1,1,1,1,3,1 |
-      | car6.LCU.RXC      | car7.LCU.RXC      | 1,1,1,1,1,1,1,1 |
-      | car6.LCU.RXC      | car8.LCU          | 1,1,1,1,1,1,1,3 |
-      | car6.LCU.RXC      | car8.LCU.RXC      | 1,1,1,1,1,1,1,1 |
-      | car7.LCU          | car7.LCU.RXC      | 1,1,1,1,1,1,-,1 |
-      | car7.LCU          | car8.LCU          | 1,1,1,1,1,1,3,3 |
-      | car7.LCU          | car8.LCU.RXC      | 1,1,1,1,1,1,3,1 |
-      | car7.LCU.RXC      | car8.LCU          | 1,1,1,1,1,1,1,3 |
-      | car7.LCU.RXC      | car8.LCU.RXC      | 1,1,1,1,1,1,1,1 |
-      | car8.LCU          | car8.LCU.RXC      | 1,1,1,1,1,1,1,- |
+      | supply1       | supply2           | paths           |
+      | car1.CCU.sys1 | car1.CCU.sys2     | 3,3,3,3,3,3,3,3 |
+      | car1.CCU.sys1 | car1.CCU.sys1.TXC | 1,1,1,1,1,1,1,1 |
+      | car1.CCU.sys1 | car1.CCU.sys2.TXC | 3,3,3,3,3,3,3,3 |
+      | car1.CCU.sys1 | car8.CCU.sys1     | 1,1,1,1,1,1,1,1 |
+      | car1.CCU.sys1 | car8.CCU.sys2     | 1,1,1,1,1,1,1,1 |
+      | car1.CCU.sys1 | car1.LCU          | 3,3,3,3,3,3,3,3 |
+      | car1.CCU.sys1 | car2.LCU          | 1,3,3,3,3,3,3,3 |
+      | car1.CCU.sys1 | car3.LCU          | 1,1,3,3,3,3,3,3 |
+      | car1.CCU.sys1 | car4.LCU          | 1,1,1,3,3,3,3,3 |
+      | car1.CCU.sys1 | car5.LCU          | 1,1,1,1,3,3,3,3 |
+      | car1.CCU.sys1 | car6.LCU          | 1,1,1,1,1,3,3,3 |
+      | car1.CCU.sys1 | car7.LCU          | 1,1,1,1,1,1,3,3 |
+      | car1.CCU.sys1 | car8.LCU          | 1,1,1,1,1,1,1,3 |
+      | car1.CCU.sys2 | car1.CCU.sys2.TXC | 1,1,1,1,1,1,1,1 |
+      | car1.CCU.sys2 | car8.CCU.sys1     | 3,3,3,3,3,3,3,3 |
+      | car1.CCU.sys2 | car8.CCU.sys2     | 3,3,3,3,3,3,3,3 |
+      | car1.CCU.sys2 | car1.LCU          | 3,1,1,1,1,1,1,1 |
+      | car1.CCU.sys2 | car2.LCU          | 3,3,1,1,1,1,1,1 |
+      | car1.CCU.sys2 | car3.LCU          | 3,3,3,1,1,1,1,1 |
+      | car1.CCU.sys2 | car4.LCU          | 3,3,3,3,1,1,1,1 |
+      | car1.CCU.sys2 | car5.LCU          | 3,3,3,3,3,1,1,1 |
+      | car1.CCU.sys2 | car6.LCU          | 3,3,3,3,3,3,1,1 |
+      | car1.CCU.sys2 | car7.LCU          | 3,3,3,3,3,3,3,1 |
+      | car1.CCU.sys2 | car8.LCU          | 3,3,3,3,3,3,3,3 |
+      | car8.CCU.sys1 | car8.CCU.sys2     | 1,1,1,1,1,1,1,1 |
+      | car8.CCU.sys1 | car8.CCU.sys1.TXC | 1,1,1,1,1,1,1,1 |
+      | car8.CCU.sys1 | car1.LCU          | 3,3,3,3,3,3,3,3 |
+      | car8.CCU.sys1 | car2.LCU          | 1,3,3,3,3,3,3,3 |
+      | car8.CCU.sys1 | car3.LCU          | 1,1,3,3,3,3,3,3 |
+      | car8.CCU.sys1 | car4.LCU          | 1,1,1,3,3,3,3,3 |
+      | car8.CCU.sys1 | car5.LCU          | 1,1,1,1,3,3,3,3 |
+      | car8.CCU.sys1 | car6.LCU          | 1,1,1,1,1,3,3,3 |
+      | car8.CCU.sys1 | car7.LCU          | 1,1,1,1,1,1,3,3 |
+      | car8.CCU.sys1 | car8.LCU          | 1,1,1,1,1,1,1,3 |
+      | car8.CCU.sys2 | car8.CCU.sys2.TXC | 1,1,1,1,1,1,1,1 |
+      | car8.CCU.sys2 | car1.LCU          | 3,3,3,3,3,3,3,3 |
+      | car8.CCU.sys2 | car2.LCU          | 1,3,3,3,3,3,3,3 |
+      | car8.CCU.sys2 | car3.LCU          | 1,1,3,3,3,3,3,3 |
+      | car8.CCU.sys2 | car4.LCU          | 1,1,1,3,3,3,3,3 |
+      | car8.CCU.sys2 | car5.LCU          | 1,1,1,1,3,3,3,3 |
+      | car8.CCU.sys2 | car6.LCU          | 1,1,1,1,1,3,3,3 |
+      | car8.CCU.sys2 | car7.LCU          | 1,1,1,1,1,1,3,3 |
+      | car8.CCU.sys2 | car8.LCU          | 1,1,1,1,1,1,1,3 |
+      | car1.LCU      | car1.LCU.RXC      | -,1,1,1,1,1,1,1 |
+      | car1.LCU      | car2.LCU          | 3,3,1,1,1,1,1,1 |
+      | car1.LCU      | car3.LCU          | 3,3,3,1,1,1,1,1 |
+      | car1.LCU      | car4.LCU          | 3,3,3,3,1,1,1,1 |
+      | car1.LCU      | car5.LCU          | 3,3,3,3,3,1,1,1 |
+      | car1.LCU      | car6.LCU          | 3,3,3,3,3,3,1,1 |
+      | car1.LCU      | car7.LCU          | 3,3,3,3,3,3,3,1 |
+      | car1.LCU      | car8.LCU          | 3,3,3,3,3,3,3,3 |
+      | car2.LCU      | car2.LCU.RXC      | 1,-,1,1,1,1,1,1 |
+      | car2.LCU      | car3.LCU          | 1,3,3,1,1,1,1,1 |
+      | car2.LCU      | car4.LCU          | 1,3,3,3,1,1,1,1 |
+      | car2.LCU      | car5.LCU          | 1,3,3,3,3,1,1,1 |
+      | car2.LCU      | car6.LCU          | 1,3,3,3,3,3,1,1 |
+      | car2.LCU      | car7.LCU          | 1,3,3,3,3,3,3,1 |
+      | car2.LCU      | car8.LCU          | 1,3,3,3,3,3,3,3 |
+      | car3.LCU      | car3.LCU.RXC      | 1,1,-,1,1,1,1,1 |
+      | car3.LCU      | car4.LCU          | 1,1,3,3,1,1,1,1 |
+      | car3.LCU      | car5.LCU          | 1,1,3,3,3,1,1,1 |
+      | car3.LCU      | car6.LCU          | 1,1,3,3,3,3,1,1 |
+      | car3.LCU      | car7.LCU          | 1,1,3,3,3,3,3,1 |
+      | car3.LCU      | car8.LCU          | 1,1,3,3,3,3,3,3 |
+      | car4.LCU      | car4.LCU.RXC      | 1,1,1,-,1,1,1,1 |
+      | car4.LCU      | car5.LCU          | 1,1,1,3,3,1,1,1 |
+      | car4.LCU      | car6.LCU          | 1,1,1,3,3,3,1,1 |
+      | car4.LCU      | car7.LCU          | 1,1,1,3,3,3,3,1 |
+      | car4.LCU      | car8.LCU          | 1,1,1,3,3,3,3,3 |
+      | car5.LCU      | car5.LCU.RXC      | 1,1,1,1,-,1,1,1 |
+      | car5.LCU      | car6.LCU          | 1,1,1,1,3,3,1,1 |
+      | car5.LCU      | car7.LCU          | 1,1,1,1,3,3,3,1 |
+      | car5.LCU      | car8.LCU          | 1,1,1,1,3,3,3,3 |
+      | car6.LCU      | car6.LCU.RXC      | 1,1,1,1,1,-,1,1 |
+      | car6.LCU      | car7.LCU          | 1,1,1,1,1,3,3,1 |
+      | car6.LCU      | car8.LCU          | 1,1,1,1,1,3,3,3 |
+      | car7.LCU      | car7.LCU.RXC      | 1,1,1,1,1,1,-,1 |
+      | car7.LCU      | car8.LCU          | 1,1,1,1,1,1,3,3 |
+      | car8.LCU      | car8.LCU.RXC      | 1,1,1,1,1,1,1,- |
+
+  @req:NET-03 @req:CMD-01 @req:CMD-02 @req:CMD-03 @req:CMD-04 @req:RED-01 @req:RED-02 @req:PRO-06
+  Scenario Outline: F-NET-32 Supply <supply1> off and supply <supply2> off: each car by the path left to it, one fault recorded at the master
+    When the supply "<supply1>" is switched off
+    And the supply "<supply2>" is switched off
+    And the driver moves the traction notch of cab 1 to 6
+    And 200 ms pass
+    Then car by car the CI and BCU receive traction notch 6 or traction step "B" by the paths <paths> within 100 ms
+    And no CI or BCU of a car with a path in <paths> goes without a command for more than 100 ms
+    And no CI or BCU ever receives a traction notch other than 0 or 6
+    And no command over path 2 or 3 ever carried more than the traction and brake steps A and B
+    And "<master>" holds a fault record of "<node1>" saying "<part1>" failed at most 1330 ms after it
+
+    Examples:
+      | supply1           | supply2           | paths           | master        | node1         | part1 |
+      | car1.CCU.sys1     | car8.CCU.sys1.TXC | 1,1,1,1,1,1,1,1 | car1.CCU.sys2 | car8.CCU.sys1 | TXC   |
+      | car1.CCU.sys1     | car8.CCU.sys2.TXC | 1,1,1,1,1,1,1,1 | car1.CCU.sys2 | car8.CCU.sys2 | TXC   |
+      | car1.CCU.sys1     | car1.LCU.RXC      | 1,1,1,1,1,1,1,1 | car1.CCU.sys2 | car1.LCU      | RXC   |
+      | car1.CCU.sys1     | car2.LCU.RXC      | 1,1,1,1,1,1,1,1 | car1.CCU.sys2 | car2.LCU      | RXC   |
+      | car1.CCU.sys1     | car3.LCU.RXC      | 1,1,1,1,1,1,1,1 | car1.CCU.sys2 | car3.LCU      | RXC   |
+      | car1.CCU.sys1     | car4.LCU.RXC      | 1,1,1,1,1,1,1,1 | car1.CCU.sys2 | car4.LCU      | RXC   |
+      | car1.CCU.sys1     | car5.LCU.RXC      | 1,1,1,1,1,1,1,1 | car1.CCU.sys2 | car5.LCU      | RXC   |
+      | car1.CCU.sys1     | car6.LCU.RXC      | 1,1,1,1,1,1,1,1 | car1.CCU.sys2 | car6.LCU      | RXC   |
+      | car1.CCU.sys1     | car7.LCU.RXC      | 1,1,1,1,1,1,1,1 | car1.CCU.sys2 | car7.LCU      | RXC   |
+      | car1.CCU.sys1     | car8.LCU.RXC      | 1,1,1,1,1,1,1,1 | car1.CCU.sys2 | car8.LCU      | RXC   |
+      | car1.CCU.sys2     | car1.CCU.sys1.TXC | -,-,-,-,-,-,-,- | car1.CCU.sys1 | car1.CCU.sys1 | TXC   |
+      | car1.CCU.sys2     | car8.CCU.sys1.TXC | 1,1,1,1,1,1,1,1 | car1.CCU.sys1 | car8.CCU.sys1 | TXC   |
+      | car1.CCU.sys2     | car8.CCU.sys2.TXC | 1,1,1,1,1,1,1,1 | car1.CCU.sys1 | car8.CCU.sys2 | TXC   |
+      | car1.CCU.sys2     | car1.LCU.RXC      | 1,1,1,1,1,1,1,1 | car1.CCU.sys1 | car1.LCU      | RXC   |
+      | car1.CCU.sys2     | car2.LCU.RXC      | 1,1,1,1,1,1,1,1 | car1.CCU.sys1 | car2.LCU      | RXC   |
+      | car1.CCU.sys2     | car3.LCU.RXC      | 1,1,1,1,1,1,1,1 | car1.CCU.sys1 | car3.LCU      | RXC   |
+      | car1.CCU.sys2     | car4.LCU.RXC      | 1,1,1,1,1,1,1,1 | car1.CCU.sys1 | car4.LCU      | RXC   |
+      | car1.CCU.sys2     | car5.LCU.RXC      | 1,1,1,1,1,1,1,1 | car1.CCU.sys1 | car5.LCU      | RXC   |
+      | car1.CCU.sys2     | car6.LCU.RXC      | 1,1,1,1,1,1,1,1 | car1.CCU.sys1 | car6.LCU      | RXC   |
+      | car1.CCU.sys2     | car7.LCU.RXC      | 1,1,1,1,1,1,1,1 | car1.CCU.sys1 | car7.LCU      | RXC   |
+      | car1.CCU.sys2     | car8.LCU.RXC      | 1,1,1,1,1,1,1,1 | car1.CCU.sys1 | car8.LCU      | RXC   |
+      | car1.CCU.sys1.TXC | car8.CCU.sys1     | 1,1,1,1,1,1,1,1 | car1.CCU.sys2 | car1.CCU.sys1 | TXC   |
+      | car1.CCU.sys1.TXC | car8.CCU.sys2     | 1,1,1,1,1,1,1,1 | car1.CCU.sys2 | car1.CCU.sys1 | TXC   |
+      | car1.CCU.sys1.TXC | car1.LCU          | 3,1,1,1,1,1,1,1 | car1.CCU.sys2 | car1.CCU.sys1 | TXC   |
+      | car1.CCU.sys1.TXC | car2.LCU          | 1,3,1,1,1,1,1,1 | car1.CCU.sys2 | car1.CCU.sys1 | TXC   |
+      | car1.CCU.sys1.TXC | car3.LCU          | 1,1,3,1,1,1,1,1 | car1.CCU.sys2 | car1.CCU.sys1 | TXC   |
+      | car1.CCU.sys1.TXC | car4.LCU          | 1,1,1,3,1,1,1,1 | car1.CCU.sys2 | car1.CCU.sys1 | TXC   |
+      | car1.CCU.sys1.TXC | car5.LCU          | 1,1,1,1,3,1,1,1 | car1.CCU.sys2 | car1.CCU.sys1 | TXC   |
+      | car1.CCU.sys1.TXC | car6.LCU          | 1,1,1,1,1,3,1,1 | car1.CCU.sys2 | car1.CCU.sys1 | TXC   |
+      | car1.CCU.sys1.TXC | car7.LCU          | 1,1,1,1,1,1,3,1 | car1.CCU.sys2 | car1.CCU.sys1 | TXC   |
+      | car1.CCU.sys1.TXC | car8.LCU          | 1,1,1,1,1,1,1,3 | car1.CCU.sys2 | car1.CCU.sys1 | TXC   |
+      | car1.CCU.sys2.TXC | car8.CCU.sys1     | 1,1,1,1,1,1,1,1 | car1.CCU.sys1 | car1.CCU.sys2 | TXC   |
+      | car1.CCU.sys2.TXC | car8.CCU.sys2     | 1,1,1,1,1,1,1,1 | car1.CCU.sys1 | car1.CCU.sys2 | TXC   |
+      | car1.CCU.sys2.TXC | car1.LCU          | 3,1,1,1,1,1,1,1 | car1.CCU.sys1 | car1.CCU.sys2 | TXC   |
+      | car1.CCU.sys2.TXC | car2.LCU          | 1,3,1,1,1,1,1,1 | car1.CCU.sys1 | car1.CCU.sys2 | TXC   |
+      | car1.CCU.sys2.TXC | car3.LCU          | 1,1,3,1,1,1,1,1 | car1.CCU.sys1 | car1.CCU.sys2 | TXC   |
+      | car1.CCU.sys2.TXC | car4.LCU          | 1,1,1,3,1,1,1,1 | car1.CCU.sys1 | car1.CCU.sys2 | TXC   |
+      | car1.CCU.sys2.TXC | car5.LCU          | 1,1,1,1,3,1,1,1 | car1.CCU.sys1 | car1.CCU.sys2 | TXC   |
+      | car1.CCU.sys2.TXC | car6.LCU          | 1,1,1,1,1,3,1,1 | car1.CCU.sys1 | car1.CCU.sys2 | TXC   |
+      | car1.CCU.sys2.TXC | car7.LCU          | 1,1,1,1,1,1,3,1 | car1.CCU.sys1 | car1.CCU.sys2 | TXC   |
+      | car1.CCU.sys2.TXC | car8.LCU          | 1,1,1,1,1,1,1,3 | car1.CCU.sys1 | car1.CCU.sys2 | TXC   |
+      | car8.CCU.sys1     | car8.CCU.sys2.TXC | 1,1,1,1,1,1,1,1 | car1.CCU.sys1 | car8.CCU.sys2 | TXC   |
+      | car8.CCU.sys1     | car1.LCU.RXC      | 1,1,1,1,1,1,1,1 | car1.CCU.sys1 | car1.LCU      | RXC   |
+      | car8.CCU.sys1     | car2.LCU.RXC      | 1,1,1,1,1,1,1,1 | car1.CCU.sys1 | car2.LCU      | RXC   |
+      | car8.CCU.sys1     | car3.LCU.RXC      | 1,1,1,1,1,1,1,1 | car1.CCU.sys1 | car3.LCU      | RXC   |
+      | car8.CCU.sys1     | car4.LCU.RXC      | 1,1,1,1,1,1,1,1 | car1.CCU.sys1 | car4.LCU      | RXC   |
+      | car8.CCU.sys1     | car5.LCU.RXC      | 1,1,1,1,1,1,1,1 | car1.CCU.sys1 | car5.LCU      | RXC   |
+      | car8.CCU.sys1     | car6.LCU.RXC      | 1,1,1,1,1,1,1,1 | car1.CCU.sys1 | car6.LCU      | RXC   |
+      | car8.CCU.sys1     | car7.LCU.RXC      | 1,1,1,1,1,1,1,1 | car1.CCU.sys1 | car7.LCU      | RXC   |
+      | car8.CCU.sys1     | car8.LCU.RXC      | 1,1,1,1,1,1,1,1 | car1.CCU.sys1 | car8.LCU      | RXC   |
+      | car8.CCU.sys2     | car8.CCU.sys1.TXC | 1,1,1,1,1,1,1,1 | car1.CCU.sys1 | car8.CCU.sys1 | TXC   |
+      | car8.CCU.sys2     | car1.LCU.RXC      | 1,1,1,1,1,1,1,1 | car1.CCU.sys1 | car1.LCU      | RXC   |
+      | car8.CCU.sys2     | car2.LCU.RXC      | 1,1,1,1,1,1,1,1 | car1.CCU.sys1 | car2.LCU      | RXC   |
+      | car8.CCU.sys2     | car3.LCU.RXC      | 1,1,1,1,1,1,1,1 | car1.CCU.sys1 | car3.LCU      | RXC   |
+      | car8.CCU.sys2     | car4.LCU.RXC      | 1,1,1,1,1,1,1,1 | car1.CCU.sys1 | car4.LCU      | RXC   |
+      | car8.CCU.sys2     | car5.LCU.RXC      | 1,1,1,1,1,1,1,1 | car1.CCU.sys1 | car5.LCU      | RXC   |
+      | car8.CCU.sys2     | car6.LCU.RXC      | 1,1,1,1,1,1,1,1 | car1.CCU.sys1 | car6.LCU      | RXC   |
+      | car8.CCU.sys2     | car7.LCU.RXC      | 1,1,1,1,1,1,1,1 | car1.CCU.sys1 | car7.LCU      | RXC   |
+      | car8.CCU.sys2     | car8.LCU.RXC      | 1,1,1,1,1,1,1,1 | car1.CCU.sys1 | car8.LCU      | RXC   |
+      | car8.CCU.sys1.TXC | car1.LCU          | 3,1,1,1,1,1,1,1 | car1.CCU.sys1 | car8.CCU.sys1 | TXC   |
+      | car8.CCU.sys1.TXC | car2.LCU          | 1,3,1,1,1,1,1,1 | car1.CCU.sys1 | car8.CCU.sys1 | TXC   |
+      | car8.CCU.sys1.TXC | car3.LCU          | 1,1,3,1,1,1,1,1 | car1.CCU.sys1 | car8.CCU.sys1 | TXC   |
+      | car8.CCU.sys1.TXC | car4.LCU          | 1,1,1,3,1,1,1,1 | car1.CCU.sys1 | car8.CCU.sys1 | TXC   |
+      | car8.CCU.sys1.TXC | car5.LCU          | 1,1,1,1,3,1,1,1 | car1.CCU.sys1 | car8.CCU.sys1 | TXC   |
+      | car8.CCU.sys1.TXC | car6.LCU          | 1,1,1,1,1,3,1,1 | car1.CCU.sys1 | car8.CCU.sys1 | TXC   |
+      | car8.CCU.sys1.TXC | car7.LCU          | 1,1,1,1,1,1,3,1 | car1.CCU.sys1 | car8.CCU.sys1 | TXC   |
+      | car8.CCU.sys1.TXC | car8.LCU          | 1,1,1,1,1,1,1,3 | car1.CCU.sys1 | car8.CCU.sys1 | TXC   |
+      | car8.CCU.sys2.TXC | car1.LCU          | 3,1,1,1,1,1,1,1 | car1.CCU.sys1 | car8.CCU.sys2 | TXC   |
+      | car8.CCU.sys2.TXC | car2.LCU          | 1,3,1,1,1,1,1,1 | car1.CCU.sys1 | car8.CCU.sys2 | TXC   |
+      | car8.CCU.sys2.TXC | car3.LCU          | 1,1,3,1,1,1,1,1 | car1.CCU.sys1 | car8.CCU.sys2 | TXC   |
+      | car8.CCU.sys2.TXC | car4.LCU          | 1,1,1,3,1,1,1,1 | car1.CCU.sys1 | car8.CCU.sys2 | TXC   |
+      | car8.CCU.sys2.TXC | car5.LCU          | 1,1,1,1,3,1,1,1 | car1.CCU.sys1 | car8.CCU.sys2 | TXC   |
+      | car8.CCU.sys2.TXC | car6.LCU          | 1,1,1,1,1,3,1,1 | car1.CCU.sys1 | car8.CCU.sys2 | TXC   |
+      | car8.CCU.sys2.TXC | car7.LCU          | 1,1,1,1,1,1,3,1 | car1.CCU.sys1 | car8.CCU.sys2 | TXC   |
+      | car8.CCU.sys2.TXC | car8.LCU          | 1,1,1,1,1,1,1,3 | car1.CCU.sys1 | car8.CCU.sys2 | TXC   |
+      | car1.LCU          | car2.LCU.RXC      | 3,1,1,1,1,1,1,1 | car1.CCU.sys1 | car2.LCU      | RXC   |
+      | car1.LCU          | car3.LCU.RXC      | 3,1,1,1,1,1,1,1 | car1.CCU.sys1 | car3.LCU      | RXC   |
+      | car1.LCU          | car4.LCU.RXC      | 3,1,1,1,1,1,1,1 | car1.CCU.sys1 | car4.LCU      | RXC   |
+      | car1.LCU          | car5.LCU.RXC      | 3,1,1,1,1,1,1,1 | car1.CCU.sys1 | car5.LCU      | RXC   |
+      | car1.LCU          | car6.LCU.RXC      | 3,1,1,1,1,1,1,1 | car1.CCU.sys1 | car6.LCU      | RXC   |
+      | car1.LCU          | car7.LCU.RXC      | 3,1,1,1,1,1,1,1 | car1.CCU.sys1 | car7.LCU      | RXC   |
+      | car1.LCU          | car8.LCU.RXC      | 3,1,1,1,1,1,1,1 | car1.CCU.sys1 | car8.LCU      | RXC   |
+      | car1.LCU.RXC      | car2.LCU          | 1,3,1,1,1,1,1,1 | car1.CCU.sys1 | car1.LCU      | RXC   |
+      | car1.LCU.RXC      | car3.LCU          | 1,1,3,1,1,1,1,1 | car1.CCU.sys1 | car1.LCU      | RXC   |
+      | car1.LCU.RXC      | car4.LCU          | 1,1,1,3,1,1,1,1 | car1.CCU.sys1 | car1.LCU      | RXC   |
+      | car1.LCU.RXC      | car5.LCU          | 1,1,1,1,3,1,1,1 | car1.CCU.sys1 | car1.LCU      | RXC   |
+      | car1.LCU.RXC      | car6.LCU          | 1,1,1,1,1,3,1,1 | car1.CCU.sys1 | car1.LCU      | RXC   |
+      | car1.LCU.RXC      | car7.LCU          | 1,1,1,1,1,1,3,1 | car1.CCU.sys1 | car1.LCU      | RXC   |
+      | car1.LCU.RXC      | car8.LCU          | 1,1,1,1,1,1,1,3 | car1.CCU.sys1 | car1.LCU      | RXC   |
+      | car2.LCU          | car3.LCU.RXC      | 1,3,1,1,1,1,1,1 | car1.CCU.sys1 | car3.LCU      | RXC   |
+      | car2.LCU          | car4.LCU.RXC      | 1,3,1,1,1,1,1,1 | car1.CCU.sys1 | car4.LCU      | RXC   |
+      | car2.LCU          | car5.LCU.RXC      | 1,3,1,1,1,1,1,1 | car1.CCU.sys1 | car5.LCU      | RXC   |
+      | car2.LCU          | car6.LCU.RXC      | 1,3,1,1,1,1,1,1 | car1.CCU.sys1 | car6.LCU      | RXC   |
+      | car2.LCU          | car7.LCU.RXC      | 1,3,1,1,1,1,1,1 | car1.CCU.sys1 | car7.LCU      | RXC   |
+      | car2.LCU          | car8.LCU.RXC      | 1,3,1,1,1,1,1,1 | car1.CCU.sys1 | car8.LCU      | RXC   |
+      | car2.LCU.RXC      | car3.LCU          | 1,1,3,1,1,1,1,1 | car1.CCU.sys1 | car2.LCU      | RXC   |
+      | car2.LCU.RXC      | car4.LCU          | 1,1,1,3,1,1,1,1 | car1.CCU.sys1 | car2.LCU      | RXC   |
+      | car2.LCU.RXC      | car5.LCU          | 1,1,1,1,3,1,1,1 | car1.CCU.sys1 | car2.LCU      | RXC   |
+      | car2.LCU.RXC      | car6.LCU          | 1,1,1,1,1,3,1,1 | car1.CCU.sys1 | car2.LCU      | RXC   |
+      | car2.LCU.RXC      | car7.LCU          | 1,1,1,1,1,1,3,1 | car1.CCU.sys1 | car2.LCU      | RXC   |
+      | car2.LCU.RXC      | car8.LCU          | 1,1,1,1,1,1,1,3 | car1.CCU.sys1 | car2.LCU      | RXC   |
+      | car3.LCU          | car4.LCU.RXC      | 1,1,3,1,1,1,1,1 | car1.CCU.sys1 | car4.LCU      | RXC   |
+      | car3.LCU          | car5.LCU.RXC      | 1,1,3,1,1,1,1,1 | car1.CCU.sys1 | car5.LCU      | RXC   |
+      | car3.LCU          | car6.LCU.RXC      | 1,1,3,1,1,1,1,1 | car1.CCU.sys1 | car6.LCU      | RXC   |
+      | car3.LCU          | car7.LCU.RXC      | 1,1,3,1,1,1,1,1 | car1.CCU.sys1 | car7.LCU      | RXC   |
+      | car3.LCU          | car8.LCU.RXC      | 1,1,3,1,1,1,1,1 | car1.CCU.sys1 | car8.LCU      | RXC   |
+      | car3.LCU.RXC      | car4.LCU          | 1,1,1,3,1,1,1,1 | car1.CCU.sys1 | car3.LCU      | RXC   |
+      | car3.LCU.RXC      | car5.LCU          | 1,1,1,1,3,1,1,1 | car1.CCU.sys1 | car3.LCU      | RXC   |
+      | car3.LCU.RXC      | car6.LCU          | 1,1,1,1,1,3,1,1 | car1.CCU.sys1 | car3.LCU      | RXC   |
+      | car3.LCU.RXC      | car7.LCU          | 1,1,1,1,1,1,3,1 | car1.CCU.sys1 | car3.LCU      | RXC   |
+      | car3.LCU.RXC      | car8.LCU          | 1,1,1,1,1,1,1,3 | car1.CCU.sys1 | car3.LCU      | RXC   |
+      | car4.LCU          | car5.LCU.RXC      | 1,1,1,3,1,1,1,1 | car1.CCU.sys1 | car5.LCU      | RXC   |
+      | car4.LCU          | car6.LCU.RXC      | 1,1,1,3,1,1,1,1 | car1.CCU.sys1 | car6.LCU      | RXC   |
+      | car4.LCU          | car7.LCU.RXC      | 1,1,1,3,1,1,1,1 | car1.CCU.sys1 | car7.LCU      | RXC   |
+      | car4.LCU          | car8.LCU.RXC      | 1,1,1,3,1,1,1,1 | car1.CCU.sys1 | car8.LCU      | RXC   |
+      | car4.LCU.RXC      | car5.LCU          | 1,1,1,1,3,1,1,1 | car1.CCU.sys1 | car4.LCU      | RXC   |
+      | car4.LCU.RXC      | car6.LCU          | 1,1,1,1,1,3,1,1 | car1.CCU.sys1 | car4.LCU      | RXC   |
+      | car4.LCU.RXC      | car7.LCU          | 1,1,1,1,1,1,3,1 | car1.CCU.sys1 | car4.LCU      | RXC   |
+      | car4.LCU.RXC      | car8.LCU          | 1,1,1,1,1,1,1,3 | car1.CCU.sys1 | car4.LCU      | RXC   |
+      | car5.LCU          | car6.LCU.RXC      | 1,1,1,1,3,1,1,1 | car1.CCU.sys1 | car6.LCU      | RXC   |
+      | car5.LCU          | car7.LCU.RXC      | 1,1,1,1,3,1,1,1 | car1.CCU.sys1 | car7.LCU      | RXC   |
+      | car5.LCU          | car8.LCU.RXC      | 1,1,1,1,3,1,1,1 | car1.CCU.sys1 | car8.LCU      | RXC   |
+      | car5.LCU.RXC      | car6.LCU          | 1,1,1,1,1,3,1,1 | car1.CCU.sys1 | car5.LCU      | RXC   |
+      | car5.LCU.RXC      | car7.LCU          | 1,1,1,1,1,1,3,1 | car1.CCU.sys1 | car5.LCU      | RXC   |
+      | car5.LCU.RXC      | car8.LCU          | 1,1,1,1,1,1,1,3 | car1.CCU.sys1 | car5.LCU      | RXC   |
+      | car6.LCU          | car7.LCU.RXC      | 1,1,1,1,1,3,1,1 | car1.CCU.sys1 | car7.LCU      | RXC   |
+      | car6.LCU          | car8.LCU.RXC      | 1,1,1,1,1,3,1,1 | car1.CCU.sys1 | car8.LCU      | RXC   |
+      | car6.LCU.RXC      | car7.LCU          | 1,1,1,1,1,1,3,1 | car1.CCU.sys1 | car6.LCU      | RXC   |
+      | car6.LCU.RXC      | car8.LCU          | 1,1,1,1,1,1,1,3 | car1.CCU.sys1 | car6.LCU      | RXC   |
+      | car7.LCU          | car8.LCU.RXC      | 1,1,1,1,1,1,3,1 | car1.CCU.sys1 | car8.LCU      | RXC   |
+      | car7.LCU.RXC      | car8.LCU          | 1,1,1,1,1,1,1,3 | car1.CCU.sys1 | car7.LCU      | RXC   |
+
+  @req:NET-03 @req:CMD-01 @req:CMD-02 @req:CMD-03 @req:CMD-04 @req:RED-01 @req:RED-02 @req:PRO-06
+  Scenario Outline: F-NET-32 Supply <supply1> off and supply <supply2> off: each car by the path left to it, both faults recorded at the master
+    When the supply "<supply1>" is switched off
+    And the supply "<supply2>" is switched off
+    And the driver moves the traction notch of cab 1 to 6
+    And 200 ms pass
+    Then car by car the CI and BCU receive traction notch 6 or traction step "B" by the paths <paths> within 100 ms
+    And no CI or BCU of a car with a path in <paths> goes without a command for more than 100 ms
+    And no CI or BCU ever receives a traction notch other than 0 or 6
+    And no command over path 2 or 3 ever carried more than the traction and brake steps A and B
+    And "<master>" holds a fault record of "<node1>" saying "<part1>" failed at most 1820 ms after it
+    And "<master>" holds a fault record of "<node2>" saying "<part2>" failed at most 1820 ms after it
+
+    Examples:
+      | supply1           | supply2           | paths           | master        | node1         | part1 | node2         | part2 |
+      | car1.CCU.sys1.TXC | car1.CCU.sys2.TXC | -,-,-,-,-,-,-,- | car1.CCU.sys1 | car1.CCU.sys1 | TXC   | car1.CCU.sys2 | TXC   |
+      | car1.CCU.sys1.TXC | car8.CCU.sys1.TXC | 1,1,1,1,1,1,1,1 | car1.CCU.sys2 | car1.CCU.sys1 | TXC   | car8.CCU.sys1 | TXC   |
+      | car1.CCU.sys1.TXC | car8.CCU.sys2.TXC | 1,1,1,1,1,1,1,1 | car1.CCU.sys2 | car1.CCU.sys1 | TXC   | car8.CCU.sys2 | TXC   |
+      | car1.CCU.sys1.TXC | car1.LCU.RXC      | 1,1,1,1,1,1,1,1 | car1.CCU.sys2 | car1.CCU.sys1 | TXC   | car1.LCU      | RXC   |
+      | car1.CCU.sys1.TXC | car2.LCU.RXC      | 1,1,1,1,1,1,1,1 | car1.CCU.sys2 | car1.CCU.sys1 | TXC   | car2.LCU      | RXC   |
+      | car1.CCU.sys1.TXC | car3.LCU.RXC      | 1,1,1,1,1,1,1,1 | car1.CCU.sys2 | car1.CCU.sys1 | TXC   | car3.LCU      | RXC   |
+      | car1.CCU.sys1.TXC | car4.LCU.RXC      | 1,1,1,1,1,1,1,1 | car1.CCU.sys2 | car1.CCU.sys1 | TXC   | car4.LCU      | RXC   |
+      | car1.CCU.sys1.TXC | car5.LCU.RXC      | 1,1,1,1,1,1,1,1 | car1.CCU.sys2 | car1.CCU.sys1 | TXC   | car5.LCU      | RXC   |
+      | car1.CCU.sys1.TXC | car6.LCU.RXC      | 1,1,1,1,1,1,1,1 | car1.CCU.sys2 | car1.CCU.sys1 | TXC   | car6.LCU      | RXC   |
+      | car1.CCU.sys1.TXC | car7.LCU.RXC      | 1,1,1,1,1,1,1,1 | car1.CCU.sys2 | car1.CCU.sys1 | TXC   | car7.LCU      | RXC   |
+      | car1.CCU.sys1.TXC | car8.LCU.RXC      | 1,1,1,1,1,1,1,1 | car1.CCU.sys2 | car1.CCU.sys1 | TXC   | car8.LCU      | RXC   |
+      | car1.CCU.sys2.TXC | car8.CCU.sys1.TXC | 1,1,1,1,1,1,1,1 | car1.CCU.sys1 | car1.CCU.sys2 | TXC   | car8.CCU.sys1 | TXC   |
+      | car1.CCU.sys2.TXC | car8.CCU.sys2.TXC | 1,1,1,1,1,1,1,1 | car1.CCU.sys1 | car1.CCU.sys2 | TXC   | car8.CCU.sys2 | TXC   |
+      | car1.CCU.sys2.TXC | car1.LCU.RXC      | 1,1,1,1,1,1,1,1 | car1.CCU.sys1 | car1.CCU.sys2 | TXC   | car1.LCU      | RXC   |
+      | car1.CCU.sys2.TXC | car2.LCU.RXC      | 1,1,1,1,1,1,1,1 | car1.CCU.sys1 | car1.CCU.sys2 | TXC   | car2.LCU      | RXC   |
+      | car1.CCU.sys2.TXC | car3.LCU.RXC      | 1,1,1,1,1,1,1,1 | car1.CCU.sys1 | car1.CCU.sys2 | TXC   | car3.LCU      | RXC   |
+      | car1.CCU.sys2.TXC | car4.LCU.RXC      | 1,1,1,1,1,1,1,1 | car1.CCU.sys1 | car1.CCU.sys2 | TXC   | car4.LCU      | RXC   |
+      | car1.CCU.sys2.TXC | car5.LCU.RXC      | 1,1,1,1,1,1,1,1 | car1.CCU.sys1 | car1.CCU.sys2 | TXC   | car5.LCU      | RXC   |
+      | car1.CCU.sys2.TXC | car6.LCU.RXC      | 1,1,1,1,1,1,1,1 | car1.CCU.sys1 | car1.CCU.sys2 | TXC   | car6.LCU      | RXC   |
+      | car1.CCU.sys2.TXC | car7.LCU.RXC      | 1,1,1,1,1,1,1,1 | car1.CCU.sys1 | car1.CCU.sys2 | TXC   | car7.LCU      | RXC   |
+      | car1.CCU.sys2.TXC | car8.LCU.RXC      | 1,1,1,1,1,1,1,1 | car1.CCU.sys1 | car1.CCU.sys2 | TXC   | car8.LCU      | RXC   |
+      | car8.CCU.sys1.TXC | car8.CCU.sys2.TXC | 1,1,1,1,1,1,1,1 | car1.CCU.sys1 | car8.CCU.sys1 | TXC   | car8.CCU.sys2 | TXC   |
+      | car8.CCU.sys1.TXC | car1.LCU.RXC      | 1,1,1,1,1,1,1,1 | car1.CCU.sys1 | car8.CCU.sys1 | TXC   | car1.LCU      | RXC   |
+      | car8.CCU.sys1.TXC | car2.LCU.RXC      | 1,1,1,1,1,1,1,1 | car1.CCU.sys1 | car8.CCU.sys1 | TXC   | car2.LCU      | RXC   |
+      | car8.CCU.sys1.TXC | car3.LCU.RXC      | 1,1,1,1,1,1,1,1 | car1.CCU.sys1 | car8.CCU.sys1 | TXC   | car3.LCU      | RXC   |
+      | car8.CCU.sys1.TXC | car4.LCU.RXC      | 1,1,1,1,1,1,1,1 | car1.CCU.sys1 | car8.CCU.sys1 | TXC   | car4.LCU      | RXC   |
+      | car8.CCU.sys1.TXC | car5.LCU.RXC      | 1,1,1,1,1,1,1,1 | car1.CCU.sys1 | car8.CCU.sys1 | TXC   | car5.LCU      | RXC   |
+      | car8.CCU.sys1.TXC | car6.LCU.RXC      | 1,1,1,1,1,1,1,1 | car1.CCU.sys1 | car8.CCU.sys1 | TXC   | car6.LCU      | RXC   |
+      | car8.CCU.sys1.TXC | car7.LCU.RXC      | 1,1,1,1,1,1,1,1 | car1.CCU.sys1 | car8.CCU.sys1 | TXC   | car7.LCU      | RXC   |
+      | car8.CCU.sys1.TXC | car8.LCU.RXC      | 1,1,1,1,1,1,1,1 | car1.CCU.sys1 | car8.CCU.sys1 | TXC   | car8.LCU      | RXC   |
+      | car8.CCU.sys2.TXC | car1.LCU.RXC      | 1,1,1,1,1,1,1,1 | car1.CCU.sys1 | car8.CCU.sys2 | TXC   | car1.LCU      | RXC   |
+      | car8.CCU.sys2.TXC | car2.LCU.RXC      | 1,1,1,1,1,1,1,1 | car1.CCU.sys1 | car8.CCU.sys2 | TXC   | car2.LCU      | RXC   |
+      | car8.CCU.sys2.TXC | car3.LCU.RXC      | 1,1,1,1,1,1,1,1 | car1.CCU.sys1 | car8.CCU.sys2 | TXC   | car3.LCU      | RXC   |
+      | car8.CCU.sys2.TXC | car4.LCU.RXC      | 1,1,1,1,1,1,1,1 | car1.CCU.sys1 | car8.CCU.sys2 | TXC   | car4.LCU      | RXC   |
+      | car8.CCU.sys2.TXC | car5.LCU.RXC      | 1,1,1,1,1,1,1,1 | car1.CCU.sys1 | car8.CCU.sys2 | TXC   | car5.LCU      | RXC   |
+      | car8.CCU.sys2.TXC | car6.LCU.RXC      | 1,1,1,1,1,1,1,1 | car1.CCU.sys1 | car8.CCU.sys2 | TXC   | car6.LCU      | RXC   |
+      | car8.CCU.sys2.TXC | car7.LCU.RXC      | 1,1,1,1,1,1,1,1 | car1.CCU.sys1 | car8.CCU.sys2 | TXC   | car7.LCU      | RXC   |
+      | car8.CCU.sys2.TXC | car8.LCU.RXC      | 1,1,1,1,1,1,1,1 | car1.CCU.sys1 | car8.CCU.sys2 | TXC   | car8.LCU      | RXC   |
+      | car1.LCU.RXC      | car2.LCU.RXC      | 1,1,1,1,1,1,1,1 | car1.CCU.sys1 | car1.LCU      | RXC   | car2.LCU      | RXC   |
+      | car1.LCU.RXC      | car3.LCU.RXC      | 1,1,1,1,1,1,1,1 | car1.CCU.sys1 | car1.LCU      | RXC   | car3.LCU      | RXC   |
+      | car1.LCU.RXC      | car4.LCU.RXC      | 1,1,1,1,1,1,1,1 | car1.CCU.sys1 | car1.LCU      | RXC   | car4.LCU      | RXC   |
+      | car1.LCU.RXC      | car5.LCU.RXC      | 1,1,1,1,1,1,1,1 | car1.CCU.sys1 | car1.LCU      | RXC   | car5.LCU      | RXC   |
+      | car1.LCU.RXC      | car6.LCU.RXC      | 1,1,1,1,1,1,1,1 | car1.CCU.sys1 | car1.LCU      | RXC   | car6.LCU      | RXC   |
+      | car1.LCU.RXC      | car7.LCU.RXC      | 1,1,1,1,1,1,1,1 | car1.CCU.sys1 | car1.LCU      | RXC   | car7.LCU      | RXC   |
+      | car1.LCU.RXC      | car8.LCU.RXC      | 1,1,1,1,1,1,1,1 | car1.CCU.sys1 | car1.LCU      | RXC   | car8.LCU      | RXC   |
+      | car2.LCU.RXC      | car3.LCU.RXC      | 1,1,1,1,1,1,1,1 | car1.CCU.sys1 | car2.LCU      | RXC   | car3.LCU      | RXC   |
+      | car2.LCU.RXC      | car4.LCU.RXC      | 1,1,1,1,1,1,1,1 | car1.CCU.sys1 | car2.LCU      | RXC   | car4.LCU      | RXC   |
+      | car2.LCU.RXC      | car5.LCU.RXC      | 1,1,1,1,1,1,1,1 | car1.CCU.sys1 | car2.LCU      | RXC   | car5.LCU      | RXC   |
+      | car2.LCU.RXC      | car6.LCU.RXC      | 1,1,1,1,1,1,1,1 | car1.CCU.sys1 | car2.LCU      | RXC   | car6.LCU      | RXC   |
+      | car2.LCU.RXC      | car7.LCU.RXC      | 1,1,1,1,1,1,1,1 | car1.CCU.sys1 | car2.LCU      | RXC   | car7.LCU      | RXC   |
+      | car2.LCU.RXC      | car8.LCU.RXC      | 1,1,1,1,1,1,1,1 | car1.CCU.sys1 | car2.LCU      | RXC   | car8.LCU      | RXC   |
+      | car3.LCU.RXC      | car4.LCU.RXC      | 1,1,1,1,1,1,1,1 | car1.CCU.sys1 | car3.LCU      | RXC   | car4.LCU      | RXC   |
+      | car3.LCU.RXC      | car5.LCU.RXC      | 1,1,1,1,1,1,1,1 | car1.CCU.sys1 | car3.LCU      | RXC   | car5.LCU      | RXC   |
+      | car3.LCU.RXC      | car6.LCU.RXC      | 1,1,1,1,1,1,1,1 | car1.CCU.sys1 | car3.LCU      | RXC   | car6.LCU      | RXC   |
+      | car3.LCU.RXC      | car7.LCU.RXC      | 1,1,1,1,1,1,1,1 | car1.CCU.sys1 | car3.LCU      | RXC   | car7.LCU      | RXC   |
+      | car3.LCU.RXC      | car8.LCU.RXC      | 1,1,1,1,1,1,1,1 | car1.CCU.sys1 | car3.LCU      | RXC   | car8.LCU      | RXC   |
+      | car4.LCU.RXC      | car5.LCU.RXC      | 1,1,1,1,1,1,1,1 | car1.CCU.sys1 | car4.LCU      | RXC   | car5.LCU      | RXC   |
+      | car4.LCU.RXC      | car6.LCU.RXC      | 1,1,1,1,1,1,1,1 | car1.CCU.sys1 | car4.LCU      | RXC   | car6.LCU      | RXC   |
+      | car4.LCU.RXC      | car7.LCU.RXC      | 1,1,1,1,1,1,1,1 | car1.CCU.sys1 | car4.LCU      | RXC   | car7.LCU      | RXC   |
+      | car4.LCU.RXC      | car8.LCU.RXC      | 1,1,1,1,1,1,1,1 | car1.CCU.sys1 | car4.LCU      | RXC   | car8.LCU      | RXC   |
+      | car5.LCU.RXC      | car6.LCU.RXC      | 1,1,1,1,1,1,1,1 | car1.CCU.sys1 | car5.LCU      | RXC   | car6.LCU      | RXC   |
+      | car5.LCU.RXC      | car7.LCU.RXC      | 1,1,1,1,1,1,1,1 | car1.CCU.sys1 | car5.LCU      | RXC   | car7.LCU      | RXC   |
+      | car5.LCU.RXC      | car8.LCU.RXC      | 1,1,1,1,1,1,1,1 | car1.CCU.sys1 | car5.LCU      | RXC   | car8.LCU      | RXC   |
+      | car6.LCU.RXC      | car7.LCU.RXC      | 1,1,1,1,1,1,1,1 | car1.CCU.sys1 | car6.LCU      | RXC   | car7.LCU      | RXC   |
+      | car6.LCU.RXC      | car8.LCU.RXC      | 1,1,1,1,1,1,1,1 | car1.CCU.sys1 | car6.LCU      | RXC   | car8.LCU      | RXC   |
+      | car7.LCU.RXC      | car8.LCU.RXC      | 1,1,1,1,1,1,1,1 | car1.CCU.sys1 | car7.LCU      | RXC   | car8.LCU      | RXC   |

@@ -54,6 +54,7 @@ class Behaviour:
     rxc_trusts_selfdiag: bool = True      # CMD-04 a silent ring hands the RXC to the self-diagnostic line
     standby_transmits: bool = False       # RED-02 system 2 only monitors while system 1 is healthy
     block_grant_required: bool = True     # PRO-06 no block transfer before the grant
+    block_data_both_ways: bool = True     # PRO-06/NET-03 block data round the ring both ways, as any broadcast
     ilk08_ignored: tuple[str, ...] = ()   # ILK-08 conditions a faulty variant forgets to check
     separation_trips_rapid: bool = True   # ILK-01 separation applies emergency AND rapid brake
     oil_protection: bool = True           # ILK-06 oil pump / oil temperature cut the converters

@@ -321,7 +321,11 @@ class RingNode:
         elif master is not None:
             frame = fr.data_frame(fr.K_BLOCK, self.number, master.number, fr.P_BLOCK, owner=self.number,
                                   record=record, index=index, total=total, data=block)
-            self.train.ring.broadcast(self, frame)
+            if self.train.cfg.behaviour.block_data_both_ways:
+                self.train.ring.broadcast(self, frame)
+            else:                   # faulty variants only: the shorter way round, and no other
+                size = self.train.ring.size
+                self.train.ring.send(self, frame, R if (master.number - self.number) % size <= size // 2 else L)
         if self.pending_blocks:
             self._block_timer = self.kernel.call_later(self.train.cfg.timing.block_spacing_us,
                                                        self._send_block)
