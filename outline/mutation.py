@@ -17,8 +17,8 @@ Phases:
 2. A seeded sample, the same share from each part (crh2, metro, atp, and the shared kernel/bulk), leaving out
    the mutants marked equivalent in sut/reference/EQUIVALENT_MUTANTS.txt, those inside a `raise` of the
    driver's usage errors (USAGE_ERRORS below), those of a backend's self-description (SELF_DESCRIPTION,
-   BACKEND_PASSED_OVER) and those inside the emit of a trace event no check reads (EMIT_CALLS);
-   how many were passed over is printed and kept.
+   BACKEND_PASSED_OVER), those inside the emit of a trace event no check reads (EMIT_CALLS) and those in a
+   branch only faulty variants take (in_variant_only_branch); how many were passed over is printed and kept.
 3. `mutmut run <sample>`; outline/mutation_plugin.py notes which scenario failed for each mutant.
 4. The table: file:line, the change, killed by which scenario or survived; a kill rate per part
    (killed + timed out, over everything sampled; "no tests" means no scenario reaches the function, which
@@ -236,6 +236,106 @@ def in_usage_error(path: str, line: int) -> bool:
     return any(start <= line <= end for start, end in _RAISES[path])
 
 
+# A branch only faulty variants take: an `if` whose test the reference's behaviour switches decide (each
+# config's *Behaviour dataclass: "switches that only faulty variants turn off"), read at their defaults. A
+# mutant in the branch the reference never takes changes a faulty variant, not the reference, and no run
+# against the reference can tell (seeds 3 and 4 marked 6 and 5 of these by hand).
+_UNTAKEN: dict[tuple[Path, str], list[tuple[int, int]]] = {}
+_UNKNOWN = object()
+
+
+def behaviour_defaults(path: str) -> dict[str, object]:
+    """The default of every behaviour switch of the reference `path` belongs to (its part's config)."""
+    import dataclasses
+    import importlib
+
+    parts = Path(path).parts
+    if len(parts) < 4:
+        return {}
+    try:
+        config = importlib.import_module(f"sut.reference.{parts[2]}.config")
+    except ImportError:
+        return {}
+    return {field.name: field.default for klass in vars(config).values()
+            if isinstance(klass, type) and klass.__name__.endswith("Behaviour") and dataclasses.is_dataclass(klass)
+            for field in dataclasses.fields(klass)}
+
+
+def _switch(node: ast.AST, aliases: dict[str, str]) -> str | None:
+    """The behaviour switch `node` reads: `<...>.behaviour.NAME`, `behaviour.NAME`, or `self.X` that this file
+    only ever sets from one switch."""
+    if isinstance(node, ast.Attribute):
+        owner = node.value
+        if (isinstance(owner, ast.Name) and owner.id == "behaviour") or \
+                (isinstance(owner, ast.Attribute) and owner.attr == "behaviour"):
+            return node.attr
+        if isinstance(owner, ast.Name) and owner.id == "self":
+            return aliases.get(node.attr)
+    return None
+
+
+def _value(node: ast.AST, aliases: dict[str, str], defaults: dict[str, object]) -> object:
+    """What `node` is when every behaviour switch has its default, or _UNKNOWN."""
+    switch = _switch(node, aliases)
+    if switch is not None:
+        return defaults.get(switch, _UNKNOWN)
+    if isinstance(node, ast.Constant):
+        return node.value
+    if isinstance(node, ast.UnaryOp) and isinstance(node.op, ast.Not):
+        value = _value(node.operand, aliases, defaults)
+        return _UNKNOWN if value is _UNKNOWN else not value
+    if isinstance(node, ast.BoolOp):
+        values = [_value(v, aliases, defaults) for v in node.values]
+        decides = (lambda v: v is not _UNKNOWN and not v) if isinstance(node.op, ast.And) else \
+            (lambda v: v is not _UNKNOWN and bool(v))
+        if any(decides(v) for v in values):
+            return isinstance(node.op, ast.Or)
+        return _UNKNOWN if _UNKNOWN in values else isinstance(node.op, ast.And)
+    if isinstance(node, ast.Compare) and len(node.ops) == 1:
+        left, right = _value(node.left, aliases, defaults), _value(node.comparators[0], aliases, defaults)
+        if left is _UNKNOWN or right is _UNKNOWN:
+            return _UNKNOWN
+        compare = {ast.Is: lambda a, b: a is b, ast.IsNot: lambda a, b: a is not b, ast.Eq: lambda a, b: a == b,
+                   ast.NotEq: lambda a, b: a != b}.get(type(node.ops[0]))
+        return _UNKNOWN if compare is None else compare(left, right)
+    return _UNKNOWN
+
+
+def in_variant_only_branch(path: str, line: int) -> bool:
+    """Whether `line` of `path` is in a branch of an `if` that the reference's behaviour switches, at their
+    defaults, never take (the note above)."""
+    if (ROOT, path) not in _UNTAKEN:
+        tree = ast.parse((ROOT / path).read_text(encoding="utf-8"))
+        defaults = behaviour_defaults(path)
+        set_from: dict[str, set[str | None]] = {}
+        for node in ast.walk(tree):
+            targets = [node.target] if isinstance(node, ast.AnnAssign) else getattr(node, "targets", [])
+            if not isinstance(node, (ast.Assign, ast.AnnAssign)) or node.value is None:
+                continue
+            pairs = [(t, node.value) for t in targets]
+            if isinstance(node, ast.Assign) and isinstance(node.targets[0], ast.Tuple) and \
+                    isinstance(node.value, ast.Tuple) and len(node.targets[0].elts) == len(node.value.elts):
+                pairs = list(zip(node.targets[0].elts, node.value.elts))
+            for target, value in pairs:
+                if isinstance(target, ast.Attribute) and isinstance(target.value, ast.Name) and \
+                        target.value.id == "self":
+                    set_from.setdefault(target.attr, set()).add(_switch(value, {}))
+        aliases = {attr: next(iter(switches)) for attr, switches in set_from.items()
+                   if len(switches) == 1 and None not in switches}
+        spans = []
+        for node in ast.walk(tree):
+            if not isinstance(node, ast.If):
+                continue
+            value = _value(node.test, aliases, defaults)
+            if value is _UNKNOWN:
+                continue
+            branch = node.orelse if value else node.body
+            if branch and branch[0].lineno > (node.test.end_lineno or node.test.lineno):
+                spans.append((branch[0].lineno, branch[-1].end_lineno or branch[-1].lineno))
+        _UNTAKEN[ROOT, path] = spans
+    return any(start <= line <= end for start, end in _UNTAKEN[ROOT, path])
+
+
 def sample(names: list[str], count: int, seed: int, left_out: dict[str, int] | None = None) -> list[Mutant]:
     """`count` mutants, the same share from each part, none of them marked equivalent nor inside a usage
     error's `raise`; seeded. `left_out` counts the ones passed over, by reason."""
@@ -270,6 +370,8 @@ def sample(names: list[str], count: int, seed: int, left_out: dict[str, int] | N
                 left_out["usage error"] = left_out.get("usage error", 0) + 1
             elif in_unread_event(mutant.path, mutant.line):
                 left_out["unread event"] = left_out.get("unread event", 0) + 1
+            elif in_variant_only_branch(mutant.path, mutant.line):
+                left_out["faulty-variant branch"] = left_out.get("faulty-variant branch", 0) + 1
             else:
                 chosen.append(mutant)
                 taken += 1

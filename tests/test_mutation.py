@@ -260,3 +260,34 @@ def test_an_if_that_names_the_known_names_and_raises_a_usage_error_is_passed_ove
         "        raise UnknownName('reading', name, known)\n    if name == 'x':\n"
         "        print('a side effect')\n        raise UnknownName('reading', name, [])\n"
         "    return 1\n")) == [4, 5, 6, 9]
+
+
+def test_a_mutant_in_a_branch_only_faulty_variants_take_is_passed_over() -> None:
+    def line_of(path: str, text: str) -> int:
+        lines = (ROOT / path).read_text(encoding="utf-8").splitlines()
+        return next(i for i, line in enumerate(lines, start=1) if text in line)
+
+    node = "sut/reference/crh2/node.py"        # block_data_both_ways defaults to True: the else is the variant's
+    assert mutation.in_variant_only_branch(node, line_of(node, "self.train.ring.send(self, frame, R if"))
+    assert not mutation.in_variant_only_branch(node, line_of(node, "self.train.ring.broadcast(self, frame)\n"
+                                                             .strip()))
+    ring = "sut/reference/crh2/ring.py"        # self.source_id is only ever set from packet_source_id (None)
+    assert mutation.in_variant_only_branch(ring, line_of(ring, "offset, _ = declared_length(frame.wire)"))
+    lcu = "sut/reference/crh2/lcu.py"          # the test itself is behaviour: its mutants stay in
+    assert not mutation.in_variant_only_branch(lcu, line_of(lcu, "if (not self.train.cfg.behaviour.rxc_trusts"))
+    assert mutation.behaviour_defaults("sut/reference/metro/tcds.py")["message_ack"] is True
+
+
+@pytest.mark.parametrize(("test", "value"), [
+    ("behaviour.on", True), ("not behaviour.on", False), ("self.cfg.behaviour.off", False),
+    ("not behaviour.on and frame.ok", False),              # decided by the switch alone
+    ("behaviour.on and frame.ok", None),                   # the reference's frames decide: not a variant's branch
+    ("behaviour.on or frame.ok", True), ("behaviour.number is not None", False), ("behaviour.bits == 32", True),
+    ("self.alias", False), ("self.mixed", None),
+])
+def test_a_test_is_read_with_the_switches_at_their_defaults(test: str, value: bool | None) -> None:
+    import ast
+
+    defaults = {"on": True, "off": False, "number": None, "bits": 32}
+    got = mutation._value(ast.parse(test, mode="eval").body, {"alias": "off"}, defaults)
+    assert (None if got is mutation._UNKNOWN else got) == value
