@@ -69,7 +69,7 @@ BACKEND_PASSED_OVER = {"vehicle_names": "self-description", "input": "stimulus r
 # "fault.*"): a step that reads a kind through a variable still names it somewhere, and a literal that merely
 # looks like a kind only keeps more mutants in. Seed 3 (2026-11-26) marked 26 mutants equivalent by hand, 13
 # of them events of this sort.
-EMIT_CALLS = frozenset({"emit", "_emit", "_mark"})
+EMIT_CALLS = frozenset({"emit", "_emit", "_mark", "emit_free"})
 REPORT_MODULES = ("diagram.py", "report.py")
 _KIND = re.compile(r"^[a-z][a-z0-9_]*(\.[A-Za-z0-9_]+)+$")
 
@@ -179,8 +179,9 @@ _READ_KINDS: dict[Path, tuple[frozenset[str], tuple[str, ...]]] = {}      # by R
 _UNREAD: dict[tuple[Path, str], list[tuple[int, int]]] = {}
 
 
-def read_kinds() -> tuple[frozenset[str], tuple[str, ...]]:
-    """(kinds, kind prefixes) the conformance checks read: named in the step modules (EMIT_CALLS' note)."""
+def read_kinds() -> tuple[frozenset[str], tuple[str, ...], frozenset[str]]:
+    """(kinds, kind prefixes, every string) the conformance checks name in the step modules (EMIT_CALLS'
+    note). A kind without a dot ("balise") is read if some step names that very string."""
     if ROOT not in _READ_KINDS:
         literals: set[str] = set()
         for module in sorted((ROOT / "steps").glob("*.py")):
@@ -190,22 +191,25 @@ def read_kinds() -> tuple[frozenset[str], tuple[str, ...]]:
         kinds = frozenset(v for v in literals if _KIND.match(v))
         prefixes = tuple(sorted(v.rstrip("*") for v in literals
                                 if v.endswith((".", ".*")) and _KIND.match(v.rstrip("*") + "x")))
-        _READ_KINDS[ROOT] = (kinds, prefixes)
+        _READ_KINDS[ROOT] = (kinds, prefixes, frozenset(literals))
     return _READ_KINDS[ROOT]
 
 
 def in_unread_event(path: str, line: int) -> bool:
-    """Whether `line` of `path` is inside an emit call (EMIT_CALLS) whose kind, a literal, no check reads."""
+    """Whether `line` of `path` is inside an emit call (EMIT_CALLS) whose kind, a literal, no check reads.
+    Every emit of the references takes the kind as its last positional argument (`emit(kind)` on a node,
+    `emit(source, kind)` on a train)."""
     if (ROOT, path) not in _UNREAD:
-        kinds, prefixes = read_kinds()
+        _kinds, prefixes, literals = read_kinds()
 
         def unread(call: ast.Call) -> bool:
             name = call.func.attr if isinstance(call.func, ast.Attribute) else getattr(call.func, "id", None)
-            if name not in EMIT_CALLS:
+            if name not in EMIT_CALLS or not call.args:
                 return False
-            named = [a.value for a in call.args if isinstance(a, ast.Constant) and isinstance(a.value, str)
-                     and _KIND.match(a.value)]
-            return bool(named) and all(k not in kinds and not k.startswith(prefixes) for k in named)
+            kind = call.args[-1]
+            if not (isinstance(kind, ast.Constant) and isinstance(kind.value, str)):
+                return False
+            return kind.value not in literals and not ("." in kind.value and kind.value.startswith(prefixes))
         tree = ast.parse((ROOT / path).read_text(encoding="utf-8"))
         _UNREAD[ROOT, path] = [(node.lineno, node.end_lineno or node.lineno) for node in ast.walk(tree)
                                if isinstance(node, ast.Call) and unread(node)]

@@ -232,9 +232,12 @@ def test_a_mutant_inside_the_emit_of_an_event_no_check_reads_is_passed_over() ->
     assert mutation.in_unread_event(vdx, line_of(vdx, '"fs.on"'))              # the relays are what steps read
     assert not mutation.in_unread_event(vdx, line_of(vdx, '"loop.change"'))    # "the loop opens within 6 ms"
     assert not mutation.in_unread_event(vdx, line_of(vdx, "self.testing = True"))
-    kinds, _ = mutation.read_kinds()
+    kinds, _, _ = mutation.read_kinds()
     assert {"loop.change", "out.change", "cmd.rx", "wtb.msg"} <= kinds
     assert "line.switch" not in kinds              # named only by the timing diagram, which is not a check
+    onboard = "sut/reference/atp/onboard.py"       # a kind without a dot, and the kind is the last positional
+    assert mutation.in_unread_event(onboard, line_of(onboard, 'self._emit("ATP", "balise", group=group'))
+    assert not mutation.in_unread_event(onboard, line_of(onboard, '"neutral.command", state='))
 
 
 def test_the_map_is_made_again_when_a_scenario_or_step_changes(tmp_path: Path) -> None:
