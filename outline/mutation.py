@@ -143,12 +143,28 @@ def describe(name: str) -> Mutant:
     diff = get_diff_for_mutant(name, path=MUTANTS_DIR / path).splitlines()
     before = next((l[1:] for l in diff if l.startswith("-") and not l.startswith("---")), "")
     after = next((l[1:] for l in diff if l.startswith("+") and not l.startswith("+++")), "")
-    return Mutant(name, part_of(path), path, _line_of(ROOT / path, match["function"], before), before.strip(),
-                  after.strip())
+    return Mutant(name, part_of(path), path, _line_of(ROOT / path, match["function"], before, _offset(diff)),
+                  before.strip(), after.strip())
 
 
-def _line_of(source: Path, mangled: str, text: str) -> int:
-    """The line of `text` inside the function mutmut calls `mangled` (xǁClassǁmethod or x_function)."""
+def _offset(diff: list[str]) -> int | None:
+    """The changed line's place in its function (1: the `def` line), from the diff's first hunk."""
+    line = None
+    for text in diff:
+        hunk = re.match(r"^@@ -(\d+)", text)
+        if hunk:
+            line = int(hunk[1])
+        elif line is not None and not text.startswith(("---", "+++", "+")):
+            if text.startswith("-"):
+                return line
+            line += 1
+    return None
+
+
+def _line_of(source: Path, mangled: str, text: str, offset: int | None = None) -> int:
+    """The line of `text` inside the function mutmut calls `mangled` (xǁClassǁmethod or x_function): `offset`
+    lines into it where the diff says so (a line said twice in one function, such as `continue`, is then the
+    right one), else the first line that reads `text`."""
     names = mangled[2:].split("ǁ") if mangled.startswith("xǁ") else [mangled[2:]]
     nodes: list[ast.AST] = ast.parse(source.read_text(encoding="utf-8")).body
     found = None
@@ -160,6 +176,8 @@ def _line_of(source: Path, mangled: str, text: str) -> int:
         nodes = found.body
     lines = source.read_text(encoding="utf-8").splitlines()
     start, end = found.lineno, found.end_lineno or found.lineno
+    if offset is not None and start + offset - 1 <= end and lines[start + offset - 2].strip() == text.strip():
+        return start + offset - 1
     return next((i for i in range(start, end + 1) if lines[i - 1].strip() == text.strip()), start)
 
 

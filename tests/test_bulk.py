@@ -509,3 +509,22 @@ def test_the_environment_asks_for_frame_by_frame(monkeypatch: pytest.MonkeyPatch
     train = powered()
     train.advance(10 * S)
     assert not jumps, f"an advance skipped {jumps} periods though frame by frame was asked for"
+
+
+def test_a_soak_whose_traffic_shows_no_pattern_to_replay_still_agrees_both_ways(
+        monkeypatch: pytest.MonkeyPatch) -> None:
+    # Where the checked periods' traffic is no pattern to repeat (bulk._replayable finds none), a soak's
+    # samples are simulated instead of replayed, and after a jump the state is re-read before the next one:
+    # the soak must still end where frame by frame does, with the same state.
+    monkeypatch.setattr(bulk, "_replayable", lambda *args: None)
+
+    # A jump that stops short of a pending one-shot timer (the neutral-section entry timeout, 15 s) leaves
+    # no sample due: the state is then re-read first, frame by frame, and the soak goes on to its end.
+    def script(train: ReferenceTrain, run) -> None:
+        train.set_input("neutral section signal", "warning")
+        run(2 * MIN)
+
+    exact, fast = both_ways(script, sample_every_us=30 * S)
+    assert_same(exact, fast)
+    report, = fast.trace.select(kind="bulk.report")
+    assert report["skipped_us"] > 0 and report["replayed_us"] == 0, report

@@ -28,6 +28,18 @@ def test_a_mutant_is_placed_on_its_line_inside_its_method(tmp_path: Path) -> Non
     assert mutation._line_of(source, "xǁRelayǁpower", "    self.on = on") == 6
 
 
+def test_a_line_said_twice_in_a_function_is_placed_by_the_diff(tmp_path: Path) -> None:
+    source = tmp_path / "loop.py"
+    source.write_text("def x_run():\n    for a in b:\n        if a:\n            continue\n        if c:\n"
+                      "            continue\n        d()\n", encoding="utf-8")
+    # mutmut's diff of the second `continue`: its hunk starts 3 lines above it, counted from the def line
+    diff = ["--- loop.py", "+++ loop.py", "@@ -3,7 +3,7 @@", "         if a:", "             continue",
+            "         if c:", "-            continue", "+            break", "         d()"]
+    assert mutation._offset(diff) == 6
+    assert mutation._line_of(source, "x_x_run", "continue", mutation._offset(diff)) == 6
+    assert mutation._line_of(source, "x_x_run", "continue") == 4           # without the diff: the first
+
+
 def test_parts_are_the_three_references_and_the_shared_modules() -> None:
     assert [mutation.part_of(p) for p in ("sut/reference/crh2/ring.py", "sut/reference/metro/tcds.py",
                                            "sut/reference/atp/vdx.py", "sut/reference/bulk.py")] == \
