@@ -17,8 +17,9 @@ Phases:
 2. A seeded sample, the same share from each part (crh2, metro, atp, and the shared kernel/bulk), leaving out
    the mutants marked equivalent in sut/reference/EQUIVALENT_MUTANTS.txt, those inside a `raise` of the
    driver's usage errors (USAGE_ERRORS below), those of a backend's self-description (SELF_DESCRIPTION,
-   BACKEND_PASSED_OVER), those inside the emit of a trace event no check reads (EMIT_CALLS) and those in a
-   branch only faulty variants take (in_variant_only_branch); how many were passed over is printed and kept.
+   BACKEND_PASSED_OVER), those inside the emit of a trace event no check reads (EMIT_CALLS) or inside one of
+   its fields that no check reads (in_unread_field), and those in a branch only faulty variants take
+   (in_variant_only_branch); how many were passed over is printed and kept.
 3. `mutmut run <sample>`; outline/mutation_plugin.py notes which scenario failed for each mutant.
 4. The table: file:line, the change, killed by which scenario or survived; a kill rate per part
    (killed + timed out, over everything sampled; "no tests" means no scenario reaches the function, which
@@ -234,6 +235,62 @@ def in_unread_event(path: str, line: int) -> bool:
     return any(start <= line <= end for start, end in _UNREAD[ROOT, path])
 
 
+_READ_FIELDS: dict[Path, frozenset[str]] = {}
+
+
+def read_fields() -> frozenset[str]:
+    """Every name a conformance check could read an event's field by: the step modules' strings
+    (`ev["state"]`) and their calls' keyword names (`select(kind=..., state="open")`)."""
+    if ROOT not in _READ_FIELDS:
+        names: set[str] = set(read_kinds()[2])
+        for module in sorted((ROOT / "steps").glob("*.py")):
+            if module.name not in REPORT_MODULES:
+                names |= {node.arg for node in ast.walk(ast.parse(module.read_text(encoding="utf-8")))
+                          if isinstance(node, ast.keyword) and node.arg}
+        _READ_FIELDS[ROOT] = frozenset(names)
+    return _READ_FIELDS[ROOT]
+
+
+def changed_columns(line_text: str, before: str, after: str) -> tuple[int, int] | None:
+    """The columns of `line_text` (the source line, `before` stripped) that the mutation changes."""
+    indent = line_text.find(before)
+    if indent < 0:
+        return None
+    prefix = 0
+    while prefix < min(len(before), len(after)) and before[prefix] == after[prefix]:
+        prefix += 1
+    suffix = 0
+    while suffix < min(len(before), len(after)) - prefix and before[-1 - suffix] == after[-1 - suffix]:
+        suffix += 1
+    return indent + prefix, indent + max(prefix, len(before) - suffix)
+
+
+def in_unread_field(path: str, line: int, before: str, after: str) -> bool:
+    """Whether the change is inside one keyword argument of an emit call (EMIT_CALLS) that names a field no
+    check reads (read_fields): a diagnostic field of an event whose other fields may well be read."""
+    source = (ROOT / path).read_text(encoding="utf-8")
+    lines = source.splitlines()
+    if not 0 < line <= len(lines):
+        return False
+    columns = changed_columns(lines[line - 1], before, after)
+    if columns is None:
+        return False
+    start, end = columns
+    fields = read_fields()
+    for node in ast.walk(ast.parse(source)):
+        if not isinstance(node, ast.Call):
+            continue
+        name = node.func.attr if isinstance(node.func, ast.Attribute) else getattr(node.func, "id", None)
+        if name not in EMIT_CALLS:
+            continue
+        for kw in node.keywords:
+            if kw.arg is None or kw.arg in fields or kw.lineno != line or kw.end_lineno != line:
+                continue
+            if kw.col_offset <= start and end <= (kw.end_col_offset or 0):
+                return True
+    return False
+
+
 _RAISES: dict[str, list[tuple[int, int]]] = {}
 
 
@@ -394,6 +451,8 @@ def sample(names: list[str], count: int, seed: int, left_out: dict[str, int] | N
                 left_out["unread event"] = left_out.get("unread event", 0) + 1
             elif in_variant_only_branch(mutant.path, mutant.line):
                 left_out["faulty-variant branch"] = left_out.get("faulty-variant branch", 0) + 1
+            elif in_unread_field(mutant.path, mutant.line, mutant.before, mutant.after):
+                left_out["unread field"] = left_out.get("unread field", 0) + 1
             else:
                 chosen.append(mutant)
                 taken += 1

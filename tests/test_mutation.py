@@ -306,3 +306,21 @@ def test_a_test_is_read_with_the_switches_at_their_defaults(test: str, value: bo
     defaults = {"on": True, "off": False, "number": None, "bits": 32}
     got = mutation._value(ast.parse(test, mode="eval").body, {"alias": "off"}, defaults)
     assert (None if got is mutation._UNKNOWN else got) == value
+
+
+def test_a_mutant_in_a_field_no_check_reads_is_passed_over_one_in_a_read_field_is_not() -> None:
+    bulk = "sut/reference/bulk.py"
+    lines = (ROOT / bulk).read_text(encoding="utf-8").splitlines()
+    line = next(i for i, text in enumerate(lines, start=1) if '"time.skip", frm=sampled_until' in text)
+    before = lines[line - 1].strip()
+    # time.skip is read for where a skip starts and ends (frm, to), never for its period
+    assert mutation.in_unread_field(bulk, line, before, before.replace("period_us=period", "period_us=None"))
+    assert not mutation.in_unread_field(bulk, line, before, before.replace("frm=sampled_until", "frm=None"))
+    assert not mutation.in_unread_field(bulk, line, before, before.replace('"time.skip"', '"XXtime.skipXX"'))
+    assert {"frm", "to", "state"} <= mutation.read_fields() and "period_us" not in mutation.read_fields()
+
+
+def test_the_columns_a_mutation_changes_are_found_in_its_line() -> None:
+    line = '        emit("a", x=1, y=2)'
+    assert mutation.changed_columns(line, 'emit("a", x=1, y=2)', 'emit("a", x=1, y=None)') == (25, 26)
+    assert mutation.changed_columns(line, 'emit("a", x=1, y=2)', 'emit("a", y=2)') == (18, 23)   # the comma too
