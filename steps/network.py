@@ -286,6 +286,20 @@ def _(sut: TrainDriver, t_action: int, master: str, node: str, count: int, size:
     assert gaps and min(gaps) >= us(gap), f"blocks sent {ms(min(gaps))} apart, less than {gap} ms"
 
 
+@then(parsers.parse('"{first}"与"{second}"的数据块传输互不重叠'))
+@then(parsers.parse('the block transfers of "{first}" and "{second}" do not overlap'))
+def _(sut: TrainDriver, t_action: int, first: str, second: str) -> None:
+    """PRO-06: the master grants one node at a time; the next only once the last has sent all it asked."""
+    spans = {}
+    for node in (first, second):
+        sent = sut.trace.select(kind="block.tx", source=f"{node}.CPU3", since=t_action)
+        assert sent, f"{node} sent no block"
+        spans[node] = (sent[0].t, sent[-1].t)
+    (a0, a1), (b0, b1) = spans[first], spans[second]
+    assert a1 < b0 or b1 < a0, (f"{first} sent blocks from {ms(a0)} to {ms(a1)}, {second} from {ms(b0)} to "
+                                f"{ms(b1)}: both at once")
+
+
 @then(parsers.parse('"{master}"保存有"{node}"的{size:d}字节记录'))
 @then(parsers.parse('"{master}" holds the {size:d}-byte record of "{node}"'))
 def _(sut: TrainDriver, master: str, size: int, node: str) -> None:

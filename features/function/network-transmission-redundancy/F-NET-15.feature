@@ -27,3 +27,12 @@ Feature: F-NET-15 Block data: 236-byte blocks on request and grant, at least 10 
     And "car1.CCU.sys1" grants "car2.LCU" the block transfer in its status data
     And "car1.CCU.sys1" holds the 500-byte record of "car6.LCU"
     And "car1.CCU.sys1" holds the 300-byte record of "car2.LCU"
+
+  @req:PRO-06
+  Scenario: F-NET-15 A long transfer ends before the next granted node sends
+    When "car2.LCU" asks to send a 5000-byte record as block data
+    And "car6.LCU" asks to send a 300-byte record as block data
+    And 3 s pass
+    Then "car1.CCU.sys1" holds the 5000-byte record of "car2.LCU"
+    And "car1.CCU.sys1" holds the 300-byte record of "car6.LCU"
+    And the block transfers of "car2.LCU" and "car6.LCU" do not overlap
