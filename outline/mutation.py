@@ -194,61 +194,69 @@ def equivalents() -> list[tuple[str, str, str]]:
     return marked
 
 
-_READ_KINDS: dict[Path, tuple[frozenset[str], tuple[str, ...]]] = {}      # by ROOT (tests point it elsewhere)
-_UNREAD: dict[tuple[Path, str], list[tuple[int, int]]] = {}
+_STEP_NAMES: dict[Path, tuple[frozenset[str], frozenset[str]]] = {}      # by ROOT (tests point it elsewhere)
+_EMITS: dict[tuple[Path, str], tuple[str, list[ast.Call]]] = {}
+
+
+def _step_names() -> tuple[frozenset[str], frozenset[str]]:
+    """(every string, every keyword name) in the step modules a conformance check is made of (not the
+    report's: REPORT_MODULES), each module parsed once."""
+    if ROOT not in _STEP_NAMES:
+        strings: set[str] = set()
+        keywords: set[str] = set()
+        for module in sorted((ROOT / "steps").glob("*.py")):
+            if module.name in REPORT_MODULES:
+                continue
+            for node in ast.walk(ast.parse(module.read_text(encoding="utf-8"))):
+                if isinstance(node, ast.Constant) and isinstance(node.value, str):
+                    strings.add(node.value)
+                elif isinstance(node, ast.keyword) and node.arg:
+                    keywords.add(node.arg)
+        _STEP_NAMES[ROOT] = (frozenset(strings), frozenset(keywords))
+    return _STEP_NAMES[ROOT]
+
+
+def _emits(path: str) -> tuple[str, list[ast.Call]]:
+    """The source of `path` and its emit calls (EMIT_CALLS), parsed once per file."""
+    if (ROOT, path) not in _EMITS:
+        source = (ROOT / path).read_text(encoding="utf-8")
+        calls = [node for node in ast.walk(ast.parse(source)) if isinstance(node, ast.Call)
+                 and (node.func.attr if isinstance(node.func, ast.Attribute)
+                      else getattr(node.func, "id", None)) in EMIT_CALLS]
+        _EMITS[ROOT, path] = (source, calls)
+    return _EMITS[ROOT, path]
 
 
 def read_kinds() -> tuple[frozenset[str], tuple[str, ...], frozenset[str]]:
     """(kinds, kind prefixes, every string) the conformance checks name in the step modules (EMIT_CALLS'
     note). A kind without a dot ("balise") is read if some step names that very string."""
-    if ROOT not in _READ_KINDS:
-        literals: set[str] = set()
-        for module in sorted((ROOT / "steps").glob("*.py")):
-            if module.name not in REPORT_MODULES:
-                literals |= {node.value for node in ast.walk(ast.parse(module.read_text(encoding="utf-8")))
-                             if isinstance(node, ast.Constant) and isinstance(node.value, str)}
-        kinds = frozenset(v for v in literals if _KIND.match(v))
-        prefixes = tuple(sorted(v.rstrip("*") for v in literals
-                                if v.endswith((".", ".*")) and _KIND.match(v.rstrip("*") + "x")))
-        _READ_KINDS[ROOT] = (kinds, prefixes, frozenset(literals))
-    return _READ_KINDS[ROOT]
+    literals = _step_names()[0]
+    kinds = frozenset(v for v in literals if _KIND.match(v))
+    prefixes = tuple(sorted(v.rstrip("*") for v in literals
+                            if v.endswith((".", ".*")) and _KIND.match(v.rstrip("*") + "x")))
+    return kinds, prefixes, literals
 
 
 def in_unread_event(path: str, line: int) -> bool:
     """Whether `line` of `path` is inside an emit call (EMIT_CALLS) whose kind, a literal, no check reads.
     Every emit of the references takes the kind as its last positional argument (`emit(kind)` on a node,
     `emit(source, kind)` on a train)."""
-    if (ROOT, path) not in _UNREAD:
-        _kinds, prefixes, literals = read_kinds()
+    _kinds, prefixes, literals = read_kinds()
 
-        def unread(call: ast.Call) -> bool:
-            name = call.func.attr if isinstance(call.func, ast.Attribute) else getattr(call.func, "id", None)
-            if name not in EMIT_CALLS or not call.args:
-                return False
-            kind = call.args[-1]
-            if not (isinstance(kind, ast.Constant) and isinstance(kind.value, str)):
-                return False
-            return kind.value not in literals and not ("." in kind.value and kind.value.startswith(prefixes))
-        tree = ast.parse((ROOT / path).read_text(encoding="utf-8"))
-        _UNREAD[ROOT, path] = [(node.lineno, node.end_lineno or node.lineno) for node in ast.walk(tree)
-                               if isinstance(node, ast.Call) and unread(node)]
-    return any(start <= line <= end for start, end in _UNREAD[ROOT, path])
-
-
-_READ_FIELDS: dict[Path, frozenset[str]] = {}
+    def unread(call: ast.Call) -> bool:
+        kind = call.args[-1] if call.args else None
+        if not (isinstance(kind, ast.Constant) and isinstance(kind.value, str)):
+            return False
+        return kind.value not in literals and not ("." in kind.value and kind.value.startswith(prefixes))
+    return any(call.lineno <= line <= (call.end_lineno or call.lineno)
+               for call in _emits(path)[1] if unread(call))
 
 
 def read_fields() -> frozenset[str]:
     """Every name a conformance check could read an event's field by: the step modules' strings
     (`ev["state"]`) and their calls' keyword names (`select(kind=..., state="open")`)."""
-    if ROOT not in _READ_FIELDS:
-        names: set[str] = set(read_kinds()[2])
-        for module in sorted((ROOT / "steps").glob("*.py")):
-            if module.name not in REPORT_MODULES:
-                names |= {node.arg for node in ast.walk(ast.parse(module.read_text(encoding="utf-8")))
-                          if isinstance(node, ast.keyword) and node.arg}
-        _READ_FIELDS[ROOT] = frozenset(names)
-    return _READ_FIELDS[ROOT]
+    strings, keywords = _step_names()
+    return strings | keywords
 
 
 def changed_columns(line_text: str, before: str, after: str) -> tuple[int, int] | None:
@@ -268,7 +276,7 @@ def changed_columns(line_text: str, before: str, after: str) -> tuple[int, int] 
 def in_unread_field(path: str, line: int, before: str, after: str) -> bool:
     """Whether the change is inside one keyword argument of an emit call (EMIT_CALLS) that names a field no
     check reads (read_fields): a diagnostic field of an event whose other fields may well be read."""
-    source = (ROOT / path).read_text(encoding="utf-8")
+    source, calls = _emits(path)
     lines = source.splitlines()
     if not 0 < line <= len(lines):
         return False
@@ -277,18 +285,9 @@ def in_unread_field(path: str, line: int, before: str, after: str) -> bool:
         return False
     start, end = columns
     fields = read_fields()
-    for node in ast.walk(ast.parse(source)):
-        if not isinstance(node, ast.Call):
-            continue
-        name = node.func.attr if isinstance(node.func, ast.Attribute) else getattr(node.func, "id", None)
-        if name not in EMIT_CALLS:
-            continue
-        for kw in node.keywords:
-            if kw.arg is None or kw.arg in fields or kw.lineno != line or kw.end_lineno != line:
-                continue
-            if kw.col_offset <= start and end <= (kw.end_col_offset or 0):
-                return True
-    return False
+    return any(kw.arg is not None and kw.arg not in fields and kw.lineno == line == kw.end_lineno
+               and kw.col_offset <= start and end <= (kw.end_col_offset or 0)
+               for call in calls for kw in call.keywords)
 
 
 _RAISES: dict[str, list[tuple[int, int]]] = {}
@@ -416,8 +415,9 @@ def in_variant_only_branch(path: str, line: int) -> bool:
 
 
 def sample(names: list[str], count: int, seed: int, left_out: dict[str, int] | None = None) -> list[Mutant]:
-    """`count` mutants, the same share from each part, none of them marked equivalent nor inside a usage
-    error's `raise`; seeded. `left_out` counts the ones passed over, by reason."""
+    """`count` mutants, the same share from each part, none of those the module's note lists as passed over
+    (marked equivalent, usage errors, self-description, unread events and fields, faulty-variant branches);
+    seeded. `left_out` counts the ones passed over, by reason."""
     rng = random.Random(seed)
     left_out = {} if left_out is None else left_out
     marked = set(equivalents())
