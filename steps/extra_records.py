@@ -201,6 +201,11 @@ def _fault_records(sut: TrainDriver, master: str, node: str) -> list[list[str]]:
     return [t.split("|") for t in texts if t.startswith("F|")]
 
 
+def _records_saying(sut: TrainDriver, master: str, node: str, board: str, event: str) -> list[list[str]]:
+    """Those of them saying `board` `event` (failed, recovered)."""
+    return [r for r in _fault_records(sut, master, node) if r[3:] == [board, event]]
+
+
 @then(parsers.parse('"{master}"保存有"{node}"的{count:d}条故障记录'))
 @then(parsers.parse('"{master}" holds {count:d} fault record(s) of "{node}"'))
 def _(sut: TrainDriver, master: str, count: int, node: str) -> None:
@@ -213,7 +218,7 @@ def _(sut: TrainDriver, master: str, count: int, node: str) -> None:
 @then(parsers.parse('"{master}" holds a fault record of "{node}" saying "{board}" {event:w}, stamped within '
                     '{bound:g} ms of it'))
 def _(sut: TrainDriver, t_action: int, master: str, node: str, board: str, event: str, bound: float) -> None:
-    records = [r for r in _fault_records(sut, master, node) if r[3:] == [board, event]]
+    records = _records_saying(sut, master, node, board, event)
     assert records, f"{master} holds no record of {node} saying {board} {event}: {_fault_records(sut, master, node)}"
     stamp_us = int(records[-1][1]) * 1000              # whole milliseconds
     assert t_action - 1000 < stamp_us <= t_action + us(bound), (
@@ -235,8 +240,7 @@ def _(sut: TrainDriver, t_action: int, master: str, node: str, board: str, event
         raise AssertionError(f"the step comes {ms(sut.now_us - deadline)} after its bound: when the record came "
                              f"cannot be told any more (look before {bound:g} ms have passed)")
     while True:
-        records = [r for r in _fault_records(sut, master, node) if r[3:] == [board, event]]
-        if records:
+        if _records_saying(sut, master, node, board, event):
             return
         if sut.now_us >= deadline:
             raise AssertionError(f"{ms(deadline - t_action)} after the {event} {master} holds no record of {node} "
