@@ -12,6 +12,7 @@ import io
 import json
 from array import array
 from bisect import bisect_left, bisect_right
+from operator import attrgetter
 from typing import Any, Callable, Iterable, Iterator, Mapping, NamedTuple
 
 
@@ -36,6 +37,9 @@ class TraceEvent(NamedTuple):
         return self.fields.get(key, default)
 
 
+_KIND = attrgetter("kind")
+
+
 def _source_matcher(pattern: str | None) -> Callable[[str], bool]:
     if pattern is None:
         return lambda s: True
@@ -55,7 +59,13 @@ class Trace:
     def __init__(self, events: list[TraceEvent]):
         self._events = events
         self._indexed = 0
-        self._by_kind: dict[str, dict[str | None, array]] = {}      # positions as machine ints: 8 bytes, not 36
+        self._kinds: list[str] = []                   # the kind of every event indexed so far (C-speed extend)
+        self._kind_set: set[str] = set()
+        # kind -> [positions, kinds scanned]; kind -> [{source: positions}, kind positions filed]. Only
+        # kinds a step asks for are indexed, each by a search of the kinds list rather than a Python step
+        # per event: a trace holds millions of frames, and a scenario asks for a handful of kinds.
+        self._by_kind: dict[str, list] = {}
+        self._by_source: dict[str, list] = {}
 
     def __getstate__(self) -> dict:
         return {"_events": self._events}           # the index is rebuilt where it is needed, not pickled
@@ -63,32 +73,61 @@ class Trace:
     def __setstate__(self, state: dict) -> None:
         self.__init__(state["_events"])
 
+    def _catch_up(self) -> list[str]:
+        events, kinds = self._events, self._kinds
+        if self._indexed < len(events):
+            fresh = list(map(_KIND, events[self._indexed:]))
+            kinds.extend(fresh)
+            self._kind_set.update(fresh)
+            self._indexed = len(events)
+        return kinds
+
+    def _of_kind(self, kind: str) -> "array":
+        kinds = self._catch_up()
+        entry = self._by_kind.get(kind)
+        if entry is None:
+            entry = self._by_kind[kind] = [array("q"), 0]
+        positions, scanned = entry
+        if scanned < len(kinds):
+            if kind in self._kind_set:
+                find, append, i = kinds.index, positions.append, scanned
+                try:
+                    while True:
+                        i = find(kind, i)
+                        append(i)
+                        i += 1
+                except ValueError:
+                    pass
+            entry[1] = len(kinds)
+        return positions
+
     def _positions(self, kind: str, source: str | None) -> "array | list[int]":
         """Positions of the events of `kind` from the matching sources, in list order."""
-        events, by_kind = self._events, self._by_kind
-        for i in range(self._indexed, len(events)):
-            ev = events[i]
-            sources = by_kind.get(ev.kind)
-            if sources is None:
-                sources = by_kind[ev.kind] = {None: array("q")}      # None: every source, for queries without one
-            sources[None].append(i)
-            positions = sources.get(ev.source)
-            if positions is None:
-                positions = sources[ev.source] = array("q")
-            positions.append(i)
-        self._indexed = len(events)
-        sources = by_kind.get(kind)
-        if not sources:
-            return []
-        if source is None:
-            return sources[None]
+        positions = self._of_kind(kind)
+        if source is None or not positions:
+            return positions
+        # The kind's positions by source, brought up to date with one pass over its new positions; a
+        # source pattern is then matched against the few distinct sources, not against every event.
+        entry = self._by_source.get(kind)
+        if entry is None:
+            entry = self._by_source[kind] = [{}, 0]
+        by_source, filtered = entry
+        if filtered < len(positions):
+            events = self._events
+            for i in positions[filtered:]:
+                src = events[i].source
+                mine = by_source.get(src)
+                if mine is None:
+                    mine = by_source[src] = array("q")
+                mine.append(i)
+            entry[1] = len(positions)
         match_src = _source_matcher(source)
-        lists = [positions for src, positions in sources.items() if src is not None and match_src(src)]
+        lists = [mine for src, mine in by_source.items() if match_src(src)]
         if len(lists) == 1:
             return lists[0]
-        if len(lists) == len(sources) - 1:
-            return sources[None]
-        return sorted(i for positions in lists for i in positions)
+        if len(lists) == len(by_source):
+            return positions
+        return sorted(i for mine in lists for i in mine)
 
     def __len__(self) -> int:
         return len(self._events)
@@ -121,20 +160,37 @@ class Trace:
             out.append(ev)
         return out
 
+    def _window(self, kind: str, source: str | None, since: int | None,
+                until: int | None) -> tuple["array | list[int]", int, int]:
+        """The positions of `kind` from `source`, and the range of them inside [since, until]."""
+        events = self._events
+        positions = self._positions(kind, source)
+        t_of = lambda i: events[i].t                        # noqa: E731
+        lo = bisect_left(positions, since, key=t_of) if since else 0
+        hi = bisect_right(positions, until, key=t_of) if until is not None else len(positions)
+        return positions, lo, hi
+
     def _select_indexed(self, kind: str, source: str | None, since: int | None, until: int | None,
                         where: dict[str, Any]) -> list[TraceEvent]:
         events = self._events
-        positions = self._positions(kind, source)
-        start = bisect_left(positions, since, key=lambda i: events[i].t) if since else 0
-        out = []
-        for i in positions[start:] if start else positions:
-            ev = events[i]
-            if until is not None and ev.t > until:
-                break
-            if where and any(ev.fields.get(k) != v for k, v in where.items()):
-                continue
-            out.append(ev)
-        return out
+        positions, lo, hi = self._window(kind, source, since, until)
+        if not where:
+            return [events[i] for i in positions[lo:hi]]
+        wanted = where.items()
+        return [ev for ev in map(events.__getitem__, positions[lo:hi])
+                if not any(ev.fields.get(k) != v for k, v in wanted)]
+
+    def _first_indexed(self, kind: str, source: str | None, since: int | None, until: int | None,
+                       where: dict[str, Any], last: bool) -> TraceEvent | None:
+        # A check that wants one event stops at it, instead of filtering every event of a long window.
+        events = self._events
+        positions, lo, hi = self._window(kind, source, since, until)
+        wanted = where.items()
+        for i in (reversed(range(lo, hi)) if last else range(lo, hi)):
+            ev = events[positions[i]]
+            if not any(ev.fields.get(k) != v for k, v in wanted):
+                return ev
+        return None
 
     def of_kinds(self, wanted: Callable[[str], bool], since: int | None = None,
                  until: int | None = None) -> list[TraceEvent]:
@@ -144,12 +200,12 @@ class Trace:
         if type(self) is not Trace:                         # a subclass may stand for another's events: walk
             return [ev for ev in self._since(since) if (until is None or ev.t <= until) and wanted(ev.kind)]
         events = self._events
-        self._positions("", None)                           # the index up to date
+        self._catch_up()
         t_of = lambda i: events[i].t                        # noqa: E731
         runs = []
-        for kind, sources in self._by_kind.items():
+        for kind in sorted(self._kind_set):
             if wanted(kind):
-                positions = sources[None]
+                positions = self._of_kind(kind)
                 lo = bisect_left(positions, since, key=t_of) if since else 0
                 hi = bisect_right(positions, until, key=t_of) if until is not None else len(positions)
                 if lo < hi:
@@ -172,12 +228,19 @@ class Trace:
         return events[lo:]
 
     def first(self, **criteria: Any) -> TraceEvent | None:
-        found = self.select(**criteria)
-        return found[0] if found else None
+        return self._one(criteria, last=False)
 
     def last(self, **criteria: Any) -> TraceEvent | None:
+        return self._one(criteria, last=True)
+
+    def _one(self, criteria: dict[str, Any], last: bool) -> TraceEvent | None:
+        kind = criteria.get("kind")
+        if kind is not None and not kind.endswith("*") and type(self) is Trace:
+            where = dict(criteria)
+            args = [where.pop(name, None) for name in ("kind", "source", "since", "until")]
+            return self._first_indexed(*args, where, last)
         found = self.select(**criteria)
-        return found[-1] if found else None
+        return (found[-1] if last else found[0]) if found else None
 
     def to_csv(self) -> str:
         buf = io.StringIO()

@@ -43,6 +43,9 @@ def test_the_index_answers_as_the_walk_does_while_the_trace_grows(first, more, a
         for kind, source, since, until, where in asked:
             assert indexed.select(kind, source, since, until, **where) == walk.select(kind, source, since, until,
                                                                                      **where)
+            criteria = dict(kind=kind, source=source, since=since, until=until, **where)
+            assert indexed.first(**criteria) == walk.first(**criteria)       # stops at the first it finds
+            assert indexed.last(**criteria) == walk.last(**criteria)
         grown.extend(timed[len(first):])            # appended between two queries, as a train does
 
 
@@ -50,7 +53,7 @@ def test_a_pickled_view_leaves_its_index_behind_and_still_answers():
     view = Trace(_timed([(1, "car1.CI", "cmd.in", 1), (1, "car2.BCU", "cmd.in", 2)]))
     assert len(view.select("cmd.in", "car1")) == 1
     again = pickle.loads(pickle.dumps(view))          # a snapshot of a backend holds its view
-    assert (again._indexed, again._by_kind) == (0, {})
+    assert (again._indexed, again._by_kind, again._by_source) == (0, {}, {})
     assert again.select("cmd.in") == view.select("cmd.in")
 
 
