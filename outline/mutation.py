@@ -18,8 +18,9 @@ Phases:
    the mutants marked equivalent in sut/reference/EQUIVALENT_MUTANTS.txt, those inside a `raise` of the
    driver's usage errors (USAGE_ERRORS below), those of a backend's self-description (SELF_DESCRIPTION,
    BACKEND_PASSED_OVER), those inside the emit of a trace event no check reads (EMIT_CALLS) or inside one of
-   its fields that no check reads (in_unread_field), and those in a branch only faulty variants take
-   (in_variant_only_branch); how many were passed over is printed and kept.
+   its fields that no check reads (in_unread_field), those in a branch only faulty variants take
+   (in_variant_only_branch) and those in other code the switches leave unrun (never_run: an operand they
+   decide, a function only a variant calls); how many were passed over is printed and kept.
 3. `mutmut run <sample>`; outline/mutation_plugin.py notes which scenario failed for each mutant.
 4. The table: file:line, the change, killed by which scenario or survived; a kill rate per part
    (killed + timed out, over everything sampled; "no tests" means no scenario reaches the function, which
@@ -352,25 +353,30 @@ def _switch(node: ast.AST, aliases: dict[str, str]) -> str | None:
     return None
 
 
-def _value(node: ast.AST, aliases: dict[str, str], defaults: dict[str, object]) -> object:
-    """What `node` is when every behaviour switch has its default, or _UNKNOWN."""
+def _value(node: ast.AST, aliases: dict[str, str], defaults: dict[str, object],
+           names: dict[str, object] | None = None) -> object:
+    """What `node` is when every behaviour switch has its default, or _UNKNOWN. `names`: local variables
+    the function sets once, with what they are."""
     switch = _switch(node, aliases)
     if switch is not None:
         return defaults.get(switch, _UNKNOWN)
+    if isinstance(node, ast.Name):
+        return (names or {}).get(node.id, _UNKNOWN)
     if isinstance(node, ast.Constant):
         return node.value
     if isinstance(node, ast.UnaryOp) and isinstance(node.op, ast.Not):
-        value = _value(node.operand, aliases, defaults)
+        value = _value(node.operand, aliases, defaults, names)
         return _UNKNOWN if value is _UNKNOWN else not value
     if isinstance(node, ast.BoolOp):
-        values = [_value(v, aliases, defaults) for v in node.values]
+        values = [_value(v, aliases, defaults, names) for v in node.values]
         decides = (lambda v: v is not _UNKNOWN and not v) if isinstance(node.op, ast.And) else \
             (lambda v: v is not _UNKNOWN and bool(v))
         if any(decides(v) for v in values):
             return isinstance(node.op, ast.Or)
         return _UNKNOWN if _UNKNOWN in values else isinstance(node.op, ast.And)
     if isinstance(node, ast.Compare) and len(node.ops) == 1:
-        left, right = _value(node.left, aliases, defaults), _value(node.comparators[0], aliases, defaults)
+        left = _value(node.left, aliases, defaults, names)
+        right = _value(node.comparators[0], aliases, defaults, names)
         if left is _UNKNOWN or right is _UNKNOWN:
             return _UNKNOWN
         compare = {ast.Is: lambda a, b: a is b, ast.IsNot: lambda a, b: a is not b, ast.Eq: lambda a, b: a == b,
@@ -379,27 +385,32 @@ def _value(node: ast.AST, aliases: dict[str, str], defaults: dict[str, object]) 
     return _UNKNOWN
 
 
+def _switch_aliases(tree: ast.AST) -> dict[str, str]:
+    """`self.X` that this file only ever sets from one behaviour switch: X -> the switch."""
+    set_from: dict[str, set[str | None]] = {}
+    for node in ast.walk(tree):
+        targets = [node.target] if isinstance(node, ast.AnnAssign) else getattr(node, "targets", [])
+        if not isinstance(node, (ast.Assign, ast.AnnAssign)) or node.value is None:
+            continue
+        pairs = [(t, node.value) for t in targets]
+        if isinstance(node, ast.Assign) and isinstance(node.targets[0], ast.Tuple) and \
+                isinstance(node.value, ast.Tuple) and len(node.targets[0].elts) == len(node.value.elts):
+            pairs = list(zip(node.targets[0].elts, node.value.elts))
+        for target, value in pairs:
+            if isinstance(target, ast.Attribute) and isinstance(target.value, ast.Name) and \
+                    target.value.id == "self":
+                set_from.setdefault(target.attr, set()).add(_switch(value, {}))
+    return {attr: next(iter(switches)) for attr, switches in set_from.items()
+            if len(switches) == 1 and None not in switches}
+
+
 def in_variant_only_branch(path: str, line: int) -> bool:
     """Whether `line` of `path` is in a branch of an `if` that the reference's behaviour switches, at their
     defaults, never take (the note above)."""
     if (ROOT, path) not in _UNTAKEN:
         tree = ast.parse((ROOT / path).read_text(encoding="utf-8"))
         defaults = behaviour_defaults(path)
-        set_from: dict[str, set[str | None]] = {}
-        for node in ast.walk(tree):
-            targets = [node.target] if isinstance(node, ast.AnnAssign) else getattr(node, "targets", [])
-            if not isinstance(node, (ast.Assign, ast.AnnAssign)) or node.value is None:
-                continue
-            pairs = [(t, node.value) for t in targets]
-            if isinstance(node, ast.Assign) and isinstance(node.targets[0], ast.Tuple) and \
-                    isinstance(node.value, ast.Tuple) and len(node.targets[0].elts) == len(node.value.elts):
-                pairs = list(zip(node.targets[0].elts, node.value.elts))
-            for target, value in pairs:
-                if isinstance(target, ast.Attribute) and isinstance(target.value, ast.Name) and \
-                        target.value.id == "self":
-                    set_from.setdefault(target.attr, set()).add(_switch(value, {}))
-        aliases = {attr: next(iter(switches)) for attr, switches in set_from.items()
-                   if len(switches) == 1 and None not in switches}
+        aliases = _switch_aliases(tree)
         spans = []
         for node in ast.walk(tree):
             if not isinstance(node, ast.If):
@@ -414,9 +425,159 @@ def in_variant_only_branch(path: str, line: int) -> bool:
     return any(start <= line <= end for start, end in _UNTAKEN[ROOT, path])
 
 
+# Code the reference never runs although no `if` of a variant's says so: an operand of `and`/`or` after one
+# that the switches already decide (`not behaviour.on and <never read>`), the branch of a conditional
+# expression that they decide, and a function whose every use is in such code, in a variant's branch or in
+# another such function (the self-diagnostic line's status data, the one-check-sequence codec). Seeds 3-5
+# marked 10 mutants of these kinds by hand. A use is any name, attribute or string that spells the function's
+# name in sut/, steps/ or outline/ (a method of the same name elsewhere, or a getattr by string, keeps it in).
+Extent = tuple[int, int, int, int]                  # (first line, column) .. (last line, end column)
+_NEVER_RUN: dict[Path, dict[str, list[tuple[Extent, str]]]] = {}
+_WHOLE = 1 << 30
+
+
+def _extent(node: ast.AST) -> Extent:
+    return (node.lineno, node.col_offset, node.end_lineno or node.lineno,
+            node.end_col_offset if node.end_col_offset is not None else _WHOLE)
+
+
+def _inside(extent: Extent, line: int, start: int, end: int) -> bool:
+    first, col, last, end_col = extent
+    return (first, col) <= (line, start) and (line, end) <= (last, end_col)
+
+
+def _set_once(function: ast.AST, aliases: dict[str, str], defaults: dict[str, object]) -> dict[str, object]:
+    """The local variables `function` sets exactly once, by a plain `name = ...`, that the switches decide."""
+    stores: dict[str, list[ast.AST]] = {}
+    for node in ast.walk(function):
+        if isinstance(node, ast.Name) and isinstance(node.ctx, (ast.Store, ast.Del)):
+            stores.setdefault(node.id, []).append(node)
+        elif isinstance(node, ast.arg):
+            stores.setdefault(node.arg, []).extend([node, node])        # a parameter is never decided
+    names: dict[str, object] = {}
+    for node in ast.walk(function):
+        if isinstance(node, ast.Assign) and len(node.targets) == 1 and isinstance(node.targets[0], ast.Name) \
+                and len(stores[node.targets[0].id]) == 1:
+            value = _value(node.value, aliases, defaults, names)
+            if value is not _UNKNOWN:
+                names[node.targets[0].id] = value
+    return names
+
+
+def _terminates(block: list[ast.stmt]) -> bool:
+    return bool(block) and isinstance(block[-1], (ast.Return, ast.Raise, ast.Continue, ast.Break))
+
+
+def _decided(path: str, tree: ast.AST) -> list[Extent]:
+    """The extents in `path` the switches at their defaults leave unread: operands after a deciding one, a
+    conditional expression's untaken branch, an `if`'s untaken branch (in_variant_only_branch), and what
+    follows an `if` they decide that always returns."""
+    defaults = behaviour_defaults(path)
+    aliases = _switch_aliases(tree)
+    extents: list[Extent] = []
+
+    def after_early_return(node: ast.AST, names: dict[str, object]) -> None:
+        for field in ("body", "orelse", "finalbody"):
+            block = getattr(node, field, None)
+            if not isinstance(block, list):
+                continue
+            for i, st in enumerate(block[:-1]):
+                if isinstance(st, ast.If) and not st.orelse and _terminates(st.body) and \
+                        _value(st.test, aliases, defaults, names) not in (_UNKNOWN, False, None, 0, ""):
+                    extents.append((block[i + 1].lineno, 0, block[-1].end_lineno or block[-1].lineno, _WHOLE))
+                    break
+
+    def visit(scope: ast.AST, names: dict[str, object]) -> None:
+        after_early_return(scope, names)
+        todo = list(ast.iter_child_nodes(scope))
+        while todo:
+            node = todo.pop()
+            if isinstance(node, (ast.FunctionDef, ast.AsyncFunctionDef, ast.Lambda)):
+                visit(node, _set_once(node, aliases, defaults) if not isinstance(node, ast.Lambda) else names)
+                continue
+            todo.extend(ast.iter_child_nodes(node))
+            after_early_return(node, names)
+            if isinstance(node, ast.BoolOp):
+                deciding = (lambda v: v is not _UNKNOWN and not v) if isinstance(node.op, ast.And) else \
+                    (lambda v: v is not _UNKNOWN and bool(v))
+                for i, operand in enumerate(node.values[:-1]):
+                    if deciding(_value(operand, aliases, defaults, names)):
+                        extents.extend(_extent(rest) for rest in node.values[i + 1:])
+                        break
+            elif isinstance(node, (ast.IfExp, ast.If)):
+                value = _value(node.test, aliases, defaults, names)
+                if value is _UNKNOWN:
+                    continue
+                if isinstance(node, ast.IfExp):
+                    extents.append(_extent(node.orelse if value else node.body))
+                    continue
+                branch = node.orelse if value else node.body
+                if branch and branch[0].lineno > (node.test.end_lineno or node.test.lineno):
+                    extents.append((branch[0].lineno, 0, branch[-1].end_lineno or branch[-1].lineno, _WHOLE))
+
+    visit(tree, {})
+    return extents
+
+
+def never_run() -> dict[str, list[tuple[Extent, str]]]:
+    """Per reference file: the extents the reference never runs (the note above), each with its reason."""
+    if ROOT in _NEVER_RUN:
+        return _NEVER_RUN[ROOT]
+    # Uses are looked for wherever the conformance run has code (a driver call a step makes keeps the method
+    # in), not in the project's own tests: a function only tests/variants.py calls is a variant's.
+    files = [p for folder in ("sut", "steps", "outline") for p in sorted((ROOT / folder).rglob("*.py"))]
+    trees = {path.relative_to(ROOT).as_posix(): ast.parse(path.read_text(encoding="utf-8"))
+             for path in files + [ROOT / "conftest.py"] if path.exists()}
+    dead = {path: [(extent, "decided by the switches") for extent in _decided(path, tree)]
+            for path, tree in trees.items() if path.startswith("sut/reference/")}
+    functions: dict[str, list[tuple[str, ast.AST]]] = {}
+    uses: dict[str, list[tuple[str, int, int, int]]] = {}
+    for path, tree in trees.items():
+        for node in ast.walk(tree):
+            if isinstance(node, (ast.FunctionDef, ast.AsyncFunctionDef)) and path in dead \
+                    and not node.name.startswith("__"):
+                functions.setdefault(node.name, []).append((path, node))
+            name = node.id if isinstance(node, ast.Name) else node.attr if isinstance(node, ast.Attribute) else \
+                node.value if isinstance(node, ast.Constant) and isinstance(node.value, str) else None
+            if name is not None:
+                uses.setdefault(name, []).append((path, node.lineno, node.col_offset,
+                                                  node.end_col_offset or node.col_offset))
+    marked: set[str] = set()
+    found = True
+    while found:                          # a function only dead code calls makes its own calls dead too
+        found = False
+        for name, defs in functions.items():
+            if name in marked:
+                continue
+            own = [(path, _extent(node)) for path, node in defs]
+            calls = [(path, line, start, end) for path, line, start, end in uses.get(name, [])
+                     if not any(p == path and _inside(e, line, start, end) for p, e in own)]
+            if calls and all(any(_inside(extent, line, start, end) for extent, _ in dead.get(path, []))
+                             for path, line, start, end in calls):
+                for path, node in defs:
+                    dead[path].append((_extent(node), "only a faulty variant calls it"))
+                marked.add(name)
+                found = True
+    _NEVER_RUN[ROOT] = dead
+    return dead
+
+
+def never_run_reason(path: str, line: int, before: str, after: str) -> str | None:
+    """Why the reference never runs what the mutation changes (never_run), or None."""
+    lines = (ROOT / path).read_text(encoding="utf-8").splitlines()
+    if not 0 < line <= len(lines):
+        return None
+    columns = changed_columns(lines[line - 1], before, after)
+    if columns is None:
+        return None
+    return next((reason for extent, reason in never_run().get(path, []) if _inside(extent, line, *columns)),
+                None)
+
+
 def sample(names: list[str], count: int, seed: int, left_out: dict[str, int] | None = None) -> list[Mutant]:
     """`count` mutants, the same share from each part, none of those the module's note lists as passed over
-    (marked equivalent, usage errors, self-description, unread events and fields, faulty-variant branches);
+    (marked equivalent, usage errors, self-description, unread events and fields, faulty-variant branches,
+    code the switches leave unrun);
     seeded. `left_out` counts the ones passed over, by reason."""
     rng = random.Random(seed)
     left_out = {} if left_out is None else left_out
@@ -453,6 +614,8 @@ def sample(names: list[str], count: int, seed: int, left_out: dict[str, int] | N
                 left_out["faulty-variant branch"] = left_out.get("faulty-variant branch", 0) + 1
             elif in_unread_field(mutant.path, mutant.line, mutant.before, mutant.after):
                 left_out["unread field"] = left_out.get("unread field", 0) + 1
+            elif (dead := never_run_reason(mutant.path, mutant.line, mutant.before, mutant.after)) is not None:
+                left_out[dead] = left_out.get(dead, 0) + 1
             else:
                 chosen.append(mutant)
                 taken += 1

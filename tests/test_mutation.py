@@ -324,3 +324,32 @@ def test_the_columns_a_mutation_changes_are_found_in_its_line() -> None:
     line = '        emit("a", x=1, y=2)'
     assert mutation.changed_columns(line, 'emit("a", x=1, y=2)', 'emit("a", x=1, y=None)') == (25, 26)
     assert mutation.changed_columns(line, 'emit("a", x=1, y=2)', 'emit("a", y=2)') == (18, 23)   # the comma too
+
+
+def test_code_the_switches_leave_unread_and_functions_only_a_variant_calls_are_passed_over() -> None:
+    def at(path: str, text: str) -> tuple[int, str]:
+        lines = (ROOT / path).read_text(encoding="utf-8").splitlines()
+        line = next(i for i, found in enumerate(lines, start=1) if text in found)
+        return line, lines[line - 1].strip()
+
+    def reason(path: str, text: str, old: str, new: str) -> str | None:
+        line, before = at(path, text)
+        assert old in before
+        return mutation.never_run_reason(path, line, before, before.replace(old, new, 1))
+
+    lcu = "sut/reference/crh2/lcu.py"          # path3_steps_only (True) decides the `or` before these are read
+    assert reason(lcu, "or not self.lcu.mdm8.alive)", "not self.lcu", "self.lcu") == "decided by the switches"
+    # ... but the deciding operand is the reference's behaviour
+    assert reason(lcu, "steps_only = behaviour.do_steps_only", "behaviour.do_steps_only", "True") is None
+    tcds = "sut/reference/metro/tcds.py"       # long_one: a local the switches decide (one_check_sequence off)
+    assert reason(tcds, "wire = _one_check_encode(data) if long_one", "_one_check_encode(data)", "None") \
+        == "decided by the switches"
+    assert reason(tcds, "wire = _one_check_encode(data) if long_one", "encode_slave(data)", "None") is None
+    # functions whose every use is in such code: the one-check codec, the status data on the self-diagnostic
+    # line (after an early return the switch decides)
+    assert reason(tcds, "if len(raw) != size_bits // 8 + 1", "// 8", "// 9") == "only a faulty variant calls it"
+    selfdiag = "sut/reference/crh2/selfdiag.py"
+    assert reason(selfdiag, 'self._queue(("status"', '"status"', '"XXstatusXX"') == "only a faulty variant calls it"
+    assert reason(selfdiag, "self.queue.append(item)", "append", "appendleft") is None     # commands use it
+    # a method the steps call through the driver interface is in
+    assert reason("sut/reference/crh2/backend.py", "if me is not self.train.block_master()", "is not", "is") is None
