@@ -68,7 +68,27 @@ def test_kill_rate_per_part_counts_timeouts_as_detected_and_untested_as_survivor
     assert mutation.rates(sampled) == {"atp": (1, 2), "metro": (1, 2), "all": (2, 4)}
     assert "1 sampled mutants were not checked" in mutation.table(sampled, seed=7)
     text = mutation.table(sampled, seed=7)
-    assert "| atp | 1/2 = 50.0 % |" in text and "| all | 2/4 = 50.0 % |" in text and "seed 7" in text
+    assert "| atp | 1/2 = 50.0 % | 1/2 = 50.0 % |" in text and "| all | 2/4 = 50.0 % | 2/4 = 50.0 % |" in text
+    assert "seed 7" in text
+
+
+def test_survivors_marked_equivalent_since_the_draw_are_left_out_of_the_reviewed_rate(
+        tmp_path: Path, monkeypatch: pytest.MonkeyPatch) -> None:
+    marked = tmp_path / "EQUIVALENT_MUTANTS.txt"
+    marked.write_text("sut/reference/atp/x.py | a | b | the reason\n", encoding="utf-8")
+    monkeypatch.setattr(mutation, "EQUIVALENTS", marked)
+    sampled = [Mutant("k", "atp", "sut/reference/atp/x.py", 1, "k", "l", "killed", "test_x"),
+               Mutant("e", "atp", "sut/reference/atp/x.py", 2, "a", "b", "survived", ""),       # marked since
+               Mutant("s", "atp", "sut/reference/atp/x.py", 3, "c", "d", "survived", "")]       # a real gap
+    assert mutation.rates(sampled) == {"atp": (1, 3), "all": (1, 3)}
+    assert mutation.rates(sampled, reviewed=True) == {"atp": (1, 2), "all": (1, 2)}
+    text = mutation.table(sampled, seed=1)
+    assert "| atp | 1/3 = 33.3 % | 1/2 = 50.0 % |" in text
+    assert "| sut/reference/atp/x.py:2 | `a` -> `b` | survived | equivalent: marked equivalent |" in text
+    assert "| sut/reference/atp/x.py:3 | `c` -> `d` | survived |  |" in text
+    (tmp_path / "mutation.json").write_text(json.dumps({"seed": 1, "mutants": [asdict(m) for m in sampled]}))
+    assert mutation.main(["--review", "--out", str(tmp_path)]) == 0
+    assert "| atp | 1/3 = 33.3 % | 1/2 = 50.0 % |" in (tmp_path / "mutation.md").read_text(encoding="utf-8")
 
 
 def test_mutmut_mutates_the_references_and_runs_the_features_with_the_kill_recorder() -> None:
@@ -104,7 +124,8 @@ def test_the_last_run_becomes_one_entry_of_the_allure_report(tmp_path: Path) -> 
                Mutant("b", "crh2", "sut/reference/crh2/ring.py", 9, "x", "y", "survived", "")]
     kept.write_text(json.dumps({"seed": 3, "mutants": [asdict(m) for m in sampled]}), encoding="utf-8")
     result = json.loads(mutation.to_allure(tmp_path, kept).read_text(encoding="utf-8"))
-    assert result["name"] == "Mutation testing of the references: 50.0 % killed (target 90 %)"
+    assert result["name"] == ("Mutation testing of the references: 50.0 % killed, equivalents left out "
+                              "(50.0 % raw; target 90 % per reference)")
     assert result["status"] == "failed" and "atp 1/1, crh2 0/1" in result["statusDetails"]["message"]
     attached = (tmp_path / result["attachments"][0]["source"]).read_text(encoding="utf-8")
     assert "| sut/reference/atp/vdx.py:135 | `x` -> `y` | killed | test_fatp04_x |" in attached
@@ -117,7 +138,8 @@ def test_the_summary_names_the_mutation_entry_and_does_not_count_it_as_a_scenari
     mutation.to_allure(tmp_path, kept)
     text = summary.format_summary(summary.summarize(summary.load_results(tmp_path)))
     assert text.splitlines()[0].startswith("0 scenarios: 0 passed")
-    assert text.splitlines()[-1] == "Mutation testing of the references: 100.0 % killed (target 90 %)"
+    assert text.splitlines()[-1] == ("Mutation testing of the references: 100.0 % killed, equivalents left out "
+                                     "(100.0 % raw; target 90 % per reference)")
 
 
 def _usage_error_lines(root: Path, monkeypatch: pytest.MonkeyPatch, path: str, source: str) -> list[int]:
