@@ -12,8 +12,8 @@ whole suite for every survivor. mutmut also works with pytest-bdd's generated te
 
 Phases:
 1. `mutmut run <no such mutant>`: mutmut copies the project to mutants/, writes every mutant and runs the
-   suite once to learn who reaches what (kept for the next run while the sources are unchanged), then
-   stops, finding no mutant by that name.
+   suite once to learn who reaches what (kept for the next run; when features or steps change, only the tests
+   made of what changed are mapped again: MAPPED_FROM), then stops, finding no mutant by that name.
 2. A seeded sample, the same share from each part (crh2, metro, atp, and the shared kernel/bulk), leaving out
    the mutants marked equivalent in sut/reference/EQUIVALENT_MUTANTS.txt, those inside a `raise` of the
    driver's usage errors (USAGE_ERRORS below), those of a backend's self-description (SELF_DESCRIPTION,
@@ -95,30 +95,158 @@ def _mutmut(*args: str, env: dict[str, str] | None = None) -> subprocess.Complet
 
 # What the map of scenarios to functions is made from besides the references. mutmut maps a test again only
 # when its id is new: a scenario given new steps keeps the map of its old ones (seed 4, 2026-11-26, called
-# the metro backend's remove_key "no tests" though F-NET-25 had come to remove the key). So when any of these
-# changed since the map was made, it is made again in full.
+# the metro backend's remove_key "no tests" though F-NET-25 had come to remove the key). So the tests made of
+# what changed since the map was made are taken out of mutmut's map and mapped again, and only they: what each
+# test is made of (its feature file, and each step definition its steps bind to, by the source of that
+# definition) is noted beside the map (outline/scenario_inputs.py). Mapping every scenario takes ~40 min under
+# mutmut's trampolines; a changed feature file costs its own scenarios, a changed step definition the scenarios
+# that use it, a change elsewhere in a step module (a helper, an import) every scenario whose step modules
+# reach that module, and a change the notes cannot place (a module no noted test uses, such as the fixtures,
+# or no notes at all) every test.
 MAPPED_FROM = ("features/**/*.feature", "steps/*.py", "tests/test_bulk.py", "tests/test_kernel.py")
-MAP_DIGEST = MUTANTS_DIR / "scenarios.sha256"
+MAP_DIGEST = MUTANTS_DIR / "scenarios.sha256"          # what the map was made from (JSON; see map_sources)
+INPUTS = MUTANTS_DIR / "scenario_inputs.json"         # what each mapped test is made of
+MAPPED_TESTS = ("features/", "tests/test_bulk.py", "tests/test_kernel.py")
+
+
+def _sha(text: str) -> str:
+    return hashlib.sha256(text.encode("utf-8")).hexdigest()[:16]
+
+
+def step_definitions(path: Path) -> tuple[dict[int, str], str]:
+    """A step module's decorated functions (by the line of their first decorator, which is the function's
+    co_firstlineno) with a digest of each one's source, and a digest of the rest of the module."""
+    text = path.read_text(encoding="utf-8")
+    lines = text.splitlines(keepends=True)
+    found, spans = {}, []
+    for node in ast.parse(text).body:
+        if isinstance(node, (ast.FunctionDef, ast.AsyncFunctionDef)) and node.decorator_list:
+            first = node.decorator_list[0].lineno
+            found[first] = _sha("".join(lines[first - 1:node.end_lineno]))
+            spans.append((first, node.end_lineno or first))
+    # Blank and comment lines are left out of the rest: a step definition added with its comment changes none
+    # of what the module's other tests are made of.
+    rest = [line for i, line in enumerate(lines, start=1) if not any(a <= i <= b for a, b in spans)
+            and line.strip() and not line.lstrip().startswith("#")]
+    return found, _sha("".join(rest))
+
+
+def map_sources(root: Path | None = None) -> dict[str, str]:
+    """What the map is made from, each with its digest: every feature file and test file whole, every step
+    module as its step definitions (`steps/x.py@<digest>`) and the rest of it (`steps/x.py`)."""
+    root = root or ROOT
+    out = {}
+    for path in sorted({p for pattern in MAPPED_FROM for p in root.glob(pattern)}):
+        name = path.relative_to(root).as_posix()
+        if name.startswith("steps/"):
+            definitions, rest = step_definitions(path)
+            out[name] = rest
+            out.update({f"{name}@{digest}": digest for digest in definitions.values()})
+        else:
+            out[name] = hashlib.sha256(path.read_bytes()).hexdigest()[:16]
+    return out
 
 
 def scenarios_digest(root: Path | None = None) -> str:
+    return _sha(json.dumps(map_sources(root), sort_keys=True))
+
+
+def step_imports(root: Path | None = None) -> dict[str, set[str]]:
+    """Each step module with the step modules it imports, transitively (itself included)."""
     root = root or ROOT
-    digest = hashlib.sha256()
-    for path in sorted({p for pattern in MAPPED_FROM for p in root.glob(pattern)}):
-        digest.update(path.relative_to(root).as_posix().encode() + b"\0" + path.read_bytes() + b"\0")
-    return digest.hexdigest()
+    direct: dict[str, set[str]] = {}
+    for path in sorted((root / "steps").glob("*.py")):
+        name, found = path.relative_to(root).as_posix(), set()
+        for node in ast.walk(ast.parse(path.read_text(encoding="utf-8"))):
+            if isinstance(node, ast.ImportFrom) and node.module == "steps":
+                found |= {f"steps/{alias.name}.py" for alias in node.names}
+            elif isinstance(node, ast.ImportFrom) and (node.module or "").startswith("steps."):
+                found.add(node.module.replace(".", "/") + ".py")
+            elif isinstance(node, ast.Import):
+                found |= {a.name.replace(".", "/") + ".py" for a in node.names if a.name.startswith("steps.")}
+        direct[name] = found
+    closure = {}
+    for name in direct:
+        seen, todo = {name}, [name]
+        while todo:
+            for other in direct.get(todo.pop(), ()):
+                if other not in seen:
+                    seen.add(other)
+                    todo.append(other)
+        closure[name] = seen
+    return closure
+
+
+def tests_to_map_again(old: dict[str, str], new: dict[str, str], inputs: dict[str, list[str]],
+                       imports: dict[str, set[str]]) -> set[str] | None:
+    """The tests made of what changed between two map_sources (None: every test, the change cannot be
+    placed). `inputs`: each test's files and step definitions as the notes have them."""
+    changed = {name for name in old.keys() | new.keys() if old.get(name) != new.get(name)}
+    if not changed:
+        return set()
+    modules = {name for name in changed if name.startswith("steps/") and "@" not in name}
+    used: set[str] = set()
+    reach: dict[str, set[str]] = {}
+    for test, made_of in inputs.items():
+        mine = {f for f in made_of if "@" not in f}
+        for module in [f for f in mine if f.startswith("steps/")]:
+            mine |= imports.get(module, set())
+        reach[test] = mine
+        used |= mine
+    if modules - used:
+        return None               # a module no noted test is made of (the fixtures, a helper of theirs)
+    return {test for test, mine in reach.items()
+            if mine & changed or any(f in changed for f in inputs[test] if "@" in f)}
+
+
+def note_inputs() -> None:
+    """What each mapped test is made of now (outline/scenario_inputs.py, a collect-only run), beside the map."""
+    from outline.scenario_inputs import OUT
+    result = subprocess.run([sys.executable, "-m", "pytest", "--collect-only", "-q", "-p", "no:xdist",
+                             "-p", "no:cacheprovider", "-p", "outline.scenario_inputs", *MAPPED_TESTS],
+                            cwd=ROOT, capture_output=True, text=True, env=dict(os.environ, **{OUT: str(INPUTS)}))
+    if result.returncode != 0 or not INPUTS.exists():
+        INPUTS.unlink(missing_ok=True)                # no notes: the next change maps every test again
+        print(f"mutmut: could not note what each test is made of:\n{result.stdout[-2000:]}", flush=True)
+
+
+def _forget(stats: Path, tests: set[str]) -> None:
+    """Take `tests` out of mutmut's map: it maps them again as new tests."""
+    data = json.loads(stats.read_text(encoding="utf-8"))
+    data["tests_by_mangled_function_name"] = {name: [t for t in mapped if t not in tests] for name, mapped
+                                              in data["tests_by_mangled_function_name"].items()}
+    for test in tests:
+        data["duration_by_test"].pop(test, None)
+    stats.write_text(json.dumps(data, indent=4), encoding="utf-8")
+
+
+def _noted(path: Path) -> dict:
+    try:
+        value = json.loads(path.read_text(encoding="utf-8"))
+    except (OSError, ValueError):
+        return {}
+    return value if isinstance(value, dict) else {}
 
 
 def generate() -> None:
     """Phase 1: mutants written and scenarios mapped (mutmut refuses the name afterwards, as intended)."""
-    digest = scenarios_digest()
+    sources = map_sources()
     stats = MUTANTS_DIR / "mutmut-stats.json"
-    if stats.exists() and (not MAP_DIGEST.exists() or MAP_DIGEST.read_text(encoding="utf-8") != digest):
-        print("mutmut: the scenarios or steps changed since the last map: mapping them all again", flush=True)
-        stats.unlink()
+    old, inputs = _noted(MAP_DIGEST), _noted(INPUTS)
+    if stats.exists() and old != sources:
+        again = tests_to_map_again(old, sources, inputs, step_imports()) if old and inputs else None
+        if again is None:
+            print("mutmut: the scenarios or steps changed since the last map: mapping them all again", flush=True)
+            stats.unlink()
+        else:
+            print(f"mutmut: the scenarios or steps changed since the last map: mapping the {len(again)} tests "
+                  "made of what changed again", flush=True)
+            _forget(stats, again)
     result = _mutmut("run", "outline.mutation.generate-only")
     if stats.exists():
-        MAP_DIGEST.write_text(digest, encoding="utf-8")
+        if old != sources or not INPUTS.exists():
+            note_inputs()
+        MAP_DIGEST.write_text(json.dumps(sources, indent=0, sort_keys=True), encoding="utf-8")
     if not list(MUTANTS_DIR.rglob("*.py.meta")):
         sys.exit(f"mutmut wrote no mutants:\n{result.stdout[-3000:]}\n{result.stderr[-3000:]}")
 

@@ -289,6 +289,89 @@ def test_the_map_is_made_again_when_a_scenario_or_step_changes(tmp_path: Path) -
     assert mutation.scenarios_digest(tmp_path) == changed     # what no scenario is made from leaves the map
 
 
+STEPS = """from steps import analysis
+
+
+@given("one")
+def _():
+    analysis.check(1)
+
+
+@then("two")
+def _():
+    pass
+"""
+
+
+def test_a_step_module_is_read_as_its_step_definitions_and_the_rest(tmp_path: Path) -> None:
+    module = tmp_path / "s.py"
+    module.write_text(STEPS, encoding="utf-8")
+    definitions, rest = mutation.step_definitions(module)
+    assert sorted(definitions) == [4, 9]                      # the first decorator's line: co_firstlineno
+    module.write_text(STEPS + '\n\n# a new one\n@then("three")\ndef _():\n    pass\n', encoding="utf-8")
+    grown, same_rest = mutation.step_definitions(module)
+    assert same_rest == rest and set(definitions.values()) < set(grown.values())
+    module.write_text(STEPS.replace("analysis.check(1)", "analysis.check(2)"), encoding="utf-8")
+    edited, still_rest = mutation.step_definitions(module)
+    assert still_rest == rest and edited[4] != definitions[4] and edited[9] == definitions[9]
+    module.write_text(STEPS.replace("from steps import analysis", "from steps import analysis, zh"), encoding="utf-8")
+    assert mutation.step_definitions(module)[1] != rest      # an import: every definition may read it
+
+
+def test_only_the_tests_made_of_what_changed_are_mapped_again() -> None:
+    old = {"features/a.feature": "1", "features/b.feature": "1", "steps/s.py": "r", "steps/s.py@one": "one",
+           "steps/s.py@two": "two", "steps/analysis.py": "h", "steps/fixtures.py": "f", "tests/test_bulk.py": "t"}
+    inputs = {"features/test_outline.py::test_a": ["features/a.feature", "steps/s.py", "steps/s.py@one"],
+              "features/test_outline.py::test_b": ["features/b.feature", "steps/s.py", "steps/s.py@two"],
+              "tests/test_bulk.py::test_c": ["tests/test_bulk.py"]}
+    imports = {"steps/s.py": {"steps/s.py", "steps/analysis.py"}, "steps/analysis.py": {"steps/analysis.py"},
+               "steps/fixtures.py": {"steps/fixtures.py"}}
+
+    def again(**changes: str | None) -> set[str] | None:
+        new = dict(old)
+        for name, digest in changes.items():
+            name = name.replace("__", "/").replace("_feature", ".feature").replace("_py", ".py")
+            if digest is None:
+                new.pop(name, None)
+            else:
+                new[name] = digest
+        found = mutation.tests_to_map_again(old, new, inputs, imports)
+        return None if found is None else {t.rsplit("_", 1)[-1] for t in found}
+
+    assert again() == set()
+    assert again(features__a_feature="2") == {"a"}                     # its own scenarios
+    assert again(**{"steps__s_py@two": None, "steps__s_py@three": "three"}) == {"b"}    # a definition edited
+    assert again(**{"steps__s_py@four": "four"}) == set()              # one added: new scenarios are new tests
+    assert again(steps__analysis_py="h2") == {"a", "b"}                # a helper their step module imports
+    assert again(tests__test_bulk_py="t2") == {"c"}
+    assert again(steps__fixtures_py="f2") is None                      # no noted test is made of it: all
+
+
+def test_tests_taken_out_of_mutmuts_map_are_mapped_again_as_new(tmp_path: Path) -> None:
+    stats = tmp_path / "mutmut-stats.json"
+    stats.write_text(json.dumps({"tests_by_mangled_function_name": {"f": ["a", "b"], "g": ["b"]},
+                                 "duration_by_test": {"a": 1.0, "b": 2.0}, "stats_time": 3.0}), encoding="utf-8")
+    mutation._forget(stats, {"b"})
+    data = json.loads(stats.read_text(encoding="utf-8"))
+    assert data["tests_by_mangled_function_name"] == {"f": ["a"], "g": []}
+    assert data["duration_by_test"] == {"a": 1.0} and data["stats_time"] == 3.0
+
+
+@pytest.mark.cost(3)
+def test_what_each_scenario_is_made_of_is_noted_from_the_real_features(tmp_path: Path,
+                                                                      monkeypatch: pytest.MonkeyPatch) -> None:
+    monkeypatch.setattr(mutation, "INPUTS", tmp_path / "inputs.json")
+    mutation.note_inputs()
+    inputs = json.loads((tmp_path / "inputs.json").read_text(encoding="utf-8"))
+    sources = mutation.map_sources()
+    scenario = next(test for test, made_of in inputs.items() if "features/function/network-transmission-redundancy/"
+                    "F-NET-25.feature" in made_of)
+    assert {"steps/train.py", "steps/metro.py"} <= set(inputs[scenario])
+    assert all(f in sources for f in inputs[scenario] if f.startswith(("steps/", "features/function")))
+    kernel = [test for test in inputs if test.startswith("tests/test_kernel.py::")]
+    assert kernel and all(inputs[test] == ["tests/test_kernel.py"] for test in kernel)
+
+
 def test_an_if_that_names_the_known_names_and_raises_a_usage_error_is_passed_over(tmp_path: Path,
                                                                                   monkeypatch: pytest.MonkeyPatch) -> None:
     assert _usage_error_lines(tmp_path, monkeypatch, "sut/reference/metro/reading.py", (
