@@ -325,6 +325,7 @@ def equivalents() -> list[tuple[str, str, str]]:
 
 _STEP_NAMES: dict[Path, tuple[frozenset[str], frozenset[str]]] = {}      # by ROOT (tests point it elsewhere)
 _EMITS: dict[tuple[Path, str], tuple[str, list[ast.Call]]] = {}
+_TREES: dict[tuple[Path, str], ast.AST] = {}                          # the trees _EMITS' calls are nodes of
 
 
 def _step_names() -> tuple[frozenset[str], frozenset[str]]:
@@ -349,7 +350,8 @@ def _emits(path: str) -> tuple[str, list[ast.Call]]:
     """The source of `path` and its emit calls (EMIT_CALLS), parsed once per file."""
     if (ROOT, path) not in _EMITS:
         source = (ROOT / path).read_text(encoding="utf-8")
-        calls = [node for node in ast.walk(ast.parse(source)) if isinstance(node, ast.Call)
+        tree = _TREES[ROOT, path] = ast.parse(source)
+        calls = [node for node in ast.walk(tree) if isinstance(node, ast.Call)
                  and (node.func.attr if isinstance(node.func, ast.Attribute)
                       else getattr(node.func, "id", None)) in EMIT_CALLS]
         _EMITS[ROOT, path] = (source, calls)
@@ -377,8 +379,19 @@ def in_unread_event(path: str, line: int) -> bool:
         if not (isinstance(kind, ast.Constant) and isinstance(kind.value, str)):
             return False
         return kind.value not in literals and not ("." in kind.value and kind.value.startswith(prefixes))
-    return any(call.lineno <= line <= (call.end_lineno or call.lineno)
-               for call in _emits(path)[1] if unread(call))
+
+    _source, calls = _emits(path)
+    if any(call.lineno <= line <= (call.end_lineno or call.lineno) for call in calls if unread(call)):
+        return True
+    # The test of an `if` that does nothing but emit events no check reads: a mutant there changes only when
+    # they are emitted (the metro's train.stop at standstill, seed 6).
+    emits = {id(call) for call in calls}
+    for node in ast.walk(_TREES[ROOT, path]):
+        if isinstance(node, ast.If) and node.test.lineno <= line <= (node.test.end_lineno or node.test.lineno):
+            done = node.body + node.orelse
+            if all(isinstance(st, ast.Expr) and id(st.value) in emits and unread(st.value) for st in done):
+                return True
+    return False
 
 
 def read_fields() -> frozenset[str]:

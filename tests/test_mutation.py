@@ -413,6 +413,16 @@ def test_a_test_is_read_with_the_switches_at_their_defaults(test: str, value: bo
     assert (None if got is mutation._UNKNOWN else got) == value
 
 
+def test_the_test_of_an_if_that_only_emits_unread_events_is_passed_over() -> None:
+    tcds = "sut/reference/metro/tcds.py"      # train.stop: only the timing diagram names it
+    lines = (ROOT / tcds).read_text(encoding="utf-8").splitlines()
+    stop = next(i for i, text in enumerate(lines, start=1) if text.strip() == "if self.speed_kmh == 0:")
+    assert 'emit("train", "train.stop")' in lines[stop] and mutation.in_unread_event(tcds, stop)
+    assert not mutation.in_unread_event(tcds, stop - 1)      # the speed itself is read
+    apply_ = next(i for i, text in enumerate(lines, start=1) if text.strip() == "if mode != self.modes[unit]:")
+    assert not mutation.in_unread_event(tcds, apply_)        # its body changes the mode too
+
+
 def test_a_mutant_in_a_field_no_check_reads_is_passed_over_one_in_a_read_field_is_not() -> None:
     bulk = "sut/reference/bulk.py"
     lines = (ROOT / bulk).read_text(encoding="utf-8").splitlines()
