@@ -11,6 +11,12 @@ the mutant, and stops at the first failure (-x); it keeps only the exit code.
   short ones (an engine mutant took minutes to reach it). mutmut collects all of them (pyproject.toml); this
   leaves each mutant only its own judges.
 - What killed it: the failing test, one line per mutant, in the file named by $CRH2_MUTATION_KILLS.
+- Nothing a process worked out before the fork: mutmut forks each mutant's run from a process that has
+  already run the references (its clean run), so a table they fill once per process (bulk's per-class
+  readings, the CRH2 packet templates and CRC tables, an lru_cache) would come into the child filled in by
+  the original code, and a mutant of the code that fills it would never run (seeds 3-6 marked 9 such mutants
+  as if they were equivalent). The child empties every such cache of sut/reference/ first: module-level
+  names bound to an empty dict or set, and functions with cache_clear (reference_caches).
 - Snapshots only where they cannot hide a scenario: mutmut learns who reaches what in one run of every test
   (MUTANT_UNDER_TEST=stats), and a scenario restored from a stored state never calls the functions that built
   it, so that run simulates every scenario in full (--no-snapshots). A mutant's own run (a fresh pytest
@@ -22,7 +28,10 @@ the mutant, and stops at the first failure (-x); it keeps only the exit code.
 """
 from __future__ import annotations
 
+import ast
 import os
+import sys
+from pathlib import Path
 
 import pytest
 
@@ -32,8 +41,35 @@ MAPPING_RUN = "stats"            # mutmut's MUTANT_UNDER_TEST while it learns wh
 
 
 def pytest_configure(config: pytest.Config) -> None:
-    if os.environ.get("MUTANT_UNDER_TEST") == MAPPING_RUN and hasattr(config.option, "no_snapshots"):
+    mutant = os.environ.get("MUTANT_UNDER_TEST", "")
+    if mutant == MAPPING_RUN and hasattr(config.option, "no_snapshots"):
         config.option.no_snapshots = True
+    if "__mutmut_" in mutant:
+        for cache in reference_caches():
+            cache.cache_clear() if hasattr(cache, "cache_clear") else cache.clear()
+
+
+def reference_caches() -> list:
+    """The per-process caches of the references that are loaded: every module-level name of sut/reference/
+    bound to an empty dict or set in its source (a table filled as it is needed), and every function of
+    theirs with `cache_clear` (functools' caches)."""
+    found = []
+    for name, module in sorted(sys.modules.items()):
+        if not name.startswith("sut.reference.") or module is None or not getattr(module, "__file__", None):
+            continue
+        tree = ast.parse(Path(module.__file__).read_text(encoding="utf-8"))
+        for node in tree.body:
+            target = node.targets[0] if isinstance(node, ast.Assign) and len(node.targets) == 1 else \
+                node.target if isinstance(node, ast.AnnAssign) else None
+            value = getattr(node, "value", None)
+            empty = (isinstance(value, ast.Dict) and not value.keys) or \
+                (isinstance(value, ast.Call) and isinstance(value.func, ast.Name) and value.func.id in ("set", "dict")
+                 and not value.args and not value.keywords)
+            if isinstance(target, ast.Name) and empty and isinstance(getattr(module, target.id, None), (dict, set)):
+                found.append(getattr(module, target.id))
+        found += [value for value in vars(module).values() if callable(value) and hasattr(value, "cache_clear")
+                  and getattr(value, "__module__", None) == name]
+    return found
 
 
 def judges(mutant: str, nodeids: list[str]) -> list[str]:
