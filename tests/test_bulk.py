@@ -493,6 +493,48 @@ class _TwoCounters:
         self.emit("counter", "tick", seq=self.count, twice=2 * self.count, label="steady")
 
 
+class _ClosureCounter:
+    """A bulk model whose count lives in a closure's cell, not in an attribute: a jump writes it back through
+    the cell (seed 6: a mutant of that write survived, no model keeping a moving number in a closure)."""
+
+    __module__ = "sut.reference.toy"
+    BULK_SKIP = ("events",)
+
+    def __init__(self) -> None:
+        from sut.reference.kernel import Kernel
+        self.kernel = Kernel()
+        self.events: list = []
+        count = 0
+
+        def tick() -> None:
+            nonlocal count
+            count += 1
+            self.emit("counter", "tick", seq=count)
+
+        self.tick = tick
+        self.kernel.every(10 * MS, tick)
+
+    @property
+    def count(self) -> int:
+        return self.tick.__closure__[self.tick.__code__.co_freevars.index("count")].cell_contents
+
+    def emit(self, source: str, kind: str, /, **fields) -> None:
+        from sut.trace import TraceEvent
+        self.events.append(TraceEvent(self.kernel.now, source, kind, fields))
+
+    def bulk_period_us(self) -> int:
+        return 10 * MS
+
+
+def test_a_count_kept_in_a_closure_is_carried_over_a_jump(jumps: list[int]) -> None:
+    exact, fast = _ClosureCounter(), _ClosureCounter()
+    exact.kernel.run(5 * S)
+    bulk.advance(fast, 5 * S)
+    assert jumps, "nothing was skipped"
+    assert fast.events == exact.events
+    assert fast.count == exact.count == 501
+
+
 def test_an_event_with_two_moving_fields_is_repeated_with_both_carried_on(jumps: list[int]) -> None:
     exact, fast = _TwoCounters(), _TwoCounters()
     exact.kernel.run(5 * S)
