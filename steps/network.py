@@ -72,7 +72,11 @@ def _(sut: TrainDriver, t_action: int, node: str, lo: float, hi: float) -> None:
     for arrival in rx[:-1]:
         sent = trace.first(kind="token.pass", source=f"{node}.MDM8", since=arrival.t)
         assert sent is not None, f"{node} never passed on the token it got at {ms(arrival.t)}"
-        assert sent["reversed"], f"{node} passed the token on {sent['dir']} into the fault, not back"
+        # Back the way it came: to the neighbour it came from, travelling the other way (what the ring shows,
+        # not the node's own word for it).
+        assert sent["to"] == arrival["frm"] and sent["dir"] != arrival["dir"], (
+            f"{node} passed the token it got from {arrival['frm']} ({arrival['dir']}) on to {sent['to']} "
+            f"({sent['dir']}), into the fault, not back")
         arrived = trace.first(kind="token.rx", source=f"{sent['to']}.MDM8", since=sent.t)
         assert arrived is not None, f"the token {node} sent back never reached {sent['to']}"
         held = arrived.t - arrival.t
