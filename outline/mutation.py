@@ -311,8 +311,24 @@ def _line_of(source: Path, mangled: str, text: str, offset: int | None = None) -
     return next((i for i in range(start, end + 1) if lines[i - 1].strip() == text.strip()), start)
 
 
+def function_of(name: str) -> str:
+    """The function a mutmut mutant name is in, as Python names it: `Relay.__init__`, `_one_check_encode`."""
+    match = NAME.match(name)
+    if not match:
+        return ""
+    mangled = match["function"]
+    return ".".join(p for p in mangled[2:].split("ǁ") if p) if mangled.startswith("xǁ") else mangled[2:]
+
+
+def is_marked(mutant: "Mutant", marked: set[tuple[str, str, str]]) -> bool:
+    """Whether a mark names the mutant: by file, or where the same line text is said in several places of a
+    file that are not all equivalent, by file and function (`path::Class.method`)."""
+    return (mutant.path, mutant.before, mutant.after) in marked or \
+        (f"{mutant.path}::{function_of(mutant.name)}", mutant.before, mutant.after) in marked
+
+
 def equivalents() -> list[tuple[str, str, str]]:
-    """(path, line before, line after) of each mutant marked equivalent, with its reason after ' # '."""
+    """(path, line before, line after) of each mutant marked equivalent (path may be `path::function`)."""
     marked = []
     for raw in EQUIVALENTS.read_text(encoding="utf-8").splitlines() if EQUIVALENTS.exists() else []:
         if raw.strip() and not raw.startswith("#"):
@@ -745,7 +761,7 @@ def sample(names: list[str], count: int, seed: int, left_out: dict[str, int] | N
             if method == SELF_DESCRIPTION or backend_only:
                 reason = backend_only or "self-description"
                 left_out[reason] = left_out.get(reason, 0) + 1
-            elif (mutant.path, mutant.before, mutant.after) in marked:
+            elif is_marked(mutant, marked):
                 left_out["marked equivalent"] = left_out.get("marked equivalent", 0) + 1
             elif in_usage_error(mutant.path, mutant.line):
                 left_out["usage error"] = left_out.get("usage error", 0) + 1
@@ -799,7 +815,7 @@ def explained(mutant: Mutant) -> str | None:
     line is found again by its text if the source moved since the run."""
     if mutant.status in DETECTED or mutant.status == "not checked":
         return None
-    if (mutant.path, mutant.before, mutant.after) in set(equivalents()):
+    if is_marked(mutant, set(equivalents())):
         return "marked equivalent"
     source = ROOT / mutant.path
     if not source.exists():

@@ -60,6 +60,17 @@ def test_the_checked_in_equivalents_parse() -> None:
     assert all(path.startswith("sut/reference/") for path, _, _ in mutation.equivalents())
 
 
+def test_a_mark_may_name_the_function_where_the_same_line_is_said_elsewhere_in_the_file() -> None:
+    marked = {("sut/reference/atp/vdx.py::Relay.__init__", "self.powered = False", "self.powered = None")}
+    mine = Mutant("sut.reference.atp.vdx.xǁRelayǁ__init____mutmut_3", "atp", "sut/reference/atp/vdx.py", 32,
+                  "self.powered = False", "self.powered = None")
+    other = Mutant("sut.reference.atp.vdx.xǁVdxInterfaceǁpower_off__mutmut_1", "atp", "sut/reference/atp/vdx.py",
+                   91, "self.powered = False", "self.powered = None")
+    assert mutation.function_of(mine.name) == "Relay.__init__"
+    assert mutation.function_of("sut.reference.metro.tcds.x__one_check_encode__mutmut_2") == "_one_check_encode"
+    assert mutation.is_marked(mine, marked) and not mutation.is_marked(other, marked)
+
+
 def test_kill_rate_per_part_counts_timeouts_as_detected_and_untested_as_survivors() -> None:
     def m(part: str, status: str) -> Mutant:
         return Mutant(f"{part}-{status}", part, f"sut/reference/{part}/x.py", 1, "a", "b", status, "")
@@ -468,3 +479,30 @@ def test_code_the_switches_leave_unread_and_functions_only_a_variant_calls_are_p
     assert reason(selfdiag, "self.queue.append(item)", "append", "appendleft") is None     # commands use it
     # a method the steps call through the driver interface is in
     assert reason("sut/reference/crh2/backend.py", "if me is not self.train.block_master()", "is not", "is") is None
+
+
+def test_a_mutants_run_starts_with_the_references_per_process_caches_empty(monkeypatch: pytest.MonkeyPatch) -> None:
+    from types import SimpleNamespace
+
+    from outline import mutation_plugin
+    from sut.reference import bulk
+    from sut.reference.crh2 import frames
+    from sut.reference.crh2.backend import ReferenceTrain
+    from sut.reference.metro import tcds
+
+    train = ReferenceTrain()
+    train.power_on()
+    train.advance_ms(1200)                          # bulk reads the train; packets are built from templates
+    assert bulk._CLASSES and frames._TEMPLATES
+    caches = mutation_plugin.reference_caches()
+    assert all(any(cache is found for found in caches)
+               for cache in (bulk._CLASSES, frames._TEMPLATES, frames._ZERO_RUNS, tcds._message_us))
+    monkeypatch.setenv("MUTANT_UNDER_TEST", "stats")              # mutmut's map: the caches stay
+    mutation_plugin.pytest_configure(SimpleNamespace(option=SimpleNamespace(no_snapshots=False)))
+    assert bulk._CLASSES
+    monkeypatch.setenv("MUTANT_UNDER_TEST", "sut.reference.bulk.x__class_info__mutmut_1")
+    mutation_plugin.pytest_configure(SimpleNamespace(option=SimpleNamespace(no_snapshots=False)))
+    assert not bulk._CLASSES and not frames._TEMPLATES and not frames._ZERO_RUNS
+    assert tcds._message_us.cache_info().currsize == 0
+    train.advance_ms(100)                           # filled again as they are needed
+    assert bulk._CLASSES or frames._TEMPLATES
