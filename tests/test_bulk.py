@@ -467,19 +467,17 @@ def test_a_soak_s_trace_outside_its_skips_is_the_frame_by_frame_trace() -> None:
     assert seen == [ev for ev in exact.trace if shown(ev)]
 
 
-class _TwoCounters:
-    """The smallest bulk model whose events move two fields at once (no train emits such an event yet, so
-    the replay's general case would otherwise go untested): every 10 ms, a count and twice the count."""
+class _Toy:
+    """The smallest bulk models: a kernel, a trace, and a tick every 10 ms (the steady period). bulk.py reads
+    only the model's own classes (sut.*): each class names its module so (a class does not inherit it)."""
 
-    __module__ = "sut.reference.toy"             # bulk.py reads only the model's own classes (sut.*)
+    __module__ = "sut.reference.toy"
     BULK_SKIP = ("events",)                      # the trace is not state
 
     def __init__(self) -> None:
         from sut.reference.kernel import Kernel
         self.kernel = Kernel()
         self.events: list = []
-        self.count = 0
-        self.kernel.every(10 * MS, self._tick)
 
     def emit(self, source: str, kind: str, /, **fields) -> None:
         from sut.trace import TraceEvent
@@ -488,22 +486,31 @@ class _TwoCounters:
     def bulk_period_us(self) -> int:
         return 10 * MS
 
+
+class _TwoCounters(_Toy):
+    """Events that move two fields at once (no train emits such an event yet, so the replay's general case
+    would otherwise go untested): every 10 ms, a count and twice the count."""
+
+    __module__ = "sut.reference.toy"
+
+    def __init__(self) -> None:
+        super().__init__()
+        self.count = 0
+        self.kernel.every(10 * MS, self._tick)
+
     def _tick(self) -> None:
         self.count += 1
         self.emit("counter", "tick", seq=self.count, twice=2 * self.count, label="steady")
 
 
-class _ClosureCounter:
-    """A bulk model whose count lives in a closure's cell, not in an attribute: a jump writes it back through
-    the cell (seed 6: a mutant of that write survived, no model keeping a moving number in a closure)."""
+class _ClosureCounter(_Toy):
+    """A count that lives in a closure's cell, not in an attribute: a jump writes it back through the cell
+    (seed 6: a mutant of that write survived, no model keeping a moving number in a closure)."""
 
     __module__ = "sut.reference.toy"
-    BULK_SKIP = ("events",)
 
     def __init__(self) -> None:
-        from sut.reference.kernel import Kernel
-        self.kernel = Kernel()
-        self.events: list = []
+        super().__init__()
         count = 0
 
         def tick() -> None:
@@ -518,25 +525,10 @@ class _ClosureCounter:
     def count(self) -> int:
         return self.tick.__closure__[self.tick.__code__.co_freevars.index("count")].cell_contents
 
-    def emit(self, source: str, kind: str, /, **fields) -> None:
-        from sut.trace import TraceEvent
-        self.events.append(TraceEvent(self.kernel.now, source, kind, fields))
 
-    def bulk_period_us(self) -> int:
-        return 10 * MS
-
-
-def test_a_count_kept_in_a_closure_is_carried_over_a_jump(jumps: list[int]) -> None:
-    exact, fast = _ClosureCounter(), _ClosureCounter()
-    exact.kernel.run(5 * S)
-    bulk.advance(fast, 5 * S)
-    assert jumps, "nothing was skipped"
-    assert fast.events == exact.events
-    assert fast.count == exact.count == 501
-
-
-def test_an_event_with_two_moving_fields_is_repeated_with_both_carried_on(jumps: list[int]) -> None:
-    exact, fast = _TwoCounters(), _TwoCounters()
+@pytest.mark.parametrize("toy", [_TwoCounters, _ClosureCounter], ids=["two moving fields", "count in a closure"])
+def test_a_toy_model_is_carried_over_a_jump_as_frame_by_frame_runs_it(toy: type, jumps: list[int]) -> None:
+    exact, fast = toy(), toy()
     exact.kernel.run(5 * S)
     bulk.advance(fast, 5 * S)
     assert jumps, "nothing was skipped"
