@@ -12,6 +12,7 @@ import pytest
 from pytest_bdd import parsers, then, when
 
 from sut.driver import TrainDriver
+from sut.errors import SutError
 from sut.trace import Trace
 from steps.analysis import lcus, ms, us
 
@@ -41,7 +42,11 @@ def long_run() -> LongRun:
 
 
 def _counters(sut: TrainDriver) -> dict[str, dict[str, int]]:
-    return {node: sut.counters(node) for node in sut.ring_nodes()}
+    try:
+        nodes = sut.ring_nodes()
+    except SutError:
+        return {}                 # the ATP on its test rig: no ring, no node counters to compare
+    return {node: sut.counters(node) for node in nodes}
 
 
 def hours_us(hours: float) -> int:

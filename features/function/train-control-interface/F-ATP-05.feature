@@ -52,6 +52,18 @@ Feature: F-ATP-05 FS output self-test every 5 s, 3 ms, sampled from the 2nd ms a
     And 2 h pass
     Then C019 is raised and the emergency-brake loop stays open
 
+  @req:VDX-03
+  Scenario: F-ATP-05 After C019 the emergency-brake loop is still open after a six-minute run
+    Given the VDX runs the old firmware
+    And the train has been powered up for 1000 ms
+    And the ATP has released the emergency brake
+    When 11 s pass
+    And the ATP releases the emergency brake 20 ms before the next FS self-test
+    And 1000 ms pass
+    Then C019 is raised and the emergency-brake loop stays open
+    When the train runs for 0.1 h
+    Then the emergency-brake loop is open
+
   @req:VDX-03 @req:VDX-06
   Scenario: F-ATP-05 A restart clears C019
     Given the VDX runs the old firmware
