@@ -510,6 +510,19 @@ def _switch(node: ast.AST, aliases: dict[str, str]) -> str | None:
     return None
 
 
+def _decides(op: ast.boolop, value: object) -> bool:
+    """Whether an operand of `and`/`or` that is `value` decides the whole (the rest is never read)."""
+    return value is not _UNKNOWN and (not value if isinstance(op, ast.And) else bool(value))
+
+
+def _untaken(node: ast.If, value: object) -> tuple[int, int] | None:
+    """The lines of the branch of `node` that a test of `value` never takes, if it has its own lines."""
+    branch = node.orelse if value else node.body
+    if branch and branch[0].lineno > (node.test.end_lineno or node.test.lineno):
+        return branch[0].lineno, branch[-1].end_lineno or branch[-1].lineno
+    return None
+
+
 def _value(node: ast.AST, aliases: dict[str, str], defaults: dict[str, object],
            names: dict[str, object] | None = None) -> object:
     """What `node` is when every behaviour switch has its default, or _UNKNOWN. `names`: local variables
@@ -526,9 +539,7 @@ def _value(node: ast.AST, aliases: dict[str, str], defaults: dict[str, object],
         return _UNKNOWN if value is _UNKNOWN else not value
     if isinstance(node, ast.BoolOp):
         values = [_value(v, aliases, defaults, names) for v in node.values]
-        decides = (lambda v: v is not _UNKNOWN and not v) if isinstance(node.op, ast.And) else \
-            (lambda v: v is not _UNKNOWN and bool(v))
-        if any(decides(v) for v in values):
+        if any(_decides(node.op, v) for v in values):
             return isinstance(node.op, ast.Or)
         return _UNKNOWN if _UNKNOWN in values else isinstance(node.op, ast.And)
     if isinstance(node, ast.Compare) and len(node.ops) == 1:
@@ -573,11 +584,9 @@ def in_variant_only_branch(path: str, line: int) -> bool:
             if not isinstance(node, ast.If):
                 continue
             value = _value(node.test, aliases, defaults)
-            if value is _UNKNOWN:
-                continue
-            branch = node.orelse if value else node.body
-            if branch and branch[0].lineno > (node.test.end_lineno or node.test.lineno):
-                spans.append((branch[0].lineno, branch[-1].end_lineno or branch[-1].lineno))
+            span = None if value is _UNKNOWN else _untaken(node, value)
+            if span is not None:
+                spans.append(span)
         _UNTAKEN[ROOT, path] = spans
     return any(start <= line <= end for start, end in _UNTAKEN[ROOT, path])
 
@@ -655,10 +664,8 @@ def _decided(path: str, tree: ast.AST) -> list[Extent]:
             todo.extend(ast.iter_child_nodes(node))
             after_early_return(node, names)
             if isinstance(node, ast.BoolOp):
-                deciding = (lambda v: v is not _UNKNOWN and not v) if isinstance(node.op, ast.And) else \
-                    (lambda v: v is not _UNKNOWN and bool(v))
                 for i, operand in enumerate(node.values[:-1]):
-                    if deciding(_value(operand, aliases, defaults, names)):
+                    if _decides(node.op, _value(operand, aliases, defaults, names)):
                         extents.extend(_extent(rest) for rest in node.values[i + 1:])
                         break
             elif isinstance(node, (ast.IfExp, ast.If)):
@@ -667,10 +674,8 @@ def _decided(path: str, tree: ast.AST) -> list[Extent]:
                     continue
                 if isinstance(node, ast.IfExp):
                     extents.append(_extent(node.orelse if value else node.body))
-                    continue
-                branch = node.orelse if value else node.body
-                if branch and branch[0].lineno > (node.test.end_lineno or node.test.lineno):
-                    extents.append((branch[0].lineno, 0, branch[-1].end_lineno or branch[-1].lineno, _WHOLE))
+                elif (span := _untaken(node, value)) is not None:
+                    extents.append((span[0], 0, span[1], _WHOLE))
 
     visit(tree, {})
     return extents
@@ -731,6 +736,19 @@ def never_run_reason(path: str, line: int, before: str, after: str) -> str | Non
                 None)
 
 
+def rule_reason(path: str, line: int, before: str, after: str) -> str | None:
+    """The rule (the module's note) that passes a mutant of `line` over, or None: the draw's and the reading's."""
+    if in_usage_error(path, line):
+        return "usage error"
+    if in_unread_event(path, line):
+        return "unread event"
+    if in_variant_only_branch(path, line):
+        return "faulty-variant branch"
+    if in_unread_field(path, line, before, after):
+        return "unread field"
+    return never_run_reason(path, line, before, after)
+
+
 def sample(names: list[str], count: int, seed: int, left_out: dict[str, int] | None = None) -> list[Mutant]:
     """`count` mutants, the same share from each part, none of those the module's note lists as passed over
     (marked equivalent, usage errors, self-description, unread events and fields, faulty-variant branches,
@@ -763,16 +781,8 @@ def sample(names: list[str], count: int, seed: int, left_out: dict[str, int] | N
                 left_out[reason] = left_out.get(reason, 0) + 1
             elif is_marked(mutant, marked):
                 left_out["marked equivalent"] = left_out.get("marked equivalent", 0) + 1
-            elif in_usage_error(mutant.path, mutant.line):
-                left_out["usage error"] = left_out.get("usage error", 0) + 1
-            elif in_unread_event(mutant.path, mutant.line):
-                left_out["unread event"] = left_out.get("unread event", 0) + 1
-            elif in_variant_only_branch(mutant.path, mutant.line):
-                left_out["faulty-variant branch"] = left_out.get("faulty-variant branch", 0) + 1
-            elif in_unread_field(mutant.path, mutant.line, mutant.before, mutant.after):
-                left_out["unread field"] = left_out.get("unread field", 0) + 1
-            elif (dead := never_run_reason(mutant.path, mutant.line, mutant.before, mutant.after)) is not None:
-                left_out[dead] = left_out.get(dead, 0) + 1
+            elif (rule := rule_reason(mutant.path, mutant.line, mutant.before, mutant.after)) is not None:
+                left_out[rule] = left_out.get(rule, 0) + 1
             else:
                 chosen.append(mutant)
                 taken += 1
@@ -809,13 +819,13 @@ def run(mutants: list[Mutant], jobs: int, resume: bool = False) -> None:
         mutant.killed_by = killer.split("::")[-1] if killer.startswith("features/") else killer
 
 
-def explained(mutant: Mutant) -> str | None:
+def explained(mutant: Mutant, marked: set[tuple[str, str, str]] | None = None) -> str | None:
     """Why a survivor is no break the suite missed: marked equivalent since (the reading of its survivors), or
     under a rule made after its draw; None for a mutant detected, not checked, or surviving unexplained. The
     line is found again by its text if the source moved since the run."""
     if mutant.status in DETECTED or mutant.status == "not checked":
         return None
-    if is_marked(mutant, set(equivalents())):
+    if is_marked(mutant, set(equivalents()) if marked is None else marked):
         return "marked equivalent"
     source = ROOT / mutant.path
     if not source.exists():
@@ -826,20 +836,21 @@ def explained(mutant: Mutant) -> str | None:
         line = next((i for i, text in enumerate(lines, start=1) if text.strip() == mutant.before), 0)
         if not line:
             return None
-    for reason, applies in (("usage error", lambda: in_usage_error(mutant.path, line)),
-                            ("unread event", lambda: in_unread_event(mutant.path, line)),
-                            ("faulty-variant branch", lambda: in_variant_only_branch(mutant.path, line)),
-                            ("unread field", lambda: in_unread_field(mutant.path, line, mutant.before, mutant.after))):
-        if applies():
-            return reason
-    return never_run_reason(mutant.path, line, mutant.before, mutant.after)
+    return rule_reason(mutant.path, line, mutant.before, mutant.after)
 
 
-def rates(mutants: list[Mutant], reviewed: bool = False) -> dict[str, tuple[int, int]]:
+def explanations(mutants: list[Mutant]) -> dict[str, str | None]:
+    """explained() of every mutant, the marks read once."""
+    marked = set(equivalents())
+    return {m.name: explained(m, marked) for m in mutants}
+
+
+def rates(mutants: list[Mutant], reviewed: bool = False,
+          why: dict[str, str | None] | None = None) -> dict[str, tuple[int, int]]:
     """(detected, checked) per part and over all; a mutant a stopped run never got to is in neither. Reviewed:
     the survivors explained() as equivalent are left out too (issue 15's target: the kill rate excluding
-    marked equivalents)."""
-    why = {m.name: explained(m) for m in mutants} if reviewed else {}
+    marked equivalents); `why`: their explanations, if the caller has them already."""
+    why = (explanations(mutants) if why is None else why) if reviewed else {}
     out: dict[str, tuple[int, int]] = {}
     for part in sorted({m.part for m in mutants}) + ["all"]:
         mine = [m for m in mutants if part in ("all", m.part) and m.status != "not checked" and not why.get(m.name)]
@@ -860,7 +871,8 @@ def table(mutants: list[Mutant], seed: int, left_out: dict[str, int] | None = No
               "the draw or under a rule made after it (each named below); a survivor that is a real gap counts "
               "as one even once a new scenario closes it.", "",
               "| part | kill rate, raw | kill rate, equivalents left out |", "| --- | --- | --- |"]
-    reviewed = rates(mutants, reviewed=True)
+    why = explanations(mutants)
+    reviewed = rates(mutants, reviewed=True, why=why)
     for part, (done, total) in rates(mutants).items():
         kept_done, kept_total = reviewed[part]
         lines.append(f"| {part} | {done}/{total} = {100 * done / max(total, 1):.1f} % | "
@@ -868,8 +880,8 @@ def table(mutants: list[Mutant], seed: int, left_out: dict[str, int] | None = No
     lines += ["", "| file:line | change | result | killed by |", "| --- | --- | --- | --- |"]
     for m in sorted(mutants, key=lambda m: (m.path, m.line, m.name)):
         change = f"`{m.before}` -> `{m.after}`".replace("|", "\\|")
-        why = explained(m)
-        lines.append(f"| {m.path}:{m.line} | {change} | {m.status} | {m.killed_by or (f'equivalent: {why}' if why else '')} |")
+        equivalent = f"equivalent: {why[m.name]}" if why[m.name] else ""
+        lines.append(f"| {m.path}:{m.line} | {change} | {m.status} | {m.killed_by or equivalent} |")
     return "\n".join(lines) + "\n"
 
 
