@@ -201,13 +201,10 @@ class Trace:
             return [ev for ev in self._since(since) if (until is None or ev.t <= until) and wanted(ev.kind)]
         events = self._events
         self._catch_up()
-        t_of = lambda i: events[i].t                        # noqa: E731
         runs = []
         for kind in sorted(self._kind_set):
             if wanted(kind):
-                positions = self._of_kind(kind)
-                lo = bisect_left(positions, since, key=t_of) if since else 0
-                hi = bisect_right(positions, until, key=t_of) if until is not None else len(positions)
+                positions, lo, hi = self._window(kind, None, since, until)
                 if lo < hi:
                     runs.append(positions[lo:hi])
         if len(runs) == 1:
