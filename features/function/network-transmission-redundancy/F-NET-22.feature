@@ -62,3 +62,14 @@ Feature: F-NET-22 WTB master fallback: car 1 CCU, then car 2 VCU, then car 3 VCU
     And 1000 ms pass
     Then "car6.CCU" holds the record "car1.CCU: no answer on WTB" exactly once
     And "car6.CCU" holds the record "car1.CCU: answering on WTB again" exactly once
+
+  @req:RED-04
+  Scenario: F-NET-22 Two hours after the car 1 CCU failed, the car 2 VCU is still WTB master and the record is held once
+    When "car1.CCU" fails
+    And 1000 ms pass
+    And the train runs for 2 h
+    And 500 ms pass
+    Then "car2.VCU" is the WTB master within 25 ms and stays so
+    And no WTB master frame comes from "car3.VCU", "car4.VCU", "car5.VCU", "car6.CCU"
+    And "car6.CCU" holds the record "car1.CCU: no answer on WTB" exactly once
+    And every VVVF applies 60 % traction
