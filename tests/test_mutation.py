@@ -506,3 +506,39 @@ def test_a_mutants_run_starts_with_the_references_per_process_caches_empty(monke
     assert tcds._message_us.cache_info().currsize == 0
     train.advance_ms(100)                           # filled again as they are needed
     assert bulk._CLASSES or frames._TEMPLATES
+
+
+def test_a_mutated_modules_own_tables_of_mutants_are_not_taken_for_caches(tmp_path: Path,
+                                                                          monkeypatch: pytest.MonkeyPatch) -> None:
+    """A module as mutmut writes it (a trampoline per function, its mutants in a module-level table filled at
+    the end): emptying that table before a mutant's run left every trampolined call without its original, so
+    every test failed and every mutant looked killed (seed 7's first run). The module's real cache is still
+    emptied."""
+    import importlib.util
+    from types import SimpleNamespace
+
+    from outline import mutation_plugin
+
+    source = tmp_path / "mutated_shape.py"
+    source.write_text(
+        "MutantDict = dict\n"
+        "_LOOKUPS: dict[str, int] = {}\n"
+        "mutants_x_lookup__mutmut: MutantDict = {}  # type: ignore\n"
+        "mutants_xǁPartǁread__mutmut = {}\n"
+        "def x_lookup__mutmut_orig(name):\n"
+        "    return _LOOKUPS.setdefault(name, len(name))\n"
+        "mutants_x_lookup__mutmut['_mutmut_orig'] = x_lookup__mutmut_orig\n"
+        "mutants_xǁPartǁread__mutmut['_mutmut_orig'] = x_lookup__mutmut_orig\n", encoding="utf-8")
+    spec = importlib.util.spec_from_file_location("sut.reference.mutated_shape", source)
+    module = importlib.util.module_from_spec(spec)
+    spec.loader.exec_module(module)
+    monkeypatch.setitem(sys.modules, "sut.reference.mutated_shape", module)
+    module.x_lookup__mutmut_orig("VCB")
+
+    caches = mutation_plugin.reference_caches()
+    assert any(cache is module._LOOKUPS for cache in caches)
+    tables = (module.mutants_x_lookup__mutmut, getattr(module, "mutants_xǁPartǁread__mutmut"))
+    assert not any(cache is table for cache in caches for table in tables)
+    monkeypatch.setenv("MUTANT_UNDER_TEST", "sut.reference.mutated_shape.x_lookup__mutmut_1")
+    mutation_plugin.pytest_configure(SimpleNamespace(option=SimpleNamespace(no_snapshots=False)))
+    assert not module._LOOKUPS and all("_mutmut_orig" in table for table in tables)
