@@ -796,6 +796,25 @@ def _codes() -> dict[str, int | None]:
     return codes
 
 
+# One scenario of each train and the kernel's tests: a few seconds.
+PROBE = ("features", "--item", "R-CTL-03,F-NET-21,F-ATP-04", "tests/test_kernel.py")
+
+
+def probe_mutant_mode() -> None:
+    """Run a few tests the way a mutant's run runs them (mutmut's trampolines, outline/mutation_plugin.py in
+    a mutant's mode) under a mutant that does not exist, so every call takes the original code: they must
+    pass. If they fail, the harness itself breaks the tests, and every mutant would look killed (seed 7's
+    first run, 2026-11-26: the plugin emptied mutmut's own tables and 99 % were "killed")."""
+    cmd = [sys.executable, "-m", "pytest", "--rootdir=.", "-x", "-q", "-p", "no:xdist", "-p", "no:cacheprovider",
+           "-p", "outline.mutation_plugin", *PROBE]
+    result = subprocess.run(cmd, cwd=MUTANTS_DIR, capture_output=True, text=True,
+                            env=dict(os.environ, MUTANT_UNDER_TEST="sut.reference.kernel.x_no_such_function__mutmut_1"))
+    if result.returncode != 0:
+        raise SystemExit("mutmut: the tests fail in a mutant's run with no mutant active, so every mutant would "
+                         f"look killed; nothing was run. The probe ({' '.join(PROBE)}) said:\n"
+                         + (result.stdout[-3000:] + result.stderr[-2000:]).strip())
+
+
 def run(mutants: list[Mutant], jobs: int, resume: bool = False) -> None:
     """Phase 3: mutmut runs the sample; statuses from its records, the killing scenario from the plugin.
     With `resume`, a mutant the last run already rejected keeps its verdict (and its killer) and only the
@@ -809,6 +828,7 @@ def run(mutants: list[Mutant], jobs: int, resume: bool = False) -> None:
         KILLS.unlink(missing_ok=True)
     print(f"mutmut: running {len(todo)} of the {len(mutants)} drawn mutants", flush=True)
     if todo:
+        probe_mutant_mode()
         _mutmut("run", "--max-children", str(jobs), *[m.name for m in todo], env={"CRH2_MUTATION_KILLS": str(KILLS)})
     codes = _codes()
     killers = dict(line.split("\t", 1) for line in KILLS.read_text(encoding="utf-8").splitlines()) \
