@@ -103,7 +103,10 @@ def _mutmut(*args: str, env: dict[str, str] | None = None) -> subprocess.Complet
 # that use it, a change elsewhere in a step module (a helper, an import) every scenario whose step modules
 # reach that module, and a change the notes cannot place (a module no noted test uses, such as the fixtures,
 # or no notes at all) every test.
-MAPPED_FROM = ("features/**/*.feature", "steps/*.py", "tests/test_bulk.py", "tests/test_kernel.py")
+# The plugin is among them: it decides how every test is mapped, so a change to it maps every test again.
+MAPPED_FROM = ("features/**/*.feature", "steps/*.py", "tests/test_bulk.py", "tests/test_kernel.py",
+               "outline/mutation_plugin.py")
+MAPS_EVERY_TEST = ("outline/mutation_plugin.py",)
 MAP_DIGEST = MUTANTS_DIR / "scenarios.sha256"          # what the map was made from (JSON; see map_sources)
 INPUTS = MUTANTS_DIR / "scenario_inputs.json"         # what each mapped test is made of
 MAPPED_TESTS = ("features/", "tests/test_bulk.py", "tests/test_kernel.py")
@@ -184,6 +187,8 @@ def tests_to_map_again(old: dict[str, str], new: dict[str, str], inputs: dict[st
     changed = {name for name in old.keys() | new.keys() if old.get(name) != new.get(name)}
     if not changed:
         return set()
+    if changed & set(MAPS_EVERY_TEST):
+        return None
     modules = {name for name in changed if name.startswith("steps/") and "@" not in name}
     used: set[str] = set()
     reach: dict[str, set[str]] = {}

@@ -356,6 +356,7 @@ def test_only_the_tests_made_of_what_changed_are_mapped_again() -> None:
     assert again(steps__analysis_py="h2") == {"a", "b"}                # a helper their step module imports
     assert again(tests__test_bulk_py="t2") == {"c"}
     assert again(steps__fixtures_py="f2") is None                      # no noted test is made of it: all
+    assert again(outline__mutation_plugin_py="p2") is None             # how every test is mapped: all
 
 
 def test_tests_taken_out_of_mutmuts_map_are_mapped_again_as_new(tmp_path: Path) -> None:
@@ -542,3 +543,18 @@ def test_a_mutated_modules_own_tables_of_mutants_are_not_taken_for_caches(tmp_pa
     monkeypatch.setenv("MUTANT_UNDER_TEST", "sut.reference.mutated_shape.x_lookup__mutmut_1")
     mutation_plugin.pytest_configure(SimpleNamespace(option=SimpleNamespace(no_snapshots=False)))
     assert not module._LOOKUPS and all("_mutmut_orig" in table for table in tables)
+
+
+def test_while_mutmut_maps_every_test_starts_with_the_caches_empty(monkeypatch: pytest.MonkeyPatch) -> None:
+    """The map is learnt in one process: a cache filled by the first test that reads a class would hide the
+    code that fills it from every later test, and a mutant of that code would meet only the first."""
+    from outline import mutation_plugin
+    from sut.reference import bulk
+
+    monkeypatch.setitem(bulk._CLASSES, int, ())
+    monkeypatch.setenv("MUTANT_UNDER_TEST", "sut.reference.bulk.x__class_info__mutmut_1")
+    mutation_plugin.pytest_runtest_setup(None)
+    assert int in bulk._CLASSES                   # a mutant's own run: emptied once, at its start
+    monkeypatch.setenv("MUTANT_UNDER_TEST", "stats")
+    mutation_plugin.pytest_runtest_setup(None)
+    assert not bulk._CLASSES
