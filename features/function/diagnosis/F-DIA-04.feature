@@ -30,10 +30,11 @@ Feature: F-DIA-04 Device status polled over the MVB and faults shown on both dis
     Then the cab 1 display does not show "no status data"
     And the cab 6 display does not show "no status data"
 
-  @req:TCN-04
-  Scenario: F-DIA-04 A repaired device is shown answering again
+  @req:TCN-04 @req:TCN-08
+  Scenario: F-DIA-04 A repaired device is shown answering again, and recorded so once
     When "car3.VVVF" fails
     And 500 ms pass
     And "car3.VVVF" is repaired
     And 500 ms pass
     Then the cab 1 display shows "car3.VVVF: answering again"
+    And "car6.CCU" holds the record "car3.VVVF: answering again" exactly once

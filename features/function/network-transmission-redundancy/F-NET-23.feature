@@ -46,6 +46,13 @@ Feature: F-NET-23 Dual lines A and B on the WTB and on each MVB
     And no VVVF or BECU changes what it applies
 
   @req:RED-06
+  Scenario: F-NET-23 A line that brings a hundred disturbed frames in a row is diagnosed faulty and recorded
+    When the next 100 frames on line B of "unit1.MVB" are disturbed
+    And 300 ms pass
+    Then no message on "unit1.MVB" is lost
+    And "car6.CCU" holds a record "unit1.MVB line B: fault"
+
+  @req:RED-06
   Scenario: F-NET-23 Frames disturbed on both lines lose their messages; the bus carries on
     When the next 2 frames on both lines of "unit2.MVB" are disturbed
     And 100 ms pass
