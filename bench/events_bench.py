@@ -1,0 +1,70 @@
+"""The conformance run's event budget: how many kernel callbacks each profile runs, and of which kind.
+
+    PYTHONPATH=. .venv/bin/python bench/events_bench.py                  # every profile, one process each
+    PYTHONPATH=. .venv/bin/python bench/events_bench.py --profile atp    # one
+    PYTHONPATH=. .venv/bin/python bench/events_bench.py -- --item F-NET-31   # arguments for pytest after --
+
+Runs `pytest features --profile P` in one process (snapshots and bulk advance as in any run) with
+bench/_events_plugin.py counting every callback `Kernel.run` makes, by the function it calls (a cyclic
+activity by its tick). Prints per profile the events, the wall seconds of the run, and the largest kinds:
+what the simulation must still do once snapshots and bulk advance have taken out all they can, which bounds
+how close to its floor the conformance run can come (README, "Speed").
+"""
+from __future__ import annotations
+
+import argparse
+import json
+import os
+import subprocess
+import sys
+import tempfile
+import time
+from pathlib import Path
+
+sys.path.insert(0, str(Path(__file__).resolve().parent))
+
+from _table import table  # noqa: E402
+
+ROOT = Path(__file__).resolve().parents[1]
+PROFILES = ("crh2", "metro-tcn", "atp")
+
+
+def count(profile: str, extra: list[str]) -> tuple[dict[str, int], float, str]:
+    with tempfile.TemporaryDirectory() as tmp:
+        out = Path(tmp) / "events.json"
+        env = dict(os.environ, EVENTS_PLUGIN_OUT=str(out),
+                   PYTHONPATH=os.pathsep.join([str(ROOT / "bench"), str(ROOT), os.environ.get("PYTHONPATH", "")]))
+        started = time.perf_counter()
+        run = subprocess.run([sys.executable, "-m", "pytest", "features", "-q", "-p", "no:xdist", "-p",
+                              "no:cacheprovider", "-p", "_events_plugin", "--profile", profile, *extra],
+                             cwd=ROOT, env=env, capture_output=True, text=True)
+        wall = time.perf_counter() - started
+        summary = run.stdout.strip().splitlines()[-1] if run.stdout.strip() else run.stderr[-500:]
+        if run.returncode not in (0, 5) or not out.exists():
+            raise SystemExit(f"pytest --profile {profile} failed:\n{run.stdout[-3000:]}{run.stderr[-2000:]}")
+        return json.loads(out.read_text(encoding="utf-8")), wall, summary
+
+
+def main(argv: list[str] | None = None) -> None:
+    parser = argparse.ArgumentParser(description=__doc__.split("\n\n")[0],
+                                     formatter_class=argparse.RawDescriptionHelpFormatter)
+    parser.add_argument("--profile", action="append", choices=PROFILES,
+                        help="a profile to count (again for more; default: all three)")
+    parser.add_argument("--top", type=int, default=8, help="kinds listed per profile (default 8)")
+    parser.add_argument("--plain", action="store_true", help="plain text tables, no rich")
+    parser.add_argument("pytest_args", nargs="*", help="after --: passed to pytest")
+    args = parser.parse_args(argv)
+    rows, total = [], 0
+    for profile in args.profile or PROFILES:
+        kinds, wall, summary = count(profile, args.pytest_args)
+        events = sum(kinds.values())
+        total += events
+        largest = sorted(kinds.items(), key=lambda kv: -kv[1])[:args.top]
+        rows.append((profile, f"{events / 1e6:.2f} M", f"{wall:.1f} s", summary,
+                     ", ".join(f"{name} {n / 1e6:.2f} M" for name, n in largest)))
+    table("Kernel events per profile (one process each)", ("profile", "events", "wall", "pytest", "largest kinds"),
+          rows, plain=args.plain, notes=[f"all profiles: {total / 1e6:.2f} M events"])
+
+
+if __name__ == "__main__":
+    main()
