@@ -262,8 +262,9 @@ def test_a_resumed_run_keeps_the_kills_and_runs_survivors_and_the_unchecked_agai
     monkeypatch.setattr(mutation, "KILLS", kills)
     monkeypatch.setattr(mutation, "_codes", lambda: after if ran else before)
     monkeypatch.setattr(mutation, "_mutmut", lambda *args, env=None: ran.append(args))
+    monkeypatch.setattr(mutation, "probe_mutant_mode", lambda: ran.append(("probe",)))
     mutation.run(drawn, 2, resume=True)
-    assert ran == [("run", "--max-children", "2", drawn[1].name, drawn[2].name)]
+    assert ran == [("probe",), ("run", "--max-children", "2", drawn[1].name, drawn[2].name)]
     assert [m.status for m in drawn] == ["killed", "killed", "survived", "timeout"]
     assert drawn[0].killed_by == "test_fatp01_a"          # the last run's killer kept
 
