@@ -62,6 +62,15 @@ def _empty(caches: list) -> None:
         cache.cache_clear() if hasattr(cache, "cache_clear") else cache.clear()
 
 
+def pytest_collection_finish(session: pytest.Session) -> None:
+    reference_caches()        # read once here, where mutmut's warm-up collects: the forked runs inherit it
+
+
+# What each module's caches are, worked out once per module: a mutated module is large (reading them all
+# took 6 s), and the map of who reaches what asks before every test.
+_FOUND: dict[str, tuple[object, list]] = {}
+
+
 def reference_caches() -> list:
     """The per-process caches of the references that are loaded: every module-level name of sut/reference/
     bound to an empty dict or set in its source (a table filled as it is needed), and every function of
@@ -70,20 +79,28 @@ def reference_caches() -> list:
     for name, module in sorted(sys.modules.items()):
         if not name.startswith("sut.reference.") or module is None or not getattr(module, "__file__", None):
             continue
-        tree = ast.parse(Path(module.__file__).read_text(encoding="utf-8"))
-        for node in tree.body:
-            target = node.targets[0] if isinstance(node, ast.Assign) and len(node.targets) == 1 else \
-                node.target if isinstance(node, ast.AnnAssign) else None
-            value = getattr(node, "value", None)
-            empty = (isinstance(value, ast.Dict) and not value.keys) or \
-                (isinstance(value, ast.Call) and isinstance(value.func, ast.Name) and value.func.id in ("set", "dict")
-                 and not value.args and not value.keywords)
-            if isinstance(target, ast.Name) and empty and not _trampoline_table(node) \
-                    and isinstance(getattr(module, target.id, None), (dict, set)):
-                found.append(getattr(module, target.id))
-        found += [value for value in vars(module).values() if callable(value) and hasattr(value, "cache_clear")
-                  and getattr(value, "__module__", None) == name]
+        known = _FOUND.get(name)
+        if known is None or known[0] is not module:
+            known = _FOUND[name] = (module, _module_caches(name, module))
+        found += known[1]
     return found
+
+
+def _module_caches(name: str, module: object) -> list:
+    found = []
+    tree = ast.parse(Path(module.__file__).read_text(encoding="utf-8"))
+    for node in tree.body:
+        target = node.targets[0] if isinstance(node, ast.Assign) and len(node.targets) == 1 else \
+            node.target if isinstance(node, ast.AnnAssign) else None
+        value = getattr(node, "value", None)
+        empty = (isinstance(value, ast.Dict) and not value.keys) or \
+            (isinstance(value, ast.Call) and isinstance(value.func, ast.Name) and value.func.id in ("set", "dict")
+             and not value.args and not value.keywords)
+        if isinstance(target, ast.Name) and empty and not _trampoline_table(node) \
+                and isinstance(getattr(module, target.id, None), (dict, set)):
+            found.append(getattr(module, target.id))
+    return found + [value for value in vars(module).values() if callable(value) and hasattr(value, "cache_clear")
+                    and getattr(value, "__module__", None) == name]
 
 
 def _trampoline_table(node: ast.stmt) -> bool:

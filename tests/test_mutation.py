@@ -559,3 +559,17 @@ def test_while_mutmut_maps_every_test_starts_with_the_caches_empty(monkeypatch: 
     monkeypatch.setenv("MUTANT_UNDER_TEST", "stats")
     mutation_plugin.pytest_runtest_setup(None)
     assert not bulk._CLASSES
+
+
+def test_each_modules_caches_are_read_from_its_source_once(monkeypatch: pytest.MonkeyPatch) -> None:
+    """The map asks before every test, and a mutated module's source is large (6 s for all of them)."""
+    import ast
+
+    from outline import mutation_plugin
+    import sut.reference.bulk  # noqa: F401
+
+    first = mutation_plugin.reference_caches()
+    parsed: list[str] = []
+    monkeypatch.setattr(ast, "parse", lambda source, *a, **k: parsed.append(source) or ast.Module([], []))
+    again = mutation_plugin.reference_caches()
+    assert not parsed and len(again) == len(first) and all(a is b for a, b in zip(again, first))
