@@ -38,6 +38,7 @@ import random
 import re
 import subprocess
 import sys
+import tomllib
 import time
 import uuid
 from dataclasses import asdict, dataclass
@@ -104,9 +105,9 @@ def _mutmut(*args: str, env: dict[str, str] | None = None) -> subprocess.Complet
 # reach that module, and a change the notes cannot place (a module no noted test uses, such as the fixtures,
 # or no notes at all) every test.
 # The plugin is among them: it decides how every test is mapped, so a change to it maps every test again.
-MAPPED_FROM = ("features/**/*.feature", "steps/*.py", "tests/test_bulk.py", "tests/test_kernel.py",
-               "outline/mutation_plugin.py")
 MAPS_EVERY_TEST = ("outline/mutation_plugin.py",)
+MAPPED_FROM = ("features/**/*.feature", "steps/*.py", "tests/test_bulk.py", "tests/test_kernel.py",
+               *MAPS_EVERY_TEST)
 MAP_DIGEST = MUTANTS_DIR / "scenarios.sha256"          # what the map was made from (JSON; see map_sources)
 INPUTS = MUTANTS_DIR / "scenario_inputs.json"         # what each mapped test is made of
 MAPPED_TESTS = ("features/", "tests/test_bulk.py", "tests/test_kernel.py")
@@ -810,8 +811,9 @@ def probe_mutant_mode() -> None:
     a mutant's mode) under a mutant that does not exist, so every call takes the original code: they must
     pass. If they fail, the harness itself breaks the tests, and every mutant would look killed (seed 7's
     first run, 2026-11-26: the plugin emptied mutmut's own tables and 99 % were "killed")."""
-    cmd = [sys.executable, "-m", "pytest", "--rootdir=.", "-x", "-q", "-p", "no:xdist", "-p", "no:cacheprovider",
-           "-p", "outline.mutation_plugin", *PROBE]
+    mutmut_args = tomllib.loads((ROOT / "pyproject.toml").read_text(encoding="utf-8"))["tool"]["mutmut"]
+    # as mutmut's harness starts a mutant's pytest: its own options, the tests, then pyproject's options
+    cmd = [sys.executable, "-m", "pytest", "--rootdir=.", "-x", "-q", *PROBE, *mutmut_args["pytest_add_cli_args"]]
     result = subprocess.run(cmd, cwd=MUTANTS_DIR, capture_output=True, text=True,
                             env=dict(os.environ, MUTANT_UNDER_TEST="sut.reference.kernel.x_no_such_function__mutmut_1"))
     if result.returncode != 0:
