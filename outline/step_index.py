@@ -191,3 +191,18 @@ def find_fixturedefs_for_step(step: Any, fixturemanager: Any, node: Any) -> Iter
 
 def install() -> None:
     _SCENARIO.find_fixturedefs_for_step = find_fixturedefs_for_step
+
+
+_PATTERNS: dict[tuple[Any, str], str] = {}
+
+
+def pattern_of(step_func: Any, step_type: str) -> str | None:
+    """`<type> <pattern>` of a step function, its English pattern where it has one (the first registered
+    otherwise): how a step is named in the implementer's contract."""
+    key = (step_func, step_type)
+    if key not in _PATTERNS:
+        found = [ctx.parser.name for ctx in list(step_function_context_registry.values())
+                 if ctx.step_func is step_func and ctx.type in (None, step_type)]
+        english = [p for p in found if p.isascii()]
+        _PATTERNS[key] = f"{step_type} {(english or found or ['?'])[0]}"
+    return _PATTERNS[key]

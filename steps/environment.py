@@ -196,8 +196,9 @@ _TALK = ("status.tx", "cmd.tx", "token.pass", "token.init", "token.form", "block
 def _(sut: TrainDriver, t_action: int, node: str, start: float, end: float) -> None:
     """Fail-safe (FS-02): a board outside its rated environment stops talking rather than talk wrong."""
     assert sut.now_us >= t_action + us(end), f"the scenario ran only {ms(sut.now_us - t_action)} after the action"
-    said = [ev for ev in sut.trace.select(source=node, since=t_action + us(start), until=t_action + us(end))
-            if ev.kind in _TALK]
+    said = sorted((ev for kind in _TALK
+                   for ev in sut.trace.select(kind=kind, source=node, since=t_action + us(start),
+                                              until=t_action + us(end))), key=lambda ev: ev.t)
     assert not said, f"{node} kept talking: {analysis.describe(said)}"
 
 

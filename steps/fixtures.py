@@ -15,6 +15,8 @@ from typing import Callable
 import pytest
 
 from sut.backends import BACKENDS, ENV_VAR, resolve
+from sut.contract import load as load_contract
+from sut.contract.guard import ContractDriver, Recorder
 from sut.driver import TrainDriver
 from sut.snapshot import SnapshotCache, SnapshotDriver
 from outline import step_index
@@ -44,6 +46,10 @@ def pytest_addoption(parser: pytest.Parser) -> None:
     group.addoption("--frame-by-frame", action="store_true", default=False,
                     help="the reference simulates every advance frame by frame instead of skipping steady "
                          "periods (sut/reference/bulk.py); verdicts and traces are the same either way")
+    group.addoption("--contract-record", default=None, metavar="FILE",
+                    help="write down every method, name, event kind and field the steps ask of the SUT, by "
+                         "profile, to FILE (JSON; with xdist one FILE.<worker> each): the catalogue test "
+                         "compares it with sut/contract/<profile>.yaml")
     group.addoption("--trace-dir", default=None, metavar="DIR",
                     help="also write each scenario's whole trace to DIR/<test id>.csv (to compare runs: two "
                          "runs of one SUT, in-process against remote, serial against -n auto)")
@@ -63,6 +69,7 @@ _SUTS = pytest.StashKey[dict]()           # test id suffix -> backend class, in 
 # ids to keep. Collecting every scenario once per backend and deselecting most was a quarter of that run.
 SUT_CHOOSER = pytest.StashKey[Callable[[pytest.Item, list[str]], list[str]]]()
 _SNAPSHOTS = pytest.StashKey[SnapshotCache]()
+_RECORDER = pytest.StashKey[Recorder]()
 
 
 def pytest_configure(config: pytest.Config) -> None:
@@ -75,6 +82,8 @@ def pytest_configure(config: pytest.Config) -> None:
             raise pytest.UsageError(f"--sut: {exc}") from None
     config.stash[_SUTS] = suts
     config.stash[_SNAPSHOTS] = SnapshotCache()
+    if config.getoption("--contract-record"):
+        config.stash[_RECORDER] = Recorder()
     if config.getoption("--frame-by-frame"):
         # An environment variable, not an import of the reference: the steps know only the driver, and a
         # remote server started from this run (or an xdist worker) inherits it.
@@ -94,6 +103,14 @@ def pytest_collection_finish(session: pytest.Session) -> None:
 
 
 def pytest_sessionfinish(session: pytest.Session) -> None:
+    recorder = session.config.stash.get(_RECORDER, None)
+    if recorder is not None:
+        import json
+        path = Path(session.config.getoption("--contract-record"))
+        worker = getattr(session.config, "workerinput", {}).get("workerid")
+        if worker:
+            path = path.with_name(f"{path.name}.{worker}")
+        path.write_text(json.dumps(recorder.as_json(), indent=1, sort_keys=True), encoding="utf-8")
     cache = session.config.stash.get(_SNAPSHOTS, None)
     if cache is not None and hasattr(session.config, "workeroutput"):     # an xdist worker: tell the controller
         session.config.workeroutput["crh2_snapshots"] = cache.figures()
@@ -205,6 +222,12 @@ def pytest_bdd_after_step(request, feature, scenario, step, step_func, step_func
             Bound(step.name, start, start + round(args["bound"] * 1000)))
 
 
+def pytest_bdd_before_step(request, feature, scenario, step, step_func) -> None:
+    recorder = request.config.stash.get(_RECORDER, None)
+    if recorder is not None:
+        recorder.step = step_index.pattern_of(step_func, step.type) or f"{step.type} {step.name}"
+
+
 @pytest.fixture
 def sut(sut_class: type[TrainDriver], request: pytest.FixtureRequest):
     declared = [p for p in _profiles_of(request.node) if p in sut_class.PROFILES]
@@ -213,7 +236,11 @@ def sut(sut_class: type[TrainDriver], request: pytest.FixtureRequest):
         driver = sut_class.open(profile)
     else:
         driver = SnapshotDriver(sut_class, profile, request.config.stash[_SNAPSHOTS])
-    yield driver
+    recorder = request.config.stash.get(_RECORDER, None)
+    if recorder is not None:
+        recorder.item = ",".join(str(a) for m in request.node.iter_markers("item") for a in m.args) or "?"
+    yield ContractDriver(driver, profile or "", None if recorder is not None else load_contract(profile or ""),
+                         recorder)
     outcome = [getattr(request.node, f"_crh2_{phase}", None) for phase in ("setup", "call")]
     failed = any(r is not None and r.failed for r in outcome)
     whole = failed or request.config.getoption("--whole-trace") == "all"

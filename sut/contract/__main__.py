@@ -1,0 +1,36 @@
+"""python -m sut.contract check|update RECORD...: hold a run's record (pytest features --contract-record RECORD)
+against the catalogue, or refresh the catalogue's read_by lists from it."""
+from __future__ import annotations
+
+import argparse
+import sys
+from pathlib import Path
+
+from sut.contract.record import merge, problems, update
+
+
+def main(argv: list[str] | None = None) -> int:
+    parser = argparse.ArgumentParser(prog="python -m sut.contract", description=__doc__)
+    parser.add_argument("command", choices=("check", "update"))
+    parser.add_argument("record", nargs="+", type=Path, help="the --contract-record FILE of a run (FILE.<worker> too)")
+    parser.add_argument("--profile", action="append", default=[], help="only these profiles (default: all recorded)")
+    args = parser.parse_args(argv)
+    record = merge(args.record)
+    if not record:
+        print(f"no record found at {', '.join(map(str, args.record))}", file=sys.stderr)
+        return 2
+    profiles = args.profile or sorted(record)
+    if args.command == "update":
+        for profile in profiles:
+            print(f"updated {update(record, profile)}")
+        return 0
+    found = problems(record, profiles)
+    for line in found:
+        print(line)
+    print(f"contract: {len(found)} problem(s) in {', '.join(profiles)}" if found
+          else f"contract: catalogue and steps agree ({', '.join(profiles)})")
+    return 1 if found else 0
+
+
+if __name__ == "__main__":
+    sys.exit(main())

@@ -1,0 +1,167 @@
+"""The implementer's contract of one profile, read from `sut/contract/<profile>.yaml`.
+
+What any SUT of the profile must expose for the suite to test it: the driver methods the steps call, the
+names they pass (inputs, outputs, readings, orders, lamps) with their value words, and the trace event kinds
+they read with each kind's fields. `docs/implementing-a-sut.md` is rendered from the same files.
+"""
+from __future__ import annotations
+
+import fnmatch
+from dataclasses import dataclass, field
+from functools import lru_cache
+from pathlib import Path
+from typing import Any
+
+import yaml
+
+HERE = Path(__file__).parent
+SECTIONS = ("inputs", "outputs", "readings", "orders", "lamps")
+FIELD_TYPES = ("integer", "number", "string", "boolean", "list", "mapping", "any")
+
+
+class ContractGap(Exception):
+    """The suite asked the SUT for something its contract does not list: a bug of the suite, not a verdict."""
+
+
+class ContractBreach(AssertionError):
+    """The SUT answered outside its contract (a value word or an event field): a failure of the SUT."""
+
+
+class ContractFileError(Exception):
+    """A contract file that cannot be read as one, naming the file and the entry."""
+
+
+@dataclass
+class EventKind:
+    name: str
+    source: str
+    when: str
+    count: str
+    fields: dict[str, dict[str, Any]]
+    requirements: list[str]
+
+
+@dataclass
+class Contract:
+    profile: str
+    path: Path
+    methods: dict[str, str]
+    names: dict[str, dict[str, dict[str, Any]]]
+    events: dict[str, EventKind]
+    raw: dict = field(repr=False, default_factory=dict)
+
+    # -- checks of what the suite asks -----------------------------------------------------------------
+    def _where(self) -> str:
+        return f" (contract {self.path.relative_to(HERE.parents[1]) if HERE.parents[1] in self.path.parents else self.path})"
+
+    def check_method(self, name: str) -> None:
+        if name not in self.methods:
+            raise ContractGap(f"a step called {name}() on a {self.profile} SUT, which its contract does not "
+                              f"list{self._where()}")
+
+    def entry(self, section: str, name: str) -> dict[str, Any] | None:
+        entries = self.names.get(section, {})
+        if name in entries:
+            return entries[name]
+        for pattern, entry in entries.items():
+            if any(ch in pattern for ch in "*?[") and fnmatch.fnmatchcase(name, pattern):
+                return entry
+        return None
+
+    def check_name(self, section: str, name: str, method: str) -> None:
+        if self.entry(section, name) is None:
+            raise ContractGap(f"a step passed {name!r} to {method}(), which the {self.profile} contract does not "
+                              f"list among its {section}{self._where()}")
+
+    def check_answer(self, section: str, name: str, value: Any) -> None:
+        entry = self.entry(section, name) or {}
+        words = entry.get("values")
+        if words and value not in words:
+            raise ContractBreach(f"the SUT answered {value!r} for the {section[:-1]} {name!r}; its contract "
+                                 f"allows {', '.join(map(repr, words))}{self._where()}")
+
+    def kinds_matching(self, kind: str) -> list[str]:
+        if kind.endswith("*"):
+            return [k for k in self.events if k.startswith(kind[:-1])]
+        return [kind] if kind in self.events else []
+
+    def check_kind(self, kind: str, where: dict) -> None:
+        kinds = self.kinds_matching(kind)
+        if not kinds:
+            raise ContractGap(f"a step queried the trace for {kind!r} events, which the {self.profile} contract "
+                              f"does not list{self._where()}")
+        for name in where:
+            if not any(name in self.events[k].fields for k in kinds):
+                raise ContractGap(f"a step selected {kind!r} events by the field {name!r}, which the "
+                                  f"{self.profile} contract does not list for that kind{self._where()}")
+
+    def check_field(self, kind: str, name: str) -> None:
+        ev = self.events.get(kind)
+        if ev is None:
+            raise ContractGap(f"a step read the field {name!r} of a {kind!r} event, a kind the {self.profile} "
+                              f"contract does not list{self._where()}")
+        if name not in ev.fields:
+            raise ContractGap(f"a step read the field {name!r} of a {kind!r} event, which the {self.profile} "
+                              f"contract does not list for that kind{self._where()}")
+
+    def answer_keys(self, method: str) -> dict[str, Any]:
+        return (self.raw.get("answers") or {}).get(method) or {}
+
+    def check_answer_key(self, method: str, dotted: str) -> None:
+        keys = self.answer_keys(method)
+        if dotted in keys or any(any(ch in k for ch in "*?[") and fnmatch.fnmatchcase(dotted, k) for k in keys):
+            return
+        raise ContractGap(f"a step read {dotted!r} of the SUT's {method}() answer, which the {self.profile} "
+                          f"contract does not list{self._where()}")
+
+    def answer_note(self, method: str, dotted: str) -> str:
+        return f"; the {self.profile} contract lists it{self._where()}" if dotted in self.answer_keys(method) else ""
+
+    def field_note(self, kind: str, name: str) -> str:
+        ev = self.events.get(kind)
+        spec = ev.fields.get(name) if ev else None
+        if spec is None:
+            return ""
+        need = "requires" if spec.get("required", True) else "lists as optional"
+        return f"; the {self.profile} contract {need} it{self._where()}"
+
+
+def _fail(path: Path, where: str, why: str) -> ContractFileError:
+    return ContractFileError(f"{path}: {where}: {why}")
+
+
+def parse(path: Path) -> Contract:
+    try:
+        raw = yaml.safe_load(path.read_text(encoding="utf-8"))
+    except yaml.YAMLError as exc:
+        raise ContractFileError(f"{path}: not YAML: {exc}") from None
+    if not isinstance(raw, dict) or "profile" not in raw:
+        raise _fail(path, "top", "a mapping with profile, methods, names and events")
+    unknown = set(raw) - {"profile", "title", "about", "methods", "names", "events", "answers", "records"}
+    if unknown:
+        raise _fail(path, "top", f"unknown keys {sorted(unknown)}")
+    methods = {str(k): str(v or "") for k, v in (raw.get("methods") or {}).items()}
+    names: dict[str, dict[str, dict]] = {}
+    for section, entries in (raw.get("names") or {}).items():
+        if section not in SECTIONS:
+            raise _fail(path, f"names.{section}", f"not one of {', '.join(SECTIONS)}")
+        names[section] = {str(k): dict(v or {}) for k, v in (entries or {}).items()}
+    events: dict[str, EventKind] = {}
+    for kind, spec in (raw.get("events") or {}).items():
+        spec = spec or {}
+        fields = {}
+        for fname, fspec in (spec.get("fields") or {}).items():
+            fspec = dict(fspec or {})
+            if fspec.get("type", "any") not in FIELD_TYPES:
+                raise _fail(path, f"events.{kind}.fields.{fname}.type", f"one of {', '.join(FIELD_TYPES)}")
+            fields[str(fname)] = fspec
+        events[str(kind)] = EventKind(str(kind), str(spec.get("source", "")), str(spec.get("when", "")),
+                                      str(spec.get("count", "")), fields, list(spec.get("requirements") or []))
+    return Contract(str(raw["profile"]), path, methods, names, events, raw)
+
+
+@lru_cache(maxsize=None)
+def load(profile: str) -> Contract | None:
+    """The contract of `profile`, or None where the project has none (a profile of a fixture tree)."""
+    path = HERE / f"{profile}.yaml"
+    return parse(path) if path.exists() else None
