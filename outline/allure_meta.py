@@ -5,6 +5,7 @@ Categories (Allure 3.18 reads the Allure 2 `categories.json`; first match wins):
 - SUT not reachable: the backend could not be imported, connected to or started;
 - Product defect: a Then step's assertion failed, the SUT does not conform;
 - Test defect: any other error (a malformed step value, a bug of the suite): the SUT was not judged;
+- Not applicable: an option the SUT's implementation declaration does not claim (ISO/IEC 9646's verdict);
 - Pending / profile not declared: skipped on purpose.
 """
 from __future__ import annotations
@@ -25,6 +26,8 @@ CATEGORIES = [
      "messageRegex": r"(?s).*(SUT backend|cannot import|not reachable|Connection(Refused|Reset)?Error|timed out).*"},
     {"name": "Product defect: the SUT does not conform", "matchedStatuses": ["failed"]},
     {"name": "Test defect: the suite or its input, the SUT not judged", "matchedStatuses": ["broken"]},
+    {"name": "Not applicable: an option the SUT's declaration does not claim", "matchedStatuses": ["skipped"],
+     "messageRegex": r"(?s).*not applicable: .*"},
     {"name": "Pending test item", "matchedStatuses": ["skipped"], "messageRegex": r"(?s).*pending.*"},
     {"name": "Profile the SUT does not declare", "matchedStatuses": ["skipped"],
      "messageRegex": r"(?s).*profile .* declares.*"},

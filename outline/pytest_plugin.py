@@ -26,6 +26,8 @@ MARKERS = (
     "item(id): test-outline item carried by the scenario (from @item:<ID>)",
     "req(id): requirement ID verified by the scenario (from @req:<ID>)",
     "profile(name): train/SUT profile the scenario needs (from @profile:<name>)",
+    "option(name): an option of the implementation declaration form the scenario needs (from @option:<name>); "
+    "not applicable to a SUT that does not claim it",
     "tentative: checks a project decision where the sources are ambiguous",
     "pending: written but not yet runnable; skipped with reason 'pending'",
     "on_request: a feature bound only when its item is asked for with --item (the double-fault campaign)",

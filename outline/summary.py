@@ -13,8 +13,19 @@ from collections import Counter
 from dataclasses import dataclass, field
 from pathlib import Path
 
-STATUSES = ("passed", "failed", "broken", "skipped")
-WORST_FIRST = ("broken", "failed", "unknown", "skipped", "passed")
+# "not applicable" is ISO/IEC 9646's verdict for a scenario needing an option the SUT does not claim: a skip
+# whose reason says so (steps/verdicts.py), counted apart from the other skips.
+STATUSES = ("passed", "failed", "broken", "not applicable", "skipped")
+WORST_FIRST = ("broken", "failed", "unknown", "skipped", "not applicable", "passed")
+NOT_APPLICABLE = "not applicable: "
+
+
+def verdict(result: dict) -> str:
+    """A result's status, with "not applicable" told apart from the other skips."""
+    status = result.get("status", "unknown")
+    if status == "skipped" and NOT_APPLICABLE in str((result.get("statusDetails") or {}).get("message", "")):
+        return "not applicable"
+    return status
 
 
 @dataclass
@@ -54,7 +65,7 @@ def statuses_by_name(results: list[dict]) -> dict[str, str]:
     """Scenario name -> status; scenario outlines (one result per example) report their worst example."""
     out: dict[str, str] = {}
     for result in results:
-        name, status = result.get("name", "?"), result.get("status", "unknown")
+        name, status = result.get("name", "?"), verdict(result)
         if name not in out or WORST_FIRST.index(status) < WORST_FIRST.index(out[name]):
             out[name] = status
     return out
@@ -68,7 +79,7 @@ def summarize(results: list[dict]) -> Summary:
         if "mutation" in labels(result, "tag"):
             summary.mutation = result.get("name", "?")       # nor is the last make mutate run
             continue
-        status = result.get("status", "unknown")
+        status = verdict(result)
         summary.counts[status] += 1
         reqs = labels(result, "requirement")
         summary.touched.update(reqs)
@@ -99,7 +110,7 @@ def format_summary(summary: Summary) -> str:
     if summary.covered:
         lines.append("covered: " + " ".join(sorted(summary.covered)))
     for status, name in sorted(summary.not_passed):
-        if status != "skipped":
+        if status not in ("skipped", "not applicable"):
             lines.append(f"{status}: {name}")
     if summary.mutation:
         lines.append(summary.mutation)

@@ -3,7 +3,7 @@
 from __future__ import annotations
 
 # `@kind:value` tags, each turned into one registered marker of the same name.
-KINDS = ("item", "req", "profile")
+KINDS = ("item", "req", "profile", "option")
 # Bare tags the project defines; each is a registered marker.
 PLAIN = ("tentative", "pending", "on_request")
 

@@ -16,12 +16,14 @@ import pytest
 
 from sut.backends import BACKENDS, ENV_VAR, resolve
 from sut.contract import load as load_contract
+from sut.contract import declaration as declarations
 from sut.contract.guard import ContractDriver, Recorder
 from sut.driver import TrainDriver
 from sut.snapshot import SnapshotCache, SnapshotDriver
 from outline import step_index
 from steps import report
 from steps.diagram import Bound
+from steps.verdicts import NOT_APPLICABLE, not_applicable
 
 
 def pytest_addoption(parser: pytest.Parser) -> None:
@@ -46,6 +48,10 @@ def pytest_addoption(parser: pytest.Parser) -> None:
     group.addoption("--frame-by-frame", action="store_true", default=False,
                     help="the reference simulates every advance frame by frame instead of skipping steady "
                          "periods (sut/reference/bulk.py); verdicts and traces are the same either way")
+    group.addoption("--declaration", default=None, metavar="FILE",
+                    help="the SUT's implementation declaration (options, parameters, texts; the form is "
+                         "sut/contract/form.yaml); default: the backend's own (DECLARATION). Scenarios of an "
+                         "option it does not claim are not applicable")
     group.addoption("--contract-record", default=None, metavar="FILE",
                     help="write down every method, name, event kind and field the steps ask of the SUT, by "
                          "profile, to FILE (JSON; with xdist one FILE.<worker> each): the catalogue test "
@@ -81,6 +87,14 @@ def pytest_configure(config: pytest.Config) -> None:
         except Exception as exc:
             raise pytest.UsageError(f"--sut: {exc}") from None
     config.stash[_SUTS] = suts
+    override = config.getoption("--declaration")
+    if override and len(suts) > 1:
+        raise pytest.UsageError("--declaration: one file for one --sut (each of several backends carries its own)")
+    for cls in suts.values():
+        try:
+            declarations.of_backend(cls, override)
+        except declarations.DeclarationError as exc:
+            raise pytest.UsageError(f"declaration of the SUT {cls.__qualname__}: {exc}") from None
     config.stash[_SNAPSHOTS] = SnapshotCache()
     if config.getoption("--contract-record"):
         config.stash[_RECORDER] = Recorder()
@@ -125,6 +139,12 @@ def pytest_testnodedown(node, error) -> None:
 
 
 def pytest_terminal_summary(terminalreporter, config: pytest.Config) -> None:
+    # "not applicable" (ISO/IEC 9646) is a skip to pytest; say how many of the skips it was, and why.
+    reasons = [str(getattr(r, "longrepr", ""))
+               for r in terminalreporter.stats.get("skipped", []) if NOT_APPLICABLE in str(getattr(r, "longrepr", ""))]
+    if reasons:
+        terminalreporter.write_line(f"not applicable: {len(reasons)} of the skipped scenarios (an option the SUT's "
+                                    f"declaration does not claim; -rs lists why)", yellow=True)
     cache = config.stash.get(_SNAPSHOTS, None)
     if cache is None or config.getoption("--no-snapshots") or hasattr(config, "workeroutput"):
         return
@@ -193,10 +213,41 @@ def pytest_collection_modifyitems(config: pytest.Config, items: list[pytest.Item
         elif wanted and not any(p in wanted for p in profiles):
             drop.append(item)
         else:
+            reason = _not_applicable(item, sut_class, profiles, config)
+            if reason:
+                item.add_marker(pytest.mark.skip(reason=reason))
             keep.append(item)
     if drop:
         config.hook.pytest_deselected(items=drop)
         items[:] = keep
+
+
+def _not_applicable(item: pytest.Item, sut_class: type[TrainDriver], profiles: list[str],
+                    config: pytest.Config) -> str | None:
+    """Why a scenario's verdict is "not applicable" to this SUT (an option of the form it does not claim)."""
+    needed = [str(a) for mark in item.iter_markers("option") for a in mark.args]
+    if not needed:
+        return None
+    found = declarations.of_backend(sut_class, config.getoption("--declaration"))
+    mine = found.of(next(p for p in profiles if p in sut_class.PROFILES)) if found else None
+    missing = [o for o in needed if mine is None or not mine.claims(o)]
+    if not missing:
+        return None
+    where = found.path if found else f"{sut_class.__qualname__} (no declaration)"
+    return f"{NOT_APPLICABLE}the SUT's declaration {where} does not claim the option {', '.join(missing)}"
+
+
+@pytest.fixture
+def declaration(sut_class: type[TrainDriver], request: pytest.FixtureRequest) -> declarations.ProfileDeclaration:
+    """This scenario's SUT's declaration for the scenario's profile: the options it claims, its parameters and
+    its display texts. A scenario that needs one of a SUT that declares none is not applicable."""
+    profiles = [p for p in _profiles_of(request.node) if p in sut_class.PROFILES]
+    found = declarations.of_backend(sut_class, request.config.getoption("--declaration"))
+    mine = found.of(profiles[0]) if found and profiles else None
+    if mine is None:
+        not_applicable(f"the SUT {sut_class.__qualname__} declares no parameters for {', '.join(profiles) or 'its profile'} "
+                       f"(--declaration FILE; the form is sut/contract/form.yaml)")
+    return mine
 
 
 @pytest.fixture

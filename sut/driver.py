@@ -38,6 +38,10 @@ class TrainDriver(abc.ABC):
     # a rig or a train behind a socket). Only then may a run reuse what one scenario computed for another
     # (sut/snapshot.py); a backend that is not, or does not say so, is simply driven call by call.
     DETERMINISTIC: bool = False
+    # The backend's implementation declaration (sut/contract/declaration.py: options it implements, the
+    # parameters and texts the suite tests it by), a path from the project root; `--declaration FILE`
+    # names one for a backend that has none (a remote SUT) or overrides it.
+    DECLARATION: str | None = None
 
     def __init__(self) -> None:
         self._powered = False
@@ -282,11 +286,19 @@ class TrainDriver(abc.ABC):
 
     # -- on-board ATP (profile atp) ---------------------------------------------------------------
     def pass_balise(self, group: str, packets: list[dict[str, Any]]) -> None:
-        """The train passes balise group `group` (e.g. `70-2-4-15`) now, with these packets, each a dict
-        with `type` (`CTCS-1` with `sections` [(start m, length m, carrier Hz, end signal)], `MA` with
-        `end_m`, `ETCS-68` with `start_m` and `length_m`, `ETCS-46`, `line direction` with `direction`
-        up/down, `default` with `side_line`, `stop point` with `at_m` and `psd`, `linking` with `next`
-        [(group, at m)]). Positions are metres along the line."""
+        """The train passes balise group `group` (e.g. `70-2-4-15`) now, at its present position. `packets`
+        is a list of dicts, each with `type` and that type's fields, exactly as the steps send them:
+        - `CTCS-1`: `sections`, a list of (start m, length m, carrier Hz) triples (float, float, int), the
+          track circuits in line order (no end-signal type is sent); the steps send it with an `MA`;
+        - `MA`: `end_m` (float), the end of authority;
+        - `ETCS-68`: `start_m` and `length_m` (float), a neutral section;
+        - `ETCS-46`: no other field;
+        - `line direction`: `direction`, `up` or `down` (switches the CFSK carrier set);
+        - `default`: `side_line` True, the default telegram of a side-line balise;
+        - `stop point`: `at_m` (float) and `psd` (bool: the platform has screen doors);
+        - `linking`: `next`, a list of (group, at m) pairs, the groups the train must pass next.
+        Any other `type` (e.g. `ETCS-99`, with no other field) is a packet the ATP does not know: a balise
+        information error. Positions are absolute metres along the line, as the train's `position`."""
         raise self._unsupported("pass_balise")
 
     # -- traffic -------------------------------------------------------------------------------

@@ -755,6 +755,29 @@ class AnotherAtpRig(ReferenceAtp):
     every 40 ms (so a 120 ms decode delay). The features compute their edges from what it declares."""
     ATP = {"d_sen_m": 4.5, "position_uncertainty_m": 8.0, "cfsk_period_us": 40 * MS,
            "decode_delay_us": 120 * MS}
+    DECLARATION = "tests/declarations/another-atp-rig.yaml"
+
+
+# The DMI of a CTCS-2 train speaks Chinese; what it shows for each message the features name is declared.
+DMI_ZH = {"CFSK fault": "CFSK故障", "carrier inconsistent": "载频不一致", "default telegram": "默认报文",
+          "balise information error": "应答器信息错误", "DEF fault": "DEF故障"}
+
+
+class ChineseDmiAtp(ReferenceAtp):
+    """Freedom (localized display): the DMI shows its messages in Chinese, declared by message identifier."""
+    DECLARATION = "tests/declarations/chinese-dmi-atp.yaml"
+
+    def monitor(self, cab: int) -> dict:
+        shown = super().monitor(cab)
+        faults = []
+        for text in shown["faults"]:
+            for english, chinese in DMI_ZH.items():
+                text = text.replace(english, chinese)
+            faults.append(text)
+        return {**shown, "faults": faults}
 
 
 IN_BAND += [AnotherCoil, AnotherAtpRig]
+# Design freedoms a conforming product may take (issue 30), each with its own declaration: the whole suite
+# must accept them, as the in-band variants.
+FREEDOM = [ChineseDmiAtp]

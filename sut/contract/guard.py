@@ -17,6 +17,7 @@ from collections import defaultdict
 from typing import Any, Callable, Iterator, Mapping
 
 from sut.contract.catalogue import Contract, ContractBreach, ContractGap
+from sut.driver import TrainDriver
 from sut.trace import Trace, TraceEvent
 
 # Driver methods whose first argument (after a cab number where one is given) is a name from the contract.
@@ -251,10 +252,13 @@ class ContractDriver:
     def __getattr__(self, name: str) -> Any:
         if name.startswith("_"):
             raise AttributeError(name)
+        if callable(getattr(TrainDriver, name, None)):
+            self._method(name)                  # before the SUT is asked: a gap of the suite, whatever it has
         attr = getattr(self._driver, name)
         if not callable(attr):
             return attr
-        self._method(name)
+        if not callable(getattr(TrainDriver, name, None)):
+            self._method(name)
         if name in _ANSWERS:
             return lambda *args, **kwargs: CheckedAnswer(attr(*args, **kwargs), name, "", self)
         named = _NAMED.get(name)

@@ -21,6 +21,7 @@ class Reference(TrainDriver):
     backend_name = "reference"
     PROFILES = tuple(TRAINS)
     DETERMINISTIC = True           # virtual time, no randomness, nothing outside the model
+    DECLARATION = "sut/reference/declaration.yaml"
 
     @classmethod
     def open(cls, profile: str | None = None) -> TrainDriver:

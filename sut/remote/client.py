@@ -247,4 +247,6 @@ def remote_class(url: str) -> type[RemoteTrain]:
         conn.close()
     return type("RemoteTrain", (RemoteTrain,), {
         "URL": url, "SERVER": server, "PROFILES": tuple(str(p) for p in server["profiles"]),
+        "DECLARATION": f"declaration served by {url}" if isinstance(server.get("declaration"), str) else None,
+        "DECLARATION_TEXT": server.get("declaration") if isinstance(server.get("declaration"), str) else None,
         "__module__": __name__})

@@ -14,6 +14,7 @@ import threading
 import traceback
 from typing import Any
 
+from sut.contract.declaration import ROOT
 from sut.backends import resolve
 from sut.driver import TrainDriver
 from sut.errors import SutError, UnknownName
@@ -136,8 +137,11 @@ class _Handler(socketserver.StreamRequestHandler):
             self._send({"error": {"type": "VersionMismatch",
                                   "message": f"client speaks versions {versions}, this server {list(wire.VERSIONS)}"}})
             return False
-        self._send({"hello": wire.PROTOCOL, "version": max(common), "backend": self.server.backend_spec,
-                    "profiles": list(self.server.served), "trace_chunk": wire.TRACE_CHUNK})
+        hello = {"hello": wire.PROTOCOL, "version": max(common), "backend": self.server.backend_spec,
+                 "profiles": list(self.server.served), "trace_chunk": wire.TRACE_CHUNK}
+        if self.server.declaration is not None:
+            hello["declaration"] = self.server.declaration
+        self._send(hello)
         return True
 
     @staticmethod
@@ -167,6 +171,9 @@ class SutServer(socketserver.TCPServer):
     def __init__(self, address: tuple[str, int], backend_spec: str, profiles: list[str] | None = None):
         self.backend_spec = backend_spec
         self.backend = resolve(backend_spec)
+        # The backend's implementation declaration travels in the hello (PROTOCOL.md), as the text of its file.
+        path = getattr(self.backend, "DECLARATION", None)
+        self.declaration = (ROOT / path).read_text(encoding="utf-8") if path else None
         declared = tuple(self.backend.PROFILES)
         if profiles:
             unknown = [p for p in profiles if p not in declared]

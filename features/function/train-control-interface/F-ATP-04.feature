@@ -25,7 +25,7 @@ Feature: F-ATP-04 VDX emergency-brake loop: EB1R and EB2R in series, the isolati
     When 100 ms pass
     And the ATP applies the emergency brake
     And 100 ms pass
-    Then the emergency-brake loop opens within 6 ms
+    Then the emergency-brake loop opens within 6 ms of the FS output going off
     And relay EB2R is de-energised
     And relay EB1R is energised
     And the FS output reads 0 V within 6 V

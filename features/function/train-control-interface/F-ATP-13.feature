@@ -51,6 +51,6 @@ Feature: F-ATP-13 The ATP's brake reaches the train: traction suppressed, brake 
     When 500 ms pass
     And the ATP applies the emergency brake
     And 300 ms pass
-    Then the emergency-brake loop opens within 6 ms
+    Then the emergency-brake loop opens within 6 ms of the FS output going off
     And the "emergency brake" is applied
     And every CI receives traction notch 0 within 100 ms

@@ -50,6 +50,7 @@ class ReferenceAtp(PickledState, TrainDriver):
     backend_name = "reference"
     PROFILES = ("atp",)
     DETERMINISTIC = True           # virtual time, no randomness, nothing outside the model
+    DECLARATION = "sut/reference/declaration.yaml"
     VDX: ClassVar[dict[str, Any]] = {}
     ATP: ClassVar[dict[str, Any]] = {}
 

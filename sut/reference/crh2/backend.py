@@ -32,6 +32,7 @@ class ReferenceTrain(PickledState, TrainDriver):
     backend_name = "reference"
     PROFILES = ("crh2",)
     DETERMINISTIC = True           # virtual time, no randomness, nothing outside the model
+    DECLARATION = "sut/reference/declaration.yaml"
     TIMING: ClassVar[dict[str, Any]] = {}
     BEHAVIOUR: ClassVar[dict[str, Any]] = {}
 

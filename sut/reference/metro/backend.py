@@ -33,6 +33,7 @@ class ReferenceMetro(PickledState, TrainDriver):
     backend_name = "reference"
     PROFILES = ("metro-tcn",)
     DETERMINISTIC = True           # virtual time, no randomness, nothing outside the model
+    DECLARATION = "sut/reference/declaration.yaml"
     TIMING: ClassVar[dict[str, Any]] = {}
     BEHAVIOUR: ClassVar[dict[str, Any]] = {}
 

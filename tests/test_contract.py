@@ -1,0 +1,127 @@
+"""The implementer's contract (sut/contract/): the guard in front of every scenario's driver tells a gap of the
+suite (it asks for something the catalogue does not list) from a breach of the SUT (it answers outside the
+catalogue), never a KeyError; the catalogue files are complete enough to implement a SUT from.
+
+That the steps and the catalogue agree both ways is checked on the whole conformance run by `make test`
+(`--contract-record`, then `python -m sut.contract check`); the guard stops any step reading outside it in
+every run."""
+from __future__ import annotations
+
+import re
+from pathlib import Path
+
+import pytest
+
+from outline.requirements import load_requirements
+from sut.contract import ContractBreach, ContractFileError, ContractGap, load
+from sut.contract.catalogue import HERE, parse
+from sut.contract.guard import ContractDriver
+from sut.contract.record import problems
+from sut.trace import Trace, TraceEvent
+
+ROOT = Path(__file__).resolve().parents[1]
+PROFILES = sorted(p.stem for p in HERE.glob("*.yaml") if p.stem != "form")
+
+
+class Rig:
+    """A driver as the guard sees one: a trace, outputs and a monitor (duck-typed; the guard wraps any)."""
+
+    def __init__(self, events: list[TraceEvent], outputs: dict[str, str] | None = None):
+        self.trace = Trace(events)
+        self._outputs = outputs or {}
+        self.now_us = 0
+
+    def output(self, name: str) -> str:
+        return self._outputs[name]
+
+    def monitor(self, cab: int) -> dict:
+        return {"faults": ["C019"]}
+
+
+def _guarded(events: list[TraceEvent], outputs: dict[str, str] | None = None) -> ContractDriver:
+    return ContractDriver(Rig(events, outputs), "atp", load("atp"))
+
+
+def test_a_step_asking_for_an_unlisted_event_kind_is_a_gap_of_the_suite() -> None:
+    with pytest.raises(ContractGap, match=r"'bogus.kind' events, which the atp contract does not list"):
+        _guarded([]).trace.first(kind="bogus.kind")
+
+
+def test_a_step_reading_an_unlisted_field_is_a_gap_of_the_suite() -> None:
+    ev = _guarded([TraceEvent(5, "VDX", "loop.change", {"state": "open", "debug": 1})]).trace.first(kind="loop.change")
+    assert ev["state"] == "open"
+    with pytest.raises(ContractGap, match=r"field 'debug' of a 'loop.change' event"):
+        ev["debug"]
+
+
+def test_a_sut_leaving_out_a_required_field_fails_naming_the_event_and_the_field() -> None:
+    ev = _guarded([TraceEvent(2500, "VDX", "loop.change", {})]).trace.first(kind="loop.change")
+    with pytest.raises(ContractBreach, match=r"VDX loop.change at 2.5 ms has no field 'state'; the atp contract requires it"):
+        ev["state"]
+    assert not isinstance(ContractBreach("x"), KeyError) and isinstance(ContractBreach("x"), AssertionError)
+
+
+def test_a_step_selecting_by_an_unlisted_field_is_a_gap() -> None:
+    with pytest.raises(ContractGap, match=r"by the field 'colour'"):
+        _guarded([]).trace.select(kind="loop.change", colour="red")
+
+
+def test_a_sut_answering_an_undeclared_value_word_fails() -> None:
+    guarded = _guarded([], {"EB loop": "ajar"})
+    with pytest.raises(ContractBreach, match=r"answered 'ajar' for the output 'EB loop'; its contract allows"):
+        guarded.output("EB loop")
+
+
+def test_a_step_passing_an_unlisted_name_or_calling_an_unlisted_method_is_a_gap() -> None:
+    guarded = _guarded([], {"EB loop": "open"})
+    with pytest.raises(ContractGap, match=r"'EB3R' to output\(\)"):
+        guarded.output("EB3R")
+    with pytest.raises(ContractGap, match=r"called cut_line\(\) on a atp SUT"):
+        guarded.cut_line
+    with pytest.raises(ContractGap, match=r"'status' of the SUT's monitor\(\) answer"):
+        guarded.monitor(1)["status"]
+
+
+def test_an_unreadable_contract_file_names_the_file_and_entry(tmp_path: Path) -> None:
+    bad = tmp_path / "x.yaml"
+    bad.write_text("profile: x\nevents:\n  a.b:\n    fields:\n      f: {type: colour}\n", encoding="utf-8")
+    with pytest.raises(ContractFileError, match=r"x.yaml: events.a.b.fields.f.type: one of"):
+        parse(bad)
+
+
+def test_a_record_of_a_run_finds_stale_entries() -> None:
+    """The check a whole run's record gets in make test: an entry no step reads is reported by its path."""
+    found = problems({"atp": {"methods": {}, "events": {}}}, ["atp"])
+    assert "sut/contract/atp.yaml: methods.power_on: no step calls it" in found
+    assert any(line.startswith("sut/contract/atp.yaml: events.loop.change: no step reads it") for line in found)
+
+
+@pytest.mark.parametrize("profile", PROFILES)
+def test_the_catalogue_says_enough_to_implement_from(profile: str) -> None:
+    """Every entry is described: a newcomer writes a SUT from the catalogue (docs/implementing-a-sut.md)."""
+    contract = load(profile)
+    known = set(load_requirements(ROOT / "docs" / "requirements.md"))
+    raw = contract.raw
+    assert raw.get("title") and raw.get("about"), f"{profile}: title and about"
+    empty = [m for m, note in contract.methods.items() if not note.strip()]
+    assert not empty, f"{profile}: methods without a note: {empty}"
+    for section, entries in contract.names.items():
+        for name, entry in entries.items():
+            assert entry.get("note"), f"{profile}: names.{section}.{name}: no note"
+    for method, keys in (raw.get("answers") or {}).items():
+        for key, note in keys.items():
+            assert note, f"{profile}: answers.{method}.{key}: no description"
+    for kind, ev in contract.events.items():
+        assert ev.source and "#" not in ev.source, f"{profile}: events.{kind}.source"
+        assert ev.when and ev.count, f"{profile}: events.{kind}: when and count"
+        assert ev.requirements and set(ev.requirements) <= known, f"{profile}: events.{kind}.requirements {ev.requirements}"
+        for name, spec in ev.fields.items():
+            assert spec.get("type") and spec.get("note"), f"{profile}: events.{kind}.fields.{name}: type and note"
+
+
+def test_the_step_library_never_reads_a_field_around_the_guard() -> None:
+    """`ev.fields[...]` would bypass the guard's check (and give a KeyError for a missing field)."""
+    offenders = [f"{path.name}:{n}" for path in sorted((ROOT / "steps").glob("*.py"))
+                 for n, line in enumerate(path.read_text(encoding="utf-8").splitlines(), 1)
+                 if re.search(r"\.fields\[", line)]
+    assert not offenders, offenders

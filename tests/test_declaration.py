@@ -1,0 +1,126 @@
+"""Implementation declarations (sut/contract/declaration.py): every mistake is an error naming the file, line
+and key before any scenario runs; the reference's declarations tell the truth about it; a scenario needing an
+option a SUT does not claim is "not applicable", reported apart from pass, fail and skip."""
+from __future__ import annotations
+
+import json
+import subprocess
+import sys
+from pathlib import Path
+
+import pytest
+
+from outline.summary import load_results, summarize
+from sut.contract.declaration import DeclarationError, form, load, of_backend
+from sut.reference.atp.backend import ReferenceAtp
+from sut.reference.crh2.backend import ReferenceTrain
+from sut.reference.metro.backend import ReferenceMetro
+from tests.variants import FREEDOM, IN_BAND
+
+ROOT = Path(__file__).resolve().parents[1]
+
+GOOD_ATP = """\
+sut: vendor
+profiles:
+  atp:
+    options: [vdx-new-firmware]
+    parameters:
+      timing_resolution_us: 1000
+      d_sen_m: 3.0
+      position_uncertainty_m: 5.0
+      decode_delay_ms: 150
+      cfsk_period_ms: 50
+    texts:
+      CFSK fault: CFSK故障
+"""
+
+
+def _write(tmp_path: Path, text: str) -> Path:
+    path = tmp_path / "vendor.yaml"
+    path.write_text(text, encoding="utf-8")
+    return path
+
+
+def test_a_good_declaration_gives_its_options_parameters_and_texts(tmp_path: Path) -> None:
+    atp = load(_write(tmp_path, GOOD_ATP)).of("atp")
+    assert atp.claims("vdx-new-firmware") and not atp.claims("vdx-old-firmware")
+    assert atp.parameter("timing_resolution_us") == 1000
+    assert atp.text("CFSK fault") == "CFSK故障"
+    assert atp.text("DEF fault") == "DEF fault"          # not declared: the message identifier itself
+
+
+@pytest.mark.parametrize(("change", "where", "why"), [
+    (("sut: vendor\n", "sut: vendor\nvendor: x\n"), ":2: vendor:", "unknown key"),
+    (("  atp:\n", "  tram:\n"), ":3: profiles.tram:", "no such profile"),
+    (("[vdx-new-firmware]", "[vdx-newest-firmware]"), ":4: profiles.atp.options.vdx-newest-firmware:", "not an option"),
+    (("      d_sen_m: 3.0\n", "      d_sen_m: 3.0\n      dsen: 3\n"), ":8: profiles.atp.parameters.dsen:", "unknown parameter"),
+    (("d_sen_m: 3.0", "d_sen_m: 300"), ":7: profiles.atp.parameters.d_sen_m:", "out of range: 0..30 (ATP-02)"),
+    (("d_sen_m: 3.0", "d_sen_m: three"), ":7: profiles.atp.parameters.d_sen_m:", "is not a number"),
+    (("timing_resolution_us: 1000", "timing_resolution_us: 0.5"), ":6: profiles.atp.parameters.timing_resolution_us:",
+     "is not an integer"),
+    (("      cfsk_period_ms: 50\n", ""), ":5: profiles.atp.parameters:", "missing needed parameter(s) cfsk_period_ms"),
+    (("CFSK fault: CFSK故障", "CFSK failure: CFSK故障"), ":12: profiles.atp.texts.CFSK failure:", "no such message"),
+    (("CFSK fault: CFSK故障", "CFSK fault: ''"), ":12: profiles.atp.texts.CFSK fault:", "non-empty string"),
+    (("    options: [vdx-new-firmware]\n", "    options: [vdx-new-firmware\n"), ":", "not YAML"),
+])
+def test_every_mistake_names_file_line_and_key(tmp_path: Path, change: tuple[str, str], where: str, why: str) -> None:
+    old, new = change
+    assert old in GOOD_ATP
+    path = _write(tmp_path, GOOD_ATP.replace(old, new))
+    with pytest.raises(DeclarationError) as caught:
+        load(path)
+    message = str(caught.value)
+    assert message.startswith(str(path) + where) and why in message, message
+
+
+def test_a_bad_declaration_stops_the_run_before_any_scenario(tmp_path: Path) -> None:
+    path = _write(tmp_path, GOOD_ATP.replace("d_sen_m: 3.0", "d_sen_m: -1"))
+    run = subprocess.run([sys.executable, "-m", "pytest", "features", "-q", "-p", "no:cacheprovider", "-p", "no:xdist",
+                          "--profile", "atp", f"--declaration={path}"], cwd=ROOT, capture_output=True, text=True)
+    assert run.returncode == 4, run.stdout[-2000:] + run.stderr[-2000:]
+    assert f"{path}:7: profiles.atp.parameters.d_sen_m: -1 m is out of range" in run.stderr
+    assert "passed" not in run.stdout and "failed" not in run.stdout
+
+
+@pytest.mark.parametrize("cls", [ReferenceTrain, ReferenceMetro, ReferenceAtp])
+def test_the_reference_declares_every_profile_it_implements(cls: type) -> None:
+    found = of_backend(cls)
+    assert found is not None and set(cls.PROFILES) <= set(found.profiles)
+    for profile in cls.PROFILES:
+        assert found.of(profile).parameter("timing_resolution_us") == 1     # a simulation in whole microseconds
+
+
+@pytest.mark.parametrize("cls", [c for c in [ReferenceAtp, *IN_BAND, *FREEDOM] if issubclass(c, ReferenceAtp)],
+                         ids=lambda c: c.__name__)
+def test_an_atp_declares_the_parameters_it_has(cls: type) -> None:
+    """The declaration is a claim: the ATP's own figures (rated_limits) must be what it declares, or the
+    features would compute their edges for another train."""
+    declared = of_backend(cls).of("atp")
+    actual = cls().rated_limits()
+    for name in ("d_sen_m", "position_uncertainty_m", "decode_delay_ms", "cfsk_period_ms"):
+        assert declared.parameter(name) == actual[name], f"{cls.__name__} declares {name}={declared.parameter(name)}, " \
+                                                          f"has {actual[name]}"
+
+
+def test_the_form_gives_every_parameter_a_type_unit_and_range() -> None:
+    for profile, section in form().items():
+        for name, spec in section["parameters"].items():
+            assert spec.get("type") and spec.get("unit") and len(spec.get("range", [])) == 2, (profile, name)
+            assert spec.get("requirement") and spec.get("note"), (profile, name)
+
+
+@pytest.mark.cost(8)
+def test_a_scenario_needing_an_undeclared_option_is_not_applicable(tmp_path: Path) -> None:
+    path = _write(tmp_path, GOOD_ATP.replace("    texts:\n      CFSK fault: CFSK故障\n", ""))
+    results = tmp_path / "allure-results"
+    run = subprocess.run([sys.executable, "-m", "pytest", "features", "-q", "-p", "no:cacheprovider", "-p", "no:xdist",
+                          "--item", "F-ATP-06", f"--declaration={path}", f"--alluredir={results}", "-rs"],
+                         cwd=ROOT, capture_output=True, text=True)
+    assert run.returncode == 0, run.stdout[-3000:]
+    assert "not applicable: 4 of the skipped scenarios" in run.stdout
+    assert "does not claim the option vdx-old-firmware" in run.stdout
+    summary = summarize(load_results(results))
+    assert summary.counts["not applicable"] == 4 and summary.counts["passed"] >= 3, summary.counts
+    assert summary.counts["failed"] == 0 and summary.counts["skipped"] == 0, summary.counts
+    categories = json.loads((results / "categories.json").read_text(encoding="utf-8"))
+    assert any(c["name"].startswith("Not applicable") for c in categories)
