@@ -41,7 +41,7 @@ Measured on this machine (2-core AMD EPYC VM, Python 3.11.7, SimPy 4.1.2, 2026-1
   wall second (the model's callbacks cost ~7x the bare ring workload's); peak traced memory 21.5 MB after
   20 s -> ~64 MB per simulated minute, almost all of it the trace list (~370 B per trace event), i.e.
   ~3.9 GB per simulated hour if the trace is kept (long runs use TrainDriver.soak, bench/bulk_bench.py).
-Each run prints its own figures; rerun on a quiet machine before quoting them in DECISIONS.md.
+Each run prints its own figures; rerun on a quiet machine before quoting them in docs/decisions.md.
 """
 from __future__ import annotations
 

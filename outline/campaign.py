@@ -119,7 +119,7 @@ def render(campaign: Campaign, faults: list[Fault], left_out: list[tuple[str, st
         "  each: at the instant of the fault the driver moves the traction notch; the command reaches every CI",
         "  and BCU by the path the design gives that fault, within its bound; no device ever takes a wrong",
         "  notch, and none goes without a command for longer than a takeover takes. Where the fault fails a",
-        "  board its node's CPU3 reports (DECISIONS.md \"Fault records\"), the record is at the master, the",
+        "  board its node's CPU3 reports (docs/decisions.md \"Fault records\"), the record is at the master, the",
         f"  commanding system, within {record_bound(len(shape.nodes))} ms of the fault: two token rounds of "
         f"{len(shape.nodes)} nodes (the request, then",
         "  the grant, PRO-02/04/06), a takeover and the 10 ms before a block.",

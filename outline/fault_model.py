@@ -7,7 +7,7 @@ articles' design, not the reference's code:
   to through such spans;
 - the commanding cab's systems (RED-01/02): system 1 commands while its TXC lives; system 2 takes over when it
   hears nothing from system 1 on the ring, if its TXC lives and it hears the ring at all (sut/reference/
-  DECISIONS.md "Redundancy": a standby deaf to the ring would otherwise take over blindly). Commands enter
+  docs/decisions.md "Redundancy": a standby deaf to the ring would otherwise take over blindly). Commands enter
   the ring where a commanding system's MDM8 lives, and the self-diagnostic line from a commanding TXC;
 - a car (CMD-01..04): path 1 when its LCU hears a commanding system on the ring and its MDM9 lives; path 2
   when it hears one but its MDM9 is dead and its RXC lives; else path 3 when its RXC lives and a commanding
@@ -19,7 +19,7 @@ from dataclasses import dataclass
 from typing import Callable
 
 COMMAND_BOARDS = ("TXC", "RXC")    # boards with their own supply (CMD-01), named <unit>.<board>
-# DECISIONS.md "Fault records": a node's CPU3 writes a record of each of its boards that fails, as block data
+# docs/decisions.md "Fault records": a node's CPU3 writes a record of each of its boards that fails, as block data
 # to the master; a failed CPU3 writes nothing and a failed MDM8 sends nothing, so these are the boards whose
 # failure alone is recorded.
 RECORDED_BOARDS = ("MDM9", "TXC", "RXC")
@@ -128,7 +128,7 @@ class TrainShape:
         return out
 
     def records(self, faults: tuple[Fault, ...] | list[Fault]) -> Records:
-        """Where the fault records the faults make must end up (DECISIONS.md "Block data", "Fault records").
+        """Where the fault records the faults make must end up (docs/decisions.md "Block data", "Fault records").
 
         The master is the commanding cab's master system: system 1, or system 2 once it has taken over; it
         stores records while its CPU3 and MDM8 live. A record is written by the failed board's CPU3 (one
@@ -159,7 +159,7 @@ class _Ring:
     heard_from: Callable[[str], set[str]]
     txc1: bool                  # system 1's TXC lives: it drives the self-diagnostic line
     on_ring1: bool              # and its MDM8 too: system 1 puts commands on the ring
-    takes_over: bool            # system 2 takes over (RED-02, DECISIONS.md: only if it hears the ring)
+    takes_over: bool            # system 2 takes over (RED-02, docs/decisions.md: only if it hears the ring)
     on2: bool                   # system 2's MDM8 lives
 
 

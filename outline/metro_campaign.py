@@ -4,7 +4,7 @@ I/O modules, devices and bus lines, one scenario each, generated from what the S
 `python -m outline campaign` writes it beside the CRH2 campaigns (outline/campaign.py's `run`): it opens the
 metro train through its driver, reads the fault space from it (`devices(car)` for the six cars,
 `boards(unit)`, the buses its backend names) and puts each fault in the Scenario Outline of what the design
-says the train does under it (`expectation`: the articles' and sut/reference/DECISIONS.md's answer, not a
+says the train does under it (`expectation`: the articles' and docs/decisions.md's answer, not a
 recording of the reference), or lists it as left out with the reason. At the instant of the fault the
 driver moves the master controller of cab 1: the campaign checks the way into the degraded mode (a
 takeover, module 2, the other line), not only the mode once settled.
@@ -27,7 +27,7 @@ PCT = 60                       # the master controller's traction demand, moved 
 CAB = 1                                             # the key is in cab 1
 LINES = ("A", "B")                                  # RED-06: WTB and every MVB run lines A and B
 WTB_RANKS = ("car1.CCU", "car2.VCU", "car3.VCU")    # RED-04: WTB master, then its backups in order
-# TCN-02, TCN-04: each unit's MVB is mastered by its cab car's CCU; RED-05 (DECISIONS.md "Masters by rank"):
+# TCN-02, TCN-04: each unit's MVB is mastered by its cab car's CCU; RED-05 (docs/decisions.md "Masters by rank"):
 # when that CCU fails, the VCU next to it takes the MVB, and in the keyed cab's unit the control too.
 MVB1, ACTIVE_CCU, ACTIVE_BACKUP = "unit1.MVB", "car1.CCU", "car2.VCU"
 MVB2, OTHER_CCU, OTHER_BACKUP = "unit2.MVB", "car6.CCU", "car5.VCU"
@@ -43,7 +43,7 @@ MVB_TAKEOVER = 100   # F-CTL-15: the adjacent VCU masters the MVB within 100 ms
 WTB_TAKEOVER = 250   # F-NET-22: a WTB fallback completes within 10 cycles
 # The fault and the move coincide, so after a takeover the new command still has its DELIVERY to go.
 # WINDOW: F-NET-22 and F-CTL-15 watch 1000 ms after a fault; it outlasts the 250 ms gateway and 100 ms VVVF/BECU
-# supervision (DECISIONS.md, TCN-09), so a command lost on the way shows as a brake.
+# supervision (docs/decisions.md, TCN-09), so a command lost on the way shows as a brake.
 WINDOW = 1000
 
 
@@ -148,7 +148,7 @@ def expectation(fault: Fault) -> Group | LeftOut:
         unit = f"{car}.{what}"
         if board in ASIDE_BOARDS:
             return ASIDE                 # the CCU still computes, masters and relays: nothing changes hands
-        # The CCU dead, or cut off from the train by its gateway (DECISIONS.md "Gateway failure"): RED-05 its
+        # The CCU dead, or cut off from the train by its gateway (docs/decisions.md "Gateway failure"): RED-05 its
         # VCU takes the MVB and the control, RED-04 the WTB if it is car 1's.
         if not board or board in VITAL or board == GATEWAY:
             if unit in (ACTIVE_CCU, OTHER_CCU):

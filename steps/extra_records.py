@@ -196,7 +196,7 @@ def _(sut: TrainDriver, t_action: int, device: str, lo: float, hi: float) -> Non
 
 # -- fault records and the maintenance view -------------------------------------------------------------
 def _fault_records(sut: TrainDriver, master: str, node: str) -> list[list[str]]:
-    """Fault records `F|<t ms>|<node>|<board>|<event>` of `node` held at `master` (DECISIONS.md)."""
+    """Fault records `F|<t ms>|<node>|<board>|<event>` of `node` held at `master` (docs/decisions.md)."""
     texts = [r.rstrip(b"\0").decode("ascii", "replace") for r in sut.block_store(master).get(node, [])]
     return [t.split("|") for t in texts if t.startswith("F|")]
 

@@ -116,7 +116,7 @@ def test_ten_minutes_with_faults_and_commands_agree_both_ways() -> None:
 
 @pytest.mark.cost(10)
 def test_a_pending_one_shot_timer_is_not_jumped_over() -> None:
-    # The neutral-section entry supervision runs a one-shot timeout (DECISIONS.md): it must fire on time.
+    # The neutral-section entry supervision runs a one-shot timeout (docs/decisions.md): it must fire on time.
     def script(train: ReferenceTrain, run) -> None:
         train.set_input("neutral section signal", "warning")
         run(2 * MIN)

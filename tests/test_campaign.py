@@ -101,7 +101,7 @@ def test_the_fault_model_answers_double_faults_as_the_articles_do(eight_cars) ->
     assert _paths(shape, _span("car1.CCU.sys1", "car1.CCU.sys2"), _span("car5.LCU", "car6.LCU")) == "11111111"
     # Both modems of the cab: nothing enters the ring, system 1's TXC still drives the self-diagnostic line.
     assert _paths(shape, _board("car1.CCU.sys1.MDM8"), _board("car1.CCU.sys2.MDM8")) == "33333333"
-    # DECISIONS.md: a standby deaf to the ring does not take over, so with system 1's TXC dead nothing commands.
+    # docs/decisions.md: a standby deaf to the ring does not take over, so with system 1's TXC dead nothing commands.
     assert _paths(shape, _board("car1.CCU.sys1.TXC"), _board("car1.CCU.sys2.MDM8")) == "--------"
     # CMD-03 and CMD-01: a car without its MDM9 and its RXC has no path left; the others ride on.
     assert _paths(shape, _board("car5.LCU.MDM9"), Fault("supply", ("car5.LCU.RXC",))) == "1111-111"
@@ -166,7 +166,7 @@ def test_a_record_after_a_takeover_is_looked_for_at_system_2_within_two_token_ro
     assert "| car1.CCU.sys1.TXC | car1.CCU.sys1 | TXC  |" in outline
 
 
-# -- fault records under two faults (outline/fault_model.py TrainShape.records), read off DECISIONS.md ----------
+# -- fault records under two faults (outline/fault_model.py TrainShape.records), read off docs/decisions.md ----------
 def test_the_fault_records_of_a_double_fault_are_read_off_the_decisions(eight_cars) -> None:
     shape = TrainShape.of(eight_cars)
     sys1, sys2 = "car1.CCU.sys1", "car1.CCU.sys2"

@@ -62,7 +62,7 @@ def test_every_fault_the_driver_names_is_a_row_or_left_out_with_a_reason(metro, 
     ("device", ("car1.VATC",), ASIDE),
     ("device", ("car4.VVVF",), DEAD_DRIVE),            # left out: no network makes a dead drive pull
     ("device", ("car1.BECU",), DEAD_BRAKE),
-    ("board", ("car6.CCU.VGWS",), OTHER_LOST),         # cut off from the train: as a dead CCU (DECISIONS.md)
+    ("board", ("car6.CCU.VGWS",), OTHER_LOST),         # cut off from the train: as a dead CCU (docs/decisions.md)
     ("board", ("car1.CCU.VGWS",), ACTIVE_LOST),
 ])
 def test_each_fault_gets_the_designs_answer(kind: str, name: tuple[str, ...], answer) -> None:

@@ -249,7 +249,7 @@ def test_bad_fields_are_named(make, message):
 
 @pytest.mark.parametrize("f_code", [5, 6, 7, 10, 11])
 def test_a_reserved_f_code_with_a_good_check_sequence_decodes_as_a_reserved_frame(f_code):
-    # sut/reference/DECISIONS.md: an analyser names it (as the io4edge MVB sniffer's kReserved types do),
+    # docs/decisions.md: an analyser names it (as the io4edge MVB sniffer's kReserved types do),
     # a device ignores it: no slave frame answers it.
     head = bytes([f_code << 4, 0x01])
     frame = decode_master(head + bytes([check_sequence(head)]))

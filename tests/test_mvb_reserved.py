@@ -1,4 +1,4 @@
-"""MVB reserved F_codes (5-7, 10-11; sut/reference/DECISIONS.md): the suite's analyser names a master frame
+"""MVB reserved F_codes (5-7, 10-11; docs/decisions.md): the suite's analyser names a master frame
 with one, the metro reference's devices ignore it, and the features reject a master that polls with one."""
 from __future__ import annotations
 

@@ -512,7 +512,7 @@ class MainCircuitResetsItself(ReferenceTrain):
 
 
 class BrakeForceTripClearsItself(ReferenceTrain):
-    """ILK-03 (latched trip, DECISIONS.md): the emergency brake for insufficient brake force releases by
+    """ILK-03 (latched trip, docs/decisions.md): the emergency brake for insufficient brake force releases by
     itself two minutes after it tripped."""
     BEHAVIOUR = {"brake_force_trip_clears_us": 120_000_000}
 
@@ -573,7 +573,7 @@ class _KeepsTheMvbWithoutAGateway(ControlUnit):
 
 
 class GatewaylessCcuKeepsItsMvb(ReferenceMetro):
-    """RED-05 (DECISIONS.md "Gateway failure"): a CCU whose gateway failed keeps mastering its unit's MVB,
+    """RED-05 (docs/decisions.md "Gateway failure"): a CCU whose gateway failed keeps mastering its unit's MVB,
     so the unit is cut off from the train's command; in the other unit the command stops and the train
     brakes. No hand-written item fails a gateway alone for long: only the campaign (F-NET-34) sees it."""
 
@@ -777,7 +777,14 @@ class ChineseDmiAtp(ReferenceAtp):
         return {**shown, "faults": faults}
 
 
+class TaskTickVdx(ReferenceAtp):
+    """Freedom (timing resolution): a VDX on a 1 ms task tick, declared so: its self-test comes every
+    5000.7 ms, pulls the output low for 3.4 ms and samples it 1.6 ms in, each less than a tick off VDX-03."""
+    VDX = {"selftest_period_us": 5000 * MS + 700, "selftest_removal_us": 3 * MS + 400, "sample_at_us": 1 * MS + 600}
+    DECLARATION = "tests/declarations/task-tick-vdx.yaml"
+
+
 IN_BAND += [AnotherCoil, AnotherAtpRig]
 # Design freedoms a conforming product may take (issue 30), each with its own declaration: the whole suite
 # must accept them, as the in-band variants.
-FREEDOM = [ChineseDmiAtp]
+FREEDOM = [ChineseDmiAtp, TaskTickVdx]

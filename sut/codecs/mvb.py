@@ -42,7 +42,7 @@ class DataClass(Enum):
     PROCESS = "process data"            # cyclic, sent on the master's poll of a logical address
     MESSAGE = "message data"            # numbered packets the destination acknowledges
     SUPERVISORY = "supervisory data"    # device status, master transfer, event arbitration
-    RESERVED = "reserved"               # F_code 5-7 and 10-11: no slave answers (sut/reference/DECISIONS.md)
+    RESERVED = "reserved"               # F_code 5-7 and 10-11: no slave answers (docs/decisions.md)
 
 
 class FCode(NamedTuple):

@@ -1,5 +1,6 @@
-"""python -m sut.contract check|update RECORD...: hold a run's record (pytest features --contract-record RECORD)
-against the catalogue, or refresh the catalogue's read_by lists from it."""
+"""python -m sut.contract check|update RECORD... | render: hold a run's record (pytest features --contract-record
+RECORD) against the catalogue, refresh the catalogue's read_by lists from it, or write docs/implementing-a-sut.md
+from the catalogue and the declaration form."""
 from __future__ import annotations
 
 import argparse
@@ -11,10 +12,16 @@ from sut.contract.record import merge, problems, update
 
 def main(argv: list[str] | None = None) -> int:
     parser = argparse.ArgumentParser(prog="python -m sut.contract", description=__doc__)
-    parser.add_argument("command", choices=("check", "update"))
-    parser.add_argument("record", nargs="+", type=Path, help="the --contract-record FILE of a run (FILE.<worker> too)")
+    parser.add_argument("command", choices=("check", "update", "render"))
+    parser.add_argument("record", nargs="*", type=Path, help="the --contract-record FILE of a run (FILE.<worker> too)")
     parser.add_argument("--profile", action="append", default=[], help="only these profiles (default: all recorded)")
     args = parser.parse_args(argv)
+    if args.command == "render":
+        from sut.contract.render import write
+        print(f"wrote {write()}")
+        return 0
+    if not args.record:
+        parser.error(f"{args.command} needs the record of a run (pytest features --contract-record FILE)")
     record = merge(args.record)
     if not record:
         print(f"no record found at {', '.join(map(str, args.record))}", file=sys.stderr)

@@ -1,7 +1,7 @@
 """A small discrete-event kernel in integer microseconds (SimPy-shaped, no wall clock).
 
 Why our own and not SimPy: `bench/kernel_bench.py` runs the same ring load on both (figures in
-DECISIONS.md). SimPy is no faster, and ours keeps what the model needs that SimPy does not give directly:
+docs/decisions.md). SimPy is no faster, and ours keeps what the model needs that SimPy does not give directly:
 integer microseconds end to end, cancellable timers (token watchdogs are re-armed on every status frame),
 and one place to add bulk advance. Processes that read like behaviour can still be generators: they
 `yield` a delay in microseconds or a `Signal` to wait for.

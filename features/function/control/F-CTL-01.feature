@@ -3,7 +3,7 @@ Feature: F-CTL-01 Traction/brake command transmission at every notch and brake s
   Requirements: CMD-02 (primary), CMD-05, PRO-01, TST-04, TST-05.
   The function-level form of the routine item R-CTL-01: every traction notch (1-10) and every service brake
   step (1-7) set on the desk of the key-inserted cab reaches every CI and BCU over path 1 (MDM9, HDLC over
-  fibre) with full resolution, within the project's desk-to-CI bound of 40 ms (DECISIONS.md, "Command paths"),
+  fibre) with full resolution, within the project's desk-to-CI bound of 40 ms (docs/decisions.md, "Command paths"),
   and the commands on the ring keep PRO-01's interval and delay.
 
   Background:

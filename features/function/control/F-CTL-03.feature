@@ -5,7 +5,7 @@ Feature: F-CTL-03 Backup transmission of running control commands
   traction and brake commands still reach CI and BCU: a car whose MDM9 has failed switches to path 2 (RXC
   digital outputs, A/B steps) while the other cars stay on path 1; with the ring down every car runs on
   path 3 (self-diagnostic line); a dead CCU system 1 is replaced by system 2 within RED-02's 50 ms. The
-  A/B mapping of notches and steps and the 80 ms path-3 fallback are project decisions (DECISIONS.md).
+  A/B mapping of notches and steps and the 80 ms path-3 fallback are project decisions (docs/decisions.md).
 
   Background:
     Given an 8-car CRH2 train set

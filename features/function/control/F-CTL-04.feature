@@ -5,7 +5,7 @@ Feature: F-CTL-04 Remote cut-out command transmission
   the car's LCU, which opens that CI's input contactor and blocks its gate pulses; the other converters stay
   in, the traction commands keep flowing, and the monitor shows the cut-out. Ordering "in" brings the CI
   back. An equipment order is applied within one status cycle and displayed within two: 300 ms
-  (DECISIONS.md, "Display, orders, records").
+  (docs/decisions.md, "Display, orders, records").
 
   Background:
     Given an 8-car CRH2 train set

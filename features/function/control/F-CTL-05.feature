@@ -4,7 +4,7 @@ Feature: F-CTL-05 Tertiary power-supply switching
   The auxiliary supply of a traction unit comes from its transformer's tertiary winding. When the unit's VCB
   opens, by a protection trip (ILK-06) or by an order from the monitor, its auxiliary supply is switched to
   the other unit's ("extended") within 150 ms of the VCB opening; with both VCBs open there is none. The
-  switching rule and the 150 ms bound are the project's (DECISIONS.md, "Display, orders, records").
+  switching rule and the 150 ms bound are the project's (docs/decisions.md, "Display, orders, records").
 
   Background:
     Given an 8-car CRH2 train set

@@ -5,7 +5,7 @@ Feature: F-CTL-06 No-power (neutral) section passing control
   (no CI receives a notch above 0 from 40 ms on) and opens both VCBs before the section; traction stays off
   through the section; the exit signal closes the VCBs and the driver's notch reaches every CI again within
   40 ms without the driver touching the controller. A faulty warning signal makes the entry signal force the
-  same passing (ILK-04). The 40 ms bound is the project's desk-to-CI bound (DECISIONS.md).
+  same passing (ILK-04). The 40 ms bound is the project's desk-to-CI bound (docs/decisions.md).
 
   Background:
     Given an 8-car CRH2 train set

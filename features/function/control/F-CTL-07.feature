@@ -4,7 +4,7 @@ Feature: F-CTL-07 Pantograph raise/lower command
   A pantograph lowered or raised from the cab monitor: the order reaches the traction unit within one status
   cycle; the unit's VCB opens no later than its pantograph comes down (no current is broken at the
   pantograph) and closes again after it is raised; the unit's converters drop out with its VCB, the other
-  unit is untouched, and the monitor shows the pantograph's state within 300 ms (DECISIONS.md).
+  unit is untouched, and the monitor shows the pantograph's state within 300 ms (docs/decisions.md).
   # why: Raising and lowering the pantographs of each traction unit from the active cab is a basic remote control command of a CRH2 EMU, carried over the network like the converter cut-out.
 
   Background:

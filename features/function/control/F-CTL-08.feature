@@ -2,7 +2,7 @@
 Feature: F-CTL-08 Main circuit breaker (VCB) open/close command
   Requirements: TST-05 (primary), TST-04.
   The VCB of one traction unit opened and closed from the cab monitor: the order is applied within one status
-  cycle and shown within two (300 ms, DECISIONS.md); opening a unit's VCB drops the input contactors and gate
+  cycle and shown within two (300 ms, docs/decisions.md); opening a unit's VCB drops the input contactors and gate
   pulses of that unit's converters and no others; closing it brings them back. The pantographs stay up.
   # why: Opening and closing each unit's main circuit breaker from the active cab is the everyday main-circuit control of a CRH2 EMU that the network carries besides traction and brake.
 

@@ -3,7 +3,7 @@ Feature: F-CTL-09 Air compressor control by main air pipe pressure
   Requirements: TST-05 (primary), TST-04.
   The compressor governor: the main air compressor starts when the main air pipe pressure falls below
   780 kPa and stops when it reaches 880 kPa; in between it keeps its state (hysteresis). The articles give
-  no figures; 780/880 kPa are the project's (DECISIONS.md, "Display, orders, records"), so every scenario is
+  no figures; 780/880 kPa are the project's (docs/decisions.md, "Display, orders, records"), so every scenario is
   tentative. Each edge is checked on a ramp of 50 kPa per second: the switching pressure must lie within
   10 kPa on the right side of the edge, and the edge itself must not switch.
   # why: Keeping the main air supply between its limits is an automatic control the CRH2 network performs and shows on the monitor, and every brake command depends on it.

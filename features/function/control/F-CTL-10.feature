@@ -2,7 +2,7 @@
 Feature: F-CTL-10 Door open/close command
   Requirements: ILK-05 (primary), ILK-08, TST-05, TST-04.
   The side doors follow the driver's door command only while the door-open safety relay acts, i.e. below
-  5 km/h (ILK-05; the band is 4..5 km/h, DECISIONS.md); open doors block traction unless the door-interlock
+  5 km/h (ILK-05; the band is 4..5 km/h, docs/decisions.md); open doors block traction unless the door-interlock
   bypass switch is on (ILK-08); closing them gives the driver's notch back. The monitor shows the doors'
   state within the display bound of 150 ms.
   # why: Opening and closing the side doors at a stop, interlocked with speed and traction, is one of the control commands the CRH2 network carries and displays on every trip.

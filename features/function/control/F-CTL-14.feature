@@ -3,7 +3,7 @@ Feature: F-CTL-14 Main circuit reset after a protection trip
   Requirements: ILK-06 (primary), TST-05, TST-04.
   A main circuit protection trip (ILK-06) latches: the VCB and the converters stay off after the fault has
   gone, and the monitor keeps the message, until the driver resets the main circuit. A reset while the fault
-  persists does nothing, and neither does a VCB order from the monitor (DECISIONS.md, "The vehicle").
+  persists does nothing, and neither does a VCB order from the monitor (docs/decisions.md, "The vehicle").
   # why: After a protection trip the driver must be able to restore the main circuit from the cab, and only once the fault is gone, or a CRH2 EMU could not run on after a transient fault.
 
   Background:

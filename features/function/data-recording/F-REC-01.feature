@@ -2,7 +2,7 @@
 Feature: F-REC-01 A board failure is recorded at the master node as a fault record
   Requirements: PRO-06 (primary), TST-04.
   When an LCU detects a failed board, its CPU3 writes a fault record and sends it as block data (PRO-06)
-  to the master node, car 1's CCU system 1 (DECISIONS.md, "Fault records"); the record read back there
+  to the master node, car 1's CCU system 1 (docs/decisions.md, "Fault records"); the record read back there
   names the node, the board and the event, and carries the time it happened. Block data waits for a grant
   (at most one 120 ms status cycle), so 1 s is ample.
 

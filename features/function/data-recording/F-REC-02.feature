@@ -2,7 +2,7 @@
 Feature: F-REC-02 A recovered board writes a "recovered" record
   Requirements: PRO-06 (primary), TST-04.
   A board that comes back writes a second record, "recovered", beside the "failed" one; every record has
-  its own number, so several records of one node are kept apart (DECISIONS.md, "Fault records").
+  its own number, so several records of one node are kept apart (docs/decisions.md, "Fault records").
 
   Background:
     Given an 8-car CRH2 train set

@@ -2,7 +2,7 @@
 Feature: F-DIA-01 Optical transmission diagnosis on the cab monitor
   Requirements: NET-03 (primary), TST-04.
   A cut optical link is reported in the status data of the nodes beside it and shown on the cab monitor
-  within the display bound of 150 ms (DECISIONS.md); with one link fault every node still reaches every
+  within the display bound of 150 ms (docs/decisions.md); with one link fault every node still reaches every
   other (NET-03), so nothing else is shown. After the link is restored the ring re-forms its token and
   the report clears within two status cycles (300 ms). A healthy train shows no fault at all.
 

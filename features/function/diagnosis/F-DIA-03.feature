@@ -3,7 +3,7 @@ Feature: F-DIA-03 Main circuit protection and insufficient brake force shown on 
   Requirements: ILK-06 (primary), ILK-03, TST-04.
   Protection that acts is shown on the cab monitor: main circuit protection of a traction unit (ILK-06;
   it acts within 100 ms and is shown within the 150 ms display bound: 250 ms) and insufficient brake force
-  (ILK-03; the project's definition is below 50 % of the demand for 500 ms, DECISIONS.md: shown within
+  (ILK-03; the project's definition is below 50 % of the demand for 500 ms, docs/decisions.md: shown within
   650 ms). The report stays while the protection is latched and goes when the driver resets it; a shorter
   loss of brake force raises nothing.
 

@@ -3,7 +3,7 @@ Feature: F-DSP-01 Status data of every node reaches both cab monitors
   Requirements: PRO-02 (primary), TST-04.
   Every node broadcasts its status data under token control once per 120 ms status cycle, and both cab
   monitors take what they display from it, whichever cab has the key. The function test allows the display
-  bound of 150 ms (DECISIONS.md, "Display") between two status frames of any node at either monitor.
+  bound of 150 ms (docs/decisions.md, "Display") between two status frames of any node at either monitor.
 
   @req:PRO-02 @req:TST-04
   Scenario Outline: F-DSP-01 With the key in cab <cab> both monitors hear every node at least every 150 ms

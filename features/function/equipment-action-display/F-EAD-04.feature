@@ -2,7 +2,7 @@
 Feature: F-EAD-04 Air compressor on the cab monitor
   Requirements: TST-04 (primary).
   The compressor governor starts the air compressor below 780 kPa main air pipe pressure and stops it at
-  880 kPa (DECISIONS.md, hence tentative). The monitor shows the compressor running or stopped within the
+  880 kPa (docs/decisions.md, hence tentative). The monitor shows the compressor running or stopped within the
   display bound of 150 ms of the change, and shows no start while the pressure stays in the band.
 
   Background:

@@ -4,7 +4,7 @@ Feature: F-IDI-02 Current-loop devices polled at their own periods, simple devic
   The air-conditioning setter (ACS), passenger information display (PID) and auxiliary power unit (APU)
   hang on 20 mA or 30 mA current loops and are polled at periods of their own; the side destination
   display (SDD) and the distance detector (DD) are one-way (NET-09). The article gives neither periods
-  nor which loop each device uses: the figures are the project's (DECISIONS.md, "Vehicle level"): ACS
+  nor which loop each device uses: the figures are the project's (docs/decisions.md, "Vehicle level"): ACS
   every 100 ms and PID every 200 ms on 20 mA, APU (cars 2, 4, 6) every 50 ms on 30 mA, SDD fed every 1 s,
   DD (cab cars) reporting every 100 ms.
 

@@ -3,7 +3,7 @@ Feature: F-IDI-03 The RXC's digital outputs to CI and BCU carry only steps A and
   Requirements: CMD-03 (primary), CMD-04, TST-04.
   When a car's MDM9 has failed, its RXC drives CI and BCU through digital outputs (path 2), which carry
   only traction steps A/B and brake steps A/B (CMD-03); the same outputs serve path 3 (CMD-04). The
-  mapping is the project's (DECISIONS.md): notch 1-5 -> A, 6-10 -> B; brake step 1-4 -> A, 5-7 and
+  mapping is the project's (docs/decisions.md): notch 1-5 -> A, 6-10 -> B; brake step 1-4 -> A, 5-7 and
   emergency -> B; both edges of each step are tested. Path 2 is in use within 30 ms of a notch change
   (one 10 ms command interval, 15 ms on the ring, the 20 mA loop).
 

@@ -2,7 +2,7 @@
 Feature: F-MNT-01 The maintenance view lists each fault with its node and board
   Requirements: TST-04 (primary), PRO-06.
   The maintenance view (fault history) of the cab monitor lists the fault records held at the master node,
-  one line per record, as "<time> ms <node>.<board> <event>" (DECISIONS.md, "Fault records"). The records
+  one line per record, as "<time> ms <node>.<board> <event>" (docs/decisions.md, "Fault records"). The records
   come as block data (PRO-06), so the scenarios allow 1 s.
 
   Background:

@@ -2,7 +2,7 @@
 Feature: F-MNT-02 Faults and recoveries listed in the order they happened
   Requirements: TST-04 (primary), PRO-06.
   The maintenance view lists the fault history oldest first by the time each fault or recovery happened,
-  not by when its record reached the master (DECISIONS.md, "Fault records"). The first scenario makes the
+  not by when its record reached the master (docs/decisions.md, "Fault records"). The first scenario makes the
   two orders differ: car 3's record, written 20 ms after car 6's, reaches the master first because car 3
   gets the token first.
 

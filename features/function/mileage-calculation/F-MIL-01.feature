@@ -2,7 +2,7 @@
 Feature: F-MIL-01 Mileage at constant speed
   Requirements: TST-04 (primary).
   Mileage is speed integrated over time; at a constant speed it is speed x time. Accuracy rule of the
-  suite (DECISIONS.md): +-0.1 % or +-1 m, whichever is larger; each scenario checks both edges of that
+  suite (docs/decisions.md): +-0.1 % or +-1 m, whichever is larger; each scenario checks both edges of that
   band, once where the 1 m floor governs and once where the 0.1 % does.
 
   Background:

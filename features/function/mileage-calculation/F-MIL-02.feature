@@ -2,7 +2,7 @@
 Feature: F-MIL-02 Mileage while the speed changes linearly
   Requirements: TST-04 (primary).
   Under a linear speed change the distance is the mean speed x time (exact for linear pieces,
-  DECISIONS.md). Accuracy rule of the suite: +-0.1 % or +-1 m, whichever is larger (here the 1 m floor);
+  docs/decisions.md). Accuracy rule of the suite: +-0.1 % or +-1 m, whichever is larger (here the 1 m floor);
   each scenario checks both edges of the band.
 
   Background:

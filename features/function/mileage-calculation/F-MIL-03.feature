@@ -3,7 +3,7 @@ Feature: F-MIL-03 Standstill adds no mileage, and the cab monitor displays the m
   Requirements: TST-04 (primary).
   The mileage stands still when the train does. The monitor displays the mileage from car 1's LCU status
   data, so while the train moves the displayed value may lag by one status cycle: the display bound is
-  150 ms (DECISIONS.md), and the band allows the distance covered in 150 ms below the true value on top
+  150 ms (docs/decisions.md), and the band allows the distance covered in 150 ms below the true value on top
   of the accuracy rule (+-0.1 % or +-1 m, whichever is larger). At standstill the display must be exact
   to the accuracy rule.
 

@@ -3,7 +3,7 @@ Feature: F-NET-09 Vehicle-level links: polled HDLC to CI and BCU, current loops 
   Requirements: NET-09 (primary), TST-04.
   CI and BCU are polled every 10 ms over fibre HDLC. Air-conditioning setter, passenger information
   display and auxiliary power unit are polled over 20 mA / 30 mA loops at periods of their own (the
-  article gives none: DECISIONS.md); simple devices are one-way.
+  article gives none: docs/decisions.md); simple devices are one-way.
 
   Background:
     Given an 8-car CRH2 train set

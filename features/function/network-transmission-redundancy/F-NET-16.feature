@@ -2,7 +2,7 @@
 Feature: F-NET-16 Control command paths 1, 2 and 3
   Requirements: CMD-02 (primary), CMD-01, CMD-03, CMD-04, TST-04.
   Commands bypass CPU3 (TXC -> MDM8 -> MDM8 -> MDM9/RXC). Path 1 carries full notches; paths 2 and 3
-  only the A/B steps. Path 2 is chosen by a failed MDM9 (DECISIONS.md: the article's "MDM8 fails" cannot
+  only the A/B steps. Path 2 is chosen by a failed MDM9 (docs/decisions.md: the article's "MDM8 fails" cannot
   mean the MDM8 that path 2 itself runs through).
 
   Background:

@@ -5,7 +5,7 @@ Feature: F-NET-24 MVB frames and data classes on the wire
   F_code, address and check sequence; slave frames of the size the F_code asks, a check sequence after
   16, 32 or 64 bits and after every 64 bits beyond. A frame that does not decode fails the item, so a SUT
   with its own check-sequence layout is rejected even if it understands itself; so does a master frame with
-  a reserved F_code (5-7, 10-11), or a slave frame answering one (sut/reference/DECISIONS.md).
+  a reserved F_code (5-7, 10-11), or a slave frame answering one (docs/decisions.md).
 
   Background:
     Given a 6-car metro train with its train control and diagnosis system

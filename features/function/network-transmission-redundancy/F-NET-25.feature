@@ -1,7 +1,7 @@
 @item:F-NET-25 @profile:metro-tcn @req:TST-04
 Feature: F-NET-25 Train network failure: brake to a stop, then hard-wired emergency operation
   Requirements: TCN-09 (primary), RED-06, TST-04.
-  Decision (sut/reference/DECISIONS.md "Metro TCDS"): the article allows braking to a stop or emergency
+  Decision (docs/decisions.md "Metro TCDS"): the article allows braking to a stop or emergency
   operation; a train whose network has failed is not under control, so it is first braked to a stop, and
   hard-wired emergency operation is taken only at standstill. Bound chosen by the suite: the brake is
   applied within 500 ms of the loss.

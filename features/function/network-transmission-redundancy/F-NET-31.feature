@@ -7,7 +7,7 @@ Feature: F-NET-31 Single-fault campaign, two coupled 8-car sets
   each: at the instant of the fault the driver moves the traction notch; the command reaches every CI
   and BCU by the path the design gives that fault, within its bound; no device ever takes a wrong
   notch, and none goes without a command for longer than a takeover takes. Where the fault fails a
-  board its node's CPU3 reports (DECISIONS.md "Fault records"), the record is at the master, the
+  board its node's CPU3 reports (docs/decisions.md "Fault records"), the record is at the master, the
   commanding system, within 590 ms of the fault: two token rounds of 24 nodes (the request, then
   the grant, PRO-02/04/06), a takeover and the 10 ms before a block.
   Not in the campaign:

@@ -7,10 +7,10 @@ Feature: F-NET-33 Double-fault campaign, two coupled 8-car sets
   on request (`--item F-NET-33`, `make campaign`). At the instant of the faults the driver moves the
   traction notch; column `paths` gives, car 1 first, the path by which that car's CI and BCU must then take
   the command (1, 2 or 3; - where the pair leaves the car no path: then the command must not reach it),
-  as outline/fault_model.py derives it from the articles and DECISIONS.md's takeover rule (a standby
+  as outline/fault_model.py derives it from the articles and docs/decisions.md's takeover rule (a standby
   system deaf to the ring does not take over). Whatever the path, no device ever takes a wrong notch.
   Where a fault fails a board its node's CPU3 reports and that CPU3 and its MDM8 live on, heard by a master
-  able to store it (DECISIONS.md "Block data", "Fault records"), the record must be at the master
+  able to store it (docs/decisions.md "Block data", "Fault records"), the record must be at the master
   (`master`) within 2050 ms of the faults, 3020 ms for two records: the token lost
   and formed again (PRO-05, PRO-03), then per record two rounds of a ring broken to a line (PRO-04), the
   block (PRO-06) and a takeover. Records are not looked for:

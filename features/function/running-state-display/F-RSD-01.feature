@@ -2,7 +2,7 @@
 Feature: F-RSD-01 Train speed on the cab monitor within 150 ms and +-0.5 km/h
   Requirements: TST-04 (primary), PRO-02.
   Car 1's LCU puts the train speed in its status data; the cab monitor displays it within the display
-  bound of 150 ms (one 120 ms status cycle, PRO-02, plus holding time and ring latency, DECISIONS.md)
+  bound of 150 ms (one 120 ms status cycle, PRO-02, plus holding time and ring latency, docs/decisions.md)
   and within +-0.5 km/h of the train speed, rising or falling, at a standstill and while accelerating.
 
   Background:

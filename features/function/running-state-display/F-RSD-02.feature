@@ -2,7 +2,7 @@
 Feature: F-RSD-02 Traction notch, brake step and direction on the cab monitor within 200 ms
   Requirements: CMD-05 (primary), PRO-01, PRO-02, TST-04.
   The driver's controller sets direction, traction notch and brake step; the commanding CCU broadcasts
-  them (PRO-01) and the running state on the monitor is what car 1's LCU received (DECISIONS.md,
+  them (PRO-01) and the running state on the monitor is what car 1's LCU received (docs/decisions.md,
   "Display"). A desk change reaches car 1's LCU within one command interval plus the ring delay and is
   displayed with the next status data: the function test allows 200 ms (10 + 15 + 150, rounded up).
 

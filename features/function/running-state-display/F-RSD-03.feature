@@ -2,9 +2,9 @@
 Feature: F-RSD-03 The running state displayed is what the network delivered, not the desk setting
   Requirements: ILK-08 (primary), FS-03, TST-04.
   The monitor shows the traction notch, brake step and direction that car 1's LCU last received over the
-  ring (DECISIONS.md, "Display"), so it shows what the cars were told: a notch the interlocks suppressed
+  ring (docs/decisions.md, "Display"), so it shows what the cars were told: a notch the interlocks suppressed
   is shown as 0, an ATP brake as the full-service step 7, and a dead desk input supply as the safe state
-  (FS-03: brake step 7, neutral). The figures are the project's decisions (DECISIONS.md), hence tentative.
+  (FS-03: brake step 7, neutral). The figures are the project's decisions (docs/decisions.md), hence tentative.
 
   Background:
     Given an 8-car CRH2 train set

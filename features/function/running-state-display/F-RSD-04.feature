@@ -4,7 +4,7 @@ Feature: F-RSD-04 Mileage on the cab monitor
   The mileage (the speed integrated over time) travels in car 1's LCU status data and is displayed on both
   monitors in km with 1 m resolution. After the train stops, the displayed mileage settles within 150 ms
   on the distance run, within the suite's accuracy rule (+-0.1 % or +-1 m, whichever is larger,
-  DECISIONS.md), and does not change while the train stands.
+  docs/decisions.md), and does not change while the train stands.
 
   Background:
     Given an 8-car CRH2 train set

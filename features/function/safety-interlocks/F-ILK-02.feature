@@ -4,7 +4,7 @@ Feature: F-ILK-02 Low main air pipe pressure: emergency and rapid brake, anywher
   Below the set point (590 +/- 10) kPa the emergency and rapid-brake magnet valves de-energise. A
   conforming train trips anywhere in 580..600 kPa: never above 600, always by 580. Once tripped it stays
   tripped until the pressure is back above 600 kPa and releases by 640 kPa (the project's hysteresis rule,
-  DECISIONS.md), so the valves do not chatter inside the band.
+  docs/decisions.md), so the valves do not chatter inside the band.
 
   Background:
     Given an 8-car CRH2 train set

@@ -1,7 +1,7 @@
 @item:F-ILK-03 @profile:crh2 @req:TST-04
 Feature: F-ILK-03 Insufficient brake force applies the emergency and the rapid brake
   Requirements: ILK-03 (primary), TST-04.
-  "Insufficient" is the project's definition (DECISIONS.md): a car's brake force below 50 % of the demand
+  "Insufficient" is the project's definition (docs/decisions.md): a car's brake force below 50 % of the demand
   for 500 ms while a brake is demanded.
 
   Background:

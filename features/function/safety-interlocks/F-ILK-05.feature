@@ -1,7 +1,7 @@
 @item:F-ILK-05 @profile:crh2 @req:TST-04
 Feature: F-ILK-05 Doors: pressed airtight above 30 km/h, opened only below 5 km/h
   Requirements: ILK-05 (primary), TST-04.
-  Speed bands (DECISIONS.md): the press-seal valve energises above 30 km/h and by 32 km/h; the door-open
+  Speed bands (docs/decisions.md): the press-seal valve energises above 30 km/h and by 32 km/h; the door-open
   safety relay acts below 5 km/h and by 4 km/h, never at 5 km/h or more.
 
   Background:

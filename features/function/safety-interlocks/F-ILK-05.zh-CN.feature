@@ -2,7 +2,7 @@
 @item:F-ILK-05 @profile:crh2 @req:TST-04
 功能: F-ILK-05 车门:速度30 km/h以上压紧气密,低于5 km/h才能开门
   功能试验,安全联锁。需求:ILK-05(主)、TST-04。
-  速度区间(DECISIONS.md):押紧电磁阀在30 km/h以上、最迟32 km/h时励磁;开门安全继电器在低于5 km/h、
+  速度区间(docs/decisions.md):押紧电磁阀在30 km/h以上、最迟32 km/h时励磁;开门安全继电器在低于5 km/h、
   最迟4 km/h时动作,5 km/h及以上绝不动作。
 
   背景:

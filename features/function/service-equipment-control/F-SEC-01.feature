@@ -2,7 +2,7 @@
 Feature: F-SEC-01 Air conditioning switched per car from the cab monitor
   Requirements: TST-04 (primary).
   An order given on the commanding cab's monitor rides in the CCU's status data to the car's LCU: it is
-  applied within one status cycle and displayed within two (DECISIONS.md; the features allow 300 ms for
+  applied within one status cycle and displayed within two (docs/decisions.md; the features allow 300 ms for
   both). Only the ordered car changes; the other cars' air conditioning is untouched.
 
   Background:

@@ -2,7 +2,7 @@
 Feature: F-SEC-02 Lighting and passenger information ordered from the cab monitor
   Requirements: TST-04 (primary).
   Lighting is switched per car, the passenger information message for the whole train. As for every
-  monitor order (DECISIONS.md), the order is applied within one status cycle and displayed within two
+  monitor order (docs/decisions.md), the order is applied within one status cycle and displayed within two
   (features: 300 ms); equipment that was not ordered is untouched.
 
   Background:

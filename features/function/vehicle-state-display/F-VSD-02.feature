@@ -4,7 +4,7 @@ Feature: F-VSD-02 VCB state on the cab monitor after a transformer earth fault
   A secondary or tertiary earth fault of a traction unit's transformer opens that unit's VCB (ILK-06). The
   monitor shows the open VCB within 150 ms, the other unit's VCB stays displayed closed, and the protection
   alarm is shown. Latching until the driver resets the main circuit and the extension supply of the
-  auxiliary circuit are the project's decisions (DECISIONS.md), hence tentative.
+  auxiliary circuit are the project's decisions (docs/decisions.md), hence tentative.
 
   Background:
     Given an 8-car CRH2 train set

@@ -2,7 +2,7 @@
 Feature: F-VSD-04 Air conditioning and lighting state on the cab monitor
   Requirements: TST-04 (primary).
   Each car's air conditioning and lighting are shown on both monitors. Switched from the cab monitor, the
-  order is applied within one status cycle and displayed within two (DECISIONS.md, "Display": 300 ms);
+  order is applied within one status cycle and displayed within two (docs/decisions.md, "Display": 300 ms);
   only the car ordered changes.
 
   Background:

@@ -2,7 +2,7 @@
 Feature: H-VLT-02 Supply fluctuations: 0.6 Un for 0.1 s, 1.4 Un for 1 s, and beyond
   Hardware/software test, supply-voltage variation (TST-02). Requirements: CMD-02, RED-01, RED-02, FS-02.
   EN 50155: fluctuations down to 0.6 Un for 0.1 s and up to 1.4 Un for 1 s cause no deviation of function.
-  Beyond them the suite requires the fail-safe reaction of FS-02 (a project decision, DECISIONS.md
+  Beyond them the suite requires the fail-safe reaction of FS-02 (a project decision, docs/decisions.md
   "Environment"): the unit stops talking rather than talk wrong, the redundancy takes over, the monitor
   shows it, and the unit comes back by itself once its supply is in range again, writing a fault record.
 

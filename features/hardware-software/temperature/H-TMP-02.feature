@@ -2,7 +2,7 @@
 Feature: H-TMP-02 A CCU system above its rated temperature: fail-safe, takeover, recovery
   Hardware/software test, high/low temperature (TST-02). Requirements: FS-02, RED-01, RED-02.
   Beyond its rated temperature a unit cannot vouch for its outputs, so it stops talking (FS-02; the
-  reaction is a project decision, DECISIONS.md "Environment"). For CCU system 1 that means system 2 takes
+  reaction is a project decision, docs/decisions.md "Environment"). For CCU system 1 that means system 2 takes
   over (RED-02); back in range, system 1 restarts by itself as standby and records why.
   The stimulus is placed relative to the SUT's declared maximum, so a wider rating is tested beyond itself.
 

@@ -3,7 +3,7 @@ Feature: H-VIB-01 Contact micro-interruptions on supply connectors under rated v
   Hardware/software test, vibration (TST-02). Requirements: CMD-02, RED-02.
   IEC 61373 category 1 class B (body-mounted equipment): under the functional random vibration test the
   power contacts of the boards may chatter. Micro-interruptions of up to 1 ms (the project's figure for
-  contact chatter, DECISIONS.md "Environment"), however often, are ridden out: no reset, no takeover, no
+  contact chatter, docs/decisions.md "Environment"), however often, are ridden out: no reset, no takeover, no
   lost command.
 
   Background:

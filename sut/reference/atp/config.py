@@ -1,5 +1,5 @@
 """Figures of the ATP reference. Marked with the requirement they come from; the rest are this reference's
-choices, explained in sut/reference/DECISIONS.md ("VDX emergency-brake interface"). Faulty variants in
+choices, explained in docs/decisions.md ("VDX emergency-brake interface"). Faulty variants in
 tests/variants.py change one field each.
 """
 from __future__ import annotations

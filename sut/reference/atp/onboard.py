@@ -3,7 +3,7 @@ generator feeds the CFSK receiver (carrier, low-frequency code, amplitude), an o
 position and speed, and balise groups are passed with their packets.
 
 Positions are metres along the line (the train's front); balise packet distances are absolute positions on
-the same line (the model's simplification of ETCS relative distances, stated in DECISIONS.md).
+the same line (the model's simplification of ETCS relative distances, stated in docs/decisions.md).
 """
 from __future__ import annotations
 

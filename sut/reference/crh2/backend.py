@@ -368,7 +368,7 @@ class ReferenceTrain(PickledState, TrainDriver):
         return view
 
     def _fault_history(self) -> list[str]:
-        """The maintenance view: fault records held at the master, oldest first (DECISIONS.md)."""
+        """The maintenance view: fault records held at the master, oldest first (docs/decisions.md)."""
         entries = []
         for records in self.train.records().values():
             for record in records:

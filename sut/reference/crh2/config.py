@@ -90,7 +90,7 @@ class Interlocks:
 
 @dataclass(frozen=True)
 class Environment:
-    """Rated environment of the boards (hardware/software class, TST-02; DECISIONS.md "Environment").
+    """Rated environment of the boards (hardware/software class, TST-02; docs/decisions.md "Environment").
     Voltages are fractions of Un; the features test the standards' ranges, not these figures."""
 
     nominal_v: float = 110.0                # EN 50155 Un of the train's battery supply

@@ -48,7 +48,7 @@ class Desk:
             return Sample("neutral", 0, BRAKE_STEPS if inverted else 0, self.mcr)
         vehicle = self.train.vehicle
         # ILK-08: the traction lines carry a notch only while every permission holds; an ATP brake
-        # raises the brake demand (DECISIONS.md, "Traction permission").
+        # raises the brake demand (docs/decisions.md, "Traction permission").
         traction = self.traction if self.mcr and vehicle.traction_permitted() else 0
         brake = vehicle.brake_demand(self.brake)
         if misread:

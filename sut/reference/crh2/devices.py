@@ -9,7 +9,7 @@ if TYPE_CHECKING:
     from sut.reference.crh2.boards import Board
     from sut.reference.crh2.context import TrainContext
 
-# DECISIONS.md, "A/B steps": the lower half of the range drives step A, the upper half step B.
+# docs/decisions.md, "A/B steps": the lower half of the range drives step A, the upper half step B.
 TRACTION_B_FROM = 6
 BRAKE_B_FROM = 5
 

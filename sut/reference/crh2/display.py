@@ -1,4 +1,4 @@
-"""What the cab monitor shows and how it gets there: display points in status data (DECISIONS.md, "Display").
+"""What the cab monitor shows and how it gets there: display points in status data (docs/decisions.md, "Display").
 
 Every display point has an owner node, the LCU of the car where the state is measured (train-wide readings
 such as speed and main pipe pressure: car 1's LCU; a traction unit's: its first motor car's LCU). The owner

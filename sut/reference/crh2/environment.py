@@ -5,7 +5,7 @@ Inside the rated range nothing changes. Outside it a board fails safe (FS-02: it
 than talk wrong): its supply's output drops, through the same `PowerSupply` every board already hangs on,
 so the existing redundancy takes over (CCU system 2, token reversal, command paths 2 and 3, monitor
 alarms). When the condition is over the supply restarts after `restart_us` and the node's CPU3 writes a
-fault record saying why it restarted. Figures and their sources: DECISIONS.md, "Environment".
+fault record saying why it restarted. Figures and their sources: docs/decisions.md, "Environment".
 """
 from __future__ import annotations
 

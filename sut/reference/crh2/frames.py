@@ -75,7 +75,7 @@ BLOCK_SIZE = 236
 BLOCK = Struct(                       # PRO-06: 236-byte blocks
     "kind" / Const(K_BLOCK, Byte),
     "owner" / Byte,
-    "record" / Int16ub,               # which record of the owner's data area (DECISIONS.md, "Block data")
+    "record" / Int16ub,               # which record of the owner's data area (docs/decisions.md, "Block data")
     "index" / Int16ub,
     "total" / Int16ub,
     "data" / Bytes(BLOCK_SIZE),

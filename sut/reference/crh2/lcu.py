@@ -1,6 +1,6 @@
 """The terminal unit LCU of every car: CPU3, MDM8, MDM9 and the RXC (NET-02, CMD-01..04, NET-09).
 
-Command paths into CI and BCU (DECISIONS.md, "Command paths"):
+Command paths into CI and BCU (docs/decisions.md, "Command paths"):
 1. ring -> MDM8 -> MDM9 -> HDLC over fibre, polled every 10 ms: full notch resolution;
 2. ring -> MDM8 -> 20 mA loop -> RXC -> digital outputs, when this car's MDM9 (or its HDLC leg) has failed;
 3. self-diagnostic line -> RXC -> digital outputs, when no ring command has reached the RXC for 50 ms.

@@ -96,7 +96,7 @@ class RingNode:
 
     def board_changed(self) -> None:
         """CPU3 writes a fault record (block data to the master) for every board that failed or recovered
-        (DECISIONS.md, "Fault records"); a dead CPU3 writes nothing."""
+        (docs/decisions.md, "Fault records"); a dead CPU3 writes nothing."""
         health = self.health_byte()
         last = getattr(self, "_health_seen", health)
         self._health_seen = health
@@ -140,7 +140,7 @@ class RingNode:
         self.emit("link.up" if up else "link.down", port=direction,
                   peer=self.neighbour(direction).name)
         if up:
-            # A ring that grew back may hold two tokens: re-form one (DECISIONS.md, "Link restored").
+            # A ring that grew back may hold two tokens: re-form one (docs/decisions.md, "Link restored").
             self._token_init(reason="link restored")
 
     @staticmethod

@@ -1,6 +1,6 @@
 """Assembles one train: ring order, supplies, units, devices, the self-diagnostic line.
 
-Ring order of one 8-car set (node number = position + 1, DECISIONS.md "Ring order"):
+Ring order of one 8-car set (node number = position + 1, docs/decisions.md "Ring order"):
   car1.CCU.sys1, car1.CCU.sys2, car1.LCU .. car8.LCU, car8.CCU.sys2, car8.CCU.sys1
 Two coupled sets (NET-08) make one ring of both, joined at the coupler by twisted pair.
 """
@@ -204,7 +204,7 @@ class Train:
                     b"".join(blocks[i] for i in range(total)))
         return out
 
-    # -- the cab monitor's equipment orders (DECISIONS.md, "Display") ----------------------------
+    # -- the cab monitor's equipment orders (docs/decisions.md, "Display") ----------------------------
     def orders_for(self, node: RingNode) -> list[dict[str, int]]:
         ccu = self.commanding_ccu()
         # Orders come from the monitor, so they ride in the status data of the system feeding it (the

@@ -285,7 +285,7 @@ class Vehicle:
         vcb_open = {u: "vcb" in self.unit_faults[u] or self.ns_vcb_open
                     or order(unit_names[u][0]) == "open" or order(unit_names[u][1]) == "down"
                     for u in self.units}
-        # compressor governor (DECISIONS.md): start below 780 kPa, stop at 880 kPa
+        # compressor governor (docs/decisions.md): start below 780 kPa, stop at 880 kPa
         if not self.compressor and pressure < cfg.compressor_start_kpa:
             self.compressor = True
         elif self.compressor and pressure >= cfg.compressor_stop_kpa:

@@ -1,7 +1,7 @@
 """Parameters of the metro TCDS reference (seed 002, Shenzhen Metro line 3, Hyundai Rotem TCDS).
 
 Figures from the article are marked (TCN-nn / RED-nn); the others are this reference's choices where the
-article is silent, each explained in sut/reference/DECISIONS.md ("Metro TCDS"). Faulty variants in
+article is silent, each explained in docs/decisions.md ("Metro TCDS"). Faulty variants in
 tests/variants.py change one field each.
 """
 from __future__ import annotations

@@ -1,6 +1,6 @@
 """The metro train control and diagnosis system (seed 002): 6 cars, WTB between the units, one MVB per unit.
 
-Read with requirements.md TCN-01..10, RED-04..07 and DECISIONS.md "Metro TCDS". In one sentence each:
+Read with requirements.md TCN-01..10, RED-04..07 and docs/decisions.md "Metro TCDS". In one sentence each:
 - every MVB basic period (1 ms) the unit's bus master polls: the cab's two I/O modules and the train command
   port every 2 ms, and one device's status (supervisory data) per period;
 - every WTB cycle (25 ms) the WTB master polls each node; a node's telegram carries the train command (from
@@ -216,7 +216,7 @@ class MetroTrain:
             return
         seg.last_master_t = self.kernel.now
         # IEC 61375-3-1 assigns no slave frame to F_code 5-7 and 10-11: a device ignores such a master frame
-        # (sut/reference/DECISIONS.md), so a poll with one goes unanswered.
+        # (docs/decisions.md), so a poll with one goes unanswered.
         source, data = (target.name if target is not None else master.name, None) if got.data.reserved \
             else self._answer(seg, master, what, target)
         line, master_line = None, got.line

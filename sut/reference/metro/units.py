@@ -68,7 +68,7 @@ class ControlUnit:
 
     @property
     def masters_mvb(self) -> bool:
-        """Fit to master its unit's MVB: alive, and its gateway joins the unit to the train (DECISIONS.md,
+        """Fit to master its unit's MVB: alive, and its gateway joins the unit to the train (docs/decisions.md,
         "Gateway failure": a unit mastered without one would be cut off from the train's command)."""
         return self.on_wtb
 
