@@ -16,6 +16,8 @@ CHROMIUM := /usr/bin/chromium
 SUDO := $(if $(filter 0,$(shell id -u)),,sudo)
 RESULTS := reports/allure-results
 HTML := reports/html
+# What the steps of make test's conformance run asked of the SUT, held against sut/contract/*.yaml.
+CONTRACT_RECORD := reports/contract-record.json
 
 # Bytecode caches even where the machine's environment turns them off (PYTHONDONTWRITEBYTECODE=1, as on
 # this project's CI machines): make test starts dozens of Python processes, and each would compile the
@@ -65,11 +67,13 @@ report: $(VENV_STAMP) $(NODE_STAMP) ## run every feature, build reports/html/ind
 	$(PY) -m outline.summary $(RESULTS); \
 	exit $$status
 
-test: $(VENV_STAMP) $(NODE_STAMP) $(CHROMIUM) ## the project's own tests, then the whole conformance run; fails if either fails
+test: $(VENV_STAMP) $(NODE_STAMP) $(CHROMIUM) ## the project's own tests, the whole conformance run, then the contract check (every catalogue entry read by some step); fails if any fails
 	@$(PY) -m pytest tests $(XDIST_TESTS); t=$$?; \
-	$(PY) -m pytest features $(XDIST) $(SUT_ARG) $(PYTEST_ARGS); f=$$?; \
-	echo "make test: tests exit $$t, conformance run exit $$f"; \
-	[ $$t -eq 0 ] && [ $$f -eq 0 ]
+	rm -f $(CONTRACT_RECORD)*; \
+	$(PY) -m pytest features $(XDIST) $(SUT_ARG) $(PYTEST_ARGS) --contract-record $(CONTRACT_RECORD); f=$$?; \
+	$(PY) -m sut.contract check $(CONTRACT_RECORD) $(if $(or $(PYTEST_ARGS),$(SUT)),--partial); c=$$?; \
+	echo "make test: tests exit $$t, conformance run exit $$f, contract check exit $$c"; \
+	[ $$t -eq 0 ] && [ $$f -eq 0 ] && [ $$c -eq 0 ]
 
 mutate: $(VENV_STAMP) $(MUTATE_STAMP) ## mutation testing of the references (MUTANTS=200 SEED=1, RESUME=1 keeps the last run's kills): kill rate per reference, reports/mutation.md
 	$(PY) -m outline.mutation --mutants $(MUTANTS) --seed $(SEED) $(if $(filter auto,$(JOBS)),,--jobs $(JOBS)) $(if $(RESUME),--resume)
@@ -102,7 +106,7 @@ trace: $(VENV_STAMP) ## python -m outline trace: requirement <-> item <-> scenar
 	$(PY) -m outline trace $(if $(wildcard $(RESULTS)),--results $(RESULTS))
 
 clean: ## remove reports and caches (keeps .venv and node_modules)
-	rm -rf $(RESULTS) $(HTML) $(SHARD_RESULTS) reports/history.jsonl reports/traceability.* reports/mutation.* reports/conformance-*.html mutants .pytest_cache .hypothesis
+	rm -rf $(RESULTS) $(HTML) $(SHARD_RESULTS) reports/history.jsonl reports/contract-record.json* reports/traceability.* reports/mutation.* reports/conformance-*.html mutants .pytest_cache .hypothesis
 	find . -name __pycache__ -type d -not -path './$(VENV)/*' -not -path './node_modules/*' -prune -exec rm -rf {} +
 
 distclean: clean ## also remove .venv and node_modules

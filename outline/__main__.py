@@ -1,4 +1,4 @@
-"""python -m outline {check,trace,new,campaign}: consistency, traceability, new items and generated fault
+"""python -m outline {check,trace,new,campaign,assertions}: consistency, traceability, new items and generated fault
 campaigns of the test outline."""
 
 from __future__ import annotations
@@ -25,7 +25,7 @@ def main(argv: list[str] | None = None) -> int:
         "library and docs/requirements.md must agree.",
     )
     parser.add_argument("--root", default=str(REPO.root), help="repository root (default: %(default)s)")
-    sub = parser.add_subparsers(dest="command", required=True, metavar="{check,trace,new,campaign}")
+    sub = parser.add_subparsers(dest="command", required=True, metavar="{check,trace,new,campaign,assertions}")
 
     check = sub.add_parser(
         "check",
@@ -71,6 +71,8 @@ def main(argv: list[str] | None = None) -> int:
     new.add_argument("--req", help="requirement IDs it verifies, the primary first: CMD-02,PRO-01")
     new.add_argument("--profile", default="crh2", help="train profile (default: %(default)s)")
 
+    sub.add_parser("assertions", help="how many Then assertions the features make, by what backs them "
+                   "(a requirement or a project decision), per profile: the README's table")
     campaign = sub.add_parser(
         "campaign",
         help="write the fault-campaign features (F-NET-30..34) from the SUT's own fault space",
@@ -85,6 +87,11 @@ def main(argv: list[str] | None = None) -> int:
 
     args = parser.parse_args(argv)
     tree = Tree.at(args.root)
+    if args.command == "assertions":
+        from .assertions import table
+
+        print(table(tree.root / "features"))
+        return 0
     if args.command == "campaign":
         from .campaign import run as campaign_run
 

@@ -290,8 +290,7 @@ def sut(sut_class: type[TrainDriver], request: pytest.FixtureRequest):
     recorder = request.config.stash.get(_RECORDER, None)
     if recorder is not None:
         recorder.item = ",".join(str(a) for m in request.node.iter_markers("item") for a in m.args) or "?"
-    yield ContractDriver(driver, profile or "", None if recorder is not None else load_contract(profile or ""),
-                         recorder)
+    yield ContractDriver(driver, profile or "", load_contract(profile or ""), recorder)
     outcome = [getattr(request.node, f"_crh2_{phase}", None) for phase in ("setup", "call")]
     failed = any(r is not None and r.failed for r in outcome)
     whole = failed or request.config.getoption("--whole-trace") == "all"

@@ -20,7 +20,7 @@ import pytest
 
 from tests.helpers import verdicts
 from sut.reference.crh2.backend import ReferenceTrain
-from tests.variants import FAULTY, IN_BAND
+from tests.variants import FAULTY, FREEDOM, IN_BAND
 
 ROOT = Path(__file__).resolve().parents[1]
 
@@ -136,7 +136,7 @@ def _in_band_cost(variant: type) -> float:
 
 
 @pytest.mark.parametrize("variant", [pytest.param(v, id=v.__name__, marks=pytest.mark.cost(_in_band_cost(v)))
-                                     for v in IN_BAND])
+                                     for v in IN_BAND + FREEDOM])
 def test_features_accept_in_band_variant(variant: type) -> None:
     # One single-process run each, not one shared run on two workers as for the faulty variants: each runs
     # every scenario of its profile, and a process of its own keeps all its powered-up snapshots (tried on
@@ -144,3 +144,13 @@ def test_features_accept_in_band_variant(variant: type) -> None:
     result = run_features(variant)
     failed = [line for line in result.stdout.splitlines() if line.startswith(("FAILED", "ERROR"))]
     assert result.returncode == 0, f"{variant.__name__} was rejected:\n" + "\n".join(failed or [result.stdout[-3000:]])
+
+
+@pytest.mark.parametrize("variant", [pytest.param(v, id=v.__name__, marks=pytest.mark.cost(_in_band_cost(v)))
+                                     for v in FREEDOM])
+def test_a_freedom_variant_passes_by_its_own_declaration_only(variant: type) -> None:
+    """Evidence that a freedom variant exercises its freedom: held to the reference's declaration instead of
+    its own, the features reject it (so they read the declaration, not the reference's habits)."""
+    assert variant.DECLARATION != ReferenceTrain.DECLARATION
+    result = run_features(variant, "--declaration=sut/reference/declaration.yaml", "-x")
+    assert result.returncode == 1, f"{variant.__name__} passed under the reference's declaration:\n{result.stdout[-2000:]}"
