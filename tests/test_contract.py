@@ -125,3 +125,9 @@ def test_the_step_library_never_reads_a_field_around_the_guard() -> None:
                  for n, line in enumerate(path.read_text(encoding="utf-8").splitlines(), 1)
                  if re.search(r"\.fields\[", line)]
     assert not offenders, offenders
+
+
+def test_the_implementers_guide_is_rendered_from_the_catalogue() -> None:
+    from sut.contract.render import GUIDE, render
+    assert GUIDE.read_text(encoding="utf-8") == render(), \
+        "docs/implementing-a-sut.md is stale: python -m sut.contract render"
