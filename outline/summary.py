@@ -94,7 +94,8 @@ def summarize(results: list[dict]) -> Summary:
 
 
 def format_summary(summary: Summary) -> str:
-    parts = [f"{summary.counts.get(s, 0)} {s}" for s in STATUSES]
+    # "not applicable" shows only where a run has any: most runs have none, and the line stays as it was.
+    parts = [f"{summary.counts.get(s, 0)} {s}" for s in STATUSES if s != "not applicable" or summary.counts.get(s)]
     extra = summary.total - sum(summary.counts.get(s, 0) for s in STATUSES)
     if extra:
         parts.append(f"{extra} unknown")

@@ -2,7 +2,9 @@
 modules, records and the display. Bus traffic is read from the trace as a bus analyser logs it:
 `wtb.msg` / `mvb.msg` per poll (master, polled node or port, the line it came on, lost or not), and with an
 analyser attached `bus.frame` (each frame's body in hex), decoded here with the suite's own IEC 61375-3-1
-codec (sut/codecs/mvb.py), never with the SUT's.
+codec (sut/codecs/mvb.py), never with the SUT's. What the displays and records say is read in the SUT's own
+words: the features name a message identifier of the form (sut/contract/form.yaml, metro-tcn texts), with
+names filled in, and the SUT's declaration says how it words that message (any language).
 """
 from __future__ import annotations
 
@@ -11,11 +13,13 @@ import re
 from pytest_bdd import given, parsers, then, when
 
 from sut.codecs import mvb
+from sut.contract.declaration import PLACEHOLDER, ProfileDeclaration, form
 from sut.driver import TrainDriver
 from steps import zh
 from steps.analysis import describe, intervals, ms, us
 
 QUOTED = re.compile(r'"([^"]+)"')
+NAME = "[A-Za-z0-9_.]+"         # what a feature fills in for a message's <name>: car4.VVVF, unit1.MVB, WTB, A
 
 
 def _names(text: str) -> list[str]:
@@ -33,6 +37,50 @@ def _sinks(sut: TrainDriver, kind: str) -> list[str]:
 def _polls(sut: TrainDriver, bus: str, since: int) -> list:
     kind = "wtb.msg" if bus == "WTB" else "mvb.msg"
     return sut.trace.select(kind=kind, source=bus, since=since)
+
+
+def _messages() -> dict:
+    return form()["metro-tcn"]["texts"]
+
+
+def _regex(template: str, fill) -> str:
+    """`template` as a regular expression: its words literally, each <name> placeholder as `fill(name)` gives."""
+    out, at = [], 0
+    for m in PLACEHOLDER.finditer(template):
+        out += [re.escape(template[at:m.start()]), fill(m.group())]
+        at = m.end()
+    return "".join(out) + re.escape(template[at:])
+
+
+def _mode(declaration: ProfileDeclaration, mode: str) -> str:
+    """What the SUT's display shows for the mode the feature names (its message identifier)."""
+    if mode not in _messages() or PLACEHOLDER.search(mode):
+        raise ValueError(f"the mode {mode!r} is no message identifier of the metro-tcn form (sut/contract/form.yaml)")
+    return declaration.text(mode)
+
+
+def _message(declaration: ProfileDeclaration, text: str) -> tuple[re.Pattern, str]:
+    """How to find the feature's `text` in a display entry or a record line in the SUT's own words: the message
+    identifier it fills in (`car4.VVVF: no status data` fills `<device>: no status data`) worded as the SUT
+    declares it, with the feature's names. A text with the words of an identifier only (`no status data`)
+    stands for any name. Answers the pattern to search for and how to say it in a message."""
+    full, partial = [], []
+    for identifier in _messages():
+        names = [m.group() for m in PLACEHOLDER.finditer(identifier)]
+        found = re.fullmatch(_regex(identifier, lambda _: f"({NAME})"), text)
+        if found:
+            full.append((identifier, dict(zip(names, found.groups()))))
+        elif any(text in words for words in PLACEHOLDER.split(identifier)):
+            partial.append((identifier, {}))
+    candidates = full or partial
+    if len(candidates) != 1:
+        raise ValueError(f"the text {text!r} names {'several' if candidates else 'no'} message identifier(s) of the "
+                         f"metro-tcn form (sut/contract/form.yaml): {[c for c, _ in candidates] or list(_messages())}")
+    identifier, names = candidates[0]
+    declared = declaration.text(identifier)
+    pattern = re.compile(_regex(declared, lambda p: re.escape(names[p]) if p in names else ".+?"))
+    shown = PLACEHOLDER.sub(lambda m: names.get(m.group(), m.group()), declared)
+    return pattern, repr(text) if shown == text else f"{text!r} (declared as {shown!r})"
 
 
 # -- composition and desk -------------------------------------------------------------------------
@@ -381,18 +429,22 @@ def _(sut: TrainDriver) -> None:
 
 
 # -- records and the display ----------------------------------------------------------------------------
-@then(parsers.parse('"{unit}"保存有记录"{text}"'))
+# The feature names a message (sut/contract/form.yaml, metro-tcn texts); the SUT's declaration says how its
+# display and records word it (any language): `_message` and `_mode`.
+@then(parsers.parse('"{unit}"保存有记录"{text}"'), converters={"text": zh.metro_text})
 @then(parsers.parse('"{unit}" holds a record "{text}"'))
-def _(sut: TrainDriver, unit: str, text: str) -> None:
+def _(sut: TrainDriver, declaration: ProfileDeclaration, unit: str, text: str) -> None:
+    pattern, said = _message(declaration, text)
     records = sut.records(unit)
-    assert any(text in r for r in records), f"{unit} holds no record with {text!r}; it holds {records}"
+    assert any(pattern.search(r) for r in records), f"{unit} holds no record with {said}; it holds {records}"
 
 
-@then(parsers.parse('"{unit}"中记录"{text}"恰好保存了一次'))
+@then(parsers.parse('"{unit}"中记录"{text}"恰好保存了一次'), converters={"text": zh.metro_text})
 @then(parsers.parse('"{unit}" holds the record "{text}" exactly once'))
-def _(sut: TrainDriver, unit: str, text: str) -> None:
-    found = [r for r in sut.records(unit) if text in r]
-    assert len(found) == 1, f"{unit} holds {len(found)} records with {text!r}: {found}"
+def _(sut: TrainDriver, declaration: ProfileDeclaration, unit: str, text: str) -> None:
+    pattern, said = _message(declaration, text)
+    found = [r for r in sut.records(unit) if pattern.search(r)]
+    assert len(found) == 1, f"{unit} holds {len(found)} records with {said}: {found}"
 
 
 @then(parsers.parse('"{unit}"没有保存任何记录'))
@@ -402,25 +454,29 @@ def _(sut: TrainDriver, unit: str) -> None:
     assert not records, f"{unit} stores records although it has no memory board: {records}"
 
 
-@then(parsers.parse('{cab:d}号司机室的DU显示"{text}"'))
+@then(parsers.parse('{cab:d}号司机室的DU显示"{text}"'), converters={"text": zh.metro_text})
 @then(parsers.parse('the cab {cab:d} display shows "{text}"'))
-def _(sut: TrainDriver, cab: int, text: str) -> None:
+def _(sut: TrainDriver, declaration: ProfileDeclaration, cab: int, text: str) -> None:
+    pattern, said = _message(declaration, text)
     shown = sut.monitor(cab)
-    assert any(text in f for f in shown["faults"]), f"the cab {cab} display does not show {text!r}: {shown}"
+    assert any(pattern.search(f) for f in shown["faults"]), f"the cab {cab} display does not show {said}: {shown}"
 
 
-@then(parsers.parse('{cab:d}号司机室的DU不显示"{text}"'))
+@then(parsers.parse('{cab:d}号司机室的DU不显示"{text}"'), converters={"text": zh.metro_text})
 @then(parsers.parse('the cab {cab:d} display does not show "{text}"'))
-def _(sut: TrainDriver, cab: int, text: str) -> None:
+def _(sut: TrainDriver, declaration: ProfileDeclaration, cab: int, text: str) -> None:
+    pattern, said = _message(declaration, text)
     shown = sut.monitor(cab)
-    assert not any(text in f for f in shown["faults"]), f"the cab {cab} display shows {text!r}: {shown}"
+    assert not any(pattern.search(f) for f in shown["faults"]), f"the cab {cab} display shows {said}: {shown}"
 
 
 @then(parsers.parse('{cab:d}号司机室的DU显示运行模式为"{mode}"'), converters={"mode": zh.metro_mode})
 @then(parsers.parse('the cab {cab:d} display shows the mode "{mode}"'))
-def _(sut: TrainDriver, cab: int, mode: str) -> None:
+def _(sut: TrainDriver, declaration: ProfileDeclaration, cab: int, mode: str) -> None:
+    words = _mode(declaration, mode)
     shown = sut.monitor(cab)
-    assert shown["mode"] == mode, f"the cab {cab} display shows mode {shown['mode']!r}, not {mode!r}"
+    said = repr(mode) if words == mode else f"{mode!r} (declared as {words!r})"
+    assert shown["mode"] == words, f"the cab {cab} display shows mode {shown['mode']!r}, not {said}"
 
 
 # -- frames on the wire (TCN-05, TCN-06, TCN-10) ----------------------------------------------------------

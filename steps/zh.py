@@ -145,8 +145,46 @@ METRO_DATA_CLASSES = {"过程数据": "process data", "消息数据": "message d
                       "监视数据": "supervisory data", "监管数据": "supervisory data"}
 
 
+# The event texts the metro steps look for on the displays and in the records, as a Chinese feature writes
+# them, to the message identifiers of sut/contract/form.yaml (metro-tcn texts). <name> is a name the sentence
+# fills in (car4.VVVF, unit1.MVB, A); a bare text without names stands for any (不显示"无状态数据").
+METRO_TEXTS = {"<device>:无状态数据": "<device>: no status data", "无状态数据": "no status data",
+               "<device>:恢复应答": "<device>: answering again", "恢复应答": "answering again",
+               "<node>:WTB无应答": "<node>: no answer on WTB", "WTB无应答": "no answer on WTB",
+               "<node>:WTB恢复应答": "<node>: answering on WTB again", "WTB恢复应答": "answering on WTB again",
+               "WTB主站切换(<node>无响应)": "WTB master (<node> silent)", "输入取自<module>": "inputs from <module>",
+               "<bus>线路<line>故障": "<bus> line <line>: fault", "<bus>线路<line>恢复": "<bus> line <line>: restored",
+               "列车网络故障:制动停车": "train network failure: braking to a stop"}
+
+
+def patterns(table: dict[str, str]) -> Callable[[str], str]:
+    """A converter for texts with names in them: a text that fills in a Chinese pattern of `table` (its <name>
+    placeholders standing for ASCII names, full-width and ASCII colons and brackets alike) becomes the English
+    pattern with the same names; anything else passes unchanged."""
+    def regex(pattern: str) -> re.Pattern:
+        parts = re.split(r"<([\w-]+)>", _halfwidth(pattern))
+        return re.compile("".join(re.escape(part) if i % 2 == 0 else f"(?P<{part}>[A-Za-z0-9_.]+)"
+                                  for i, part in enumerate(parts)))
+    compiled = [(regex(chinese), english) for chinese, english in table.items()]
+
+    def convert(text: str) -> str:
+        plain = _halfwidth(text.strip())
+        for rx, english in compiled:
+            found = rx.fullmatch(plain)
+            if found:
+                return re.sub(r"<([\w-]+)>", lambda p: found.group(p.group(1)), english)
+        return text
+    return convert
+
+
+def _halfwidth(text: str) -> str:
+    return text.translate(str.maketrans("：（），", ":(),"))
+
+
 # 正常 -> normal, 列车网络故障 -> train network failure, 紧急运行 -> emergency operation.
 metro_mode = words(METRO_MODES)
+# car4.VVVF:无状态数据 -> car4.VVVF: no status data, unit1.MVB线路B故障 -> unit1.MVB line B: fault.
+metro_text = patterns(METRO_TEXTS)
 metro_switch = words({"接通": "on", "断开": "off"})      # a switch's two positions
 
 

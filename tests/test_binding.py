@@ -30,7 +30,7 @@ def test_bad_files_become_one_collection_error(tmp_path: Path):
         feature_paths(features)
     assert str(caught.value).splitlines() == [
         "features/a/broken.feature:3: first step must start with Given, When or Then, not And",
-        "features/a/dup.feature:2: unknown tag kind @reqs:NET-03 (known kinds: @item:, @req:, @profile:)",
+        "features/a/dup.feature:2: unknown tag kind @reqs:NET-03 (known kinds: @item:, @req:, @profile:, @option:)",
         'features/a/dup.feature:5: duplicate scenario title "t" (first at line 3); '
         "pytest-bdd would silently run only one of them",
     ]

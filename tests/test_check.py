@@ -32,7 +32,7 @@ BAD_EXPECTED = [
     'features/routine/control/R-CTL-01.feature:18: scenario "R-CTL-01 No requirement tag" has no @req: tag',
     'features/routine/control/R-CTL-01.feature:20: unknown step "Given the driver does something"',
     "features/routine/control/R-CTL-01.feature:22: unknown tag kind @reqs:PRO-01 (known kinds: @item:, @req:, "
-    "@profile:)",
+    "@profile:, @option:)",
     'features/routine/control/R-CTL-01.feature:23: scenario "R-CTL-01 Typo in a tag kind" has no @req: tag',
     "features/routine/control/R-CTL-09.feature: not listed in features/registry.yaml",
     "features/routine/display/R-CTL-03.feature: file name must be the item ID, R-DSP-<nn>.feature in this folder",

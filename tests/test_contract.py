@@ -131,3 +131,12 @@ def test_the_implementers_guide_is_rendered_from_the_catalogue() -> None:
     from sut.contract.render import GUIDE, render
     assert GUIDE.read_text(encoding="utf-8") == render(), \
         "docs/implementing-a-sut.md is stale: python -m sut.contract render"
+
+
+def test_the_readme_shows_todays_assertion_count_and_every_freedom_variant() -> None:
+    from outline.assertions import table
+    from tests.variants import FREEDOM
+    readme = (ROOT / "README.md").read_text(encoding="utf-8")
+    assert table(ROOT / "features") in readme, "README's assertion table is stale: python -m outline assertions"
+    missing = [v.__name__ for v in FREEDOM if f"`{v.__name__}`" not in readme]
+    assert not missing, f"freedom variants the README's table does not name: {missing}"

@@ -15,7 +15,7 @@ from sut.contract.declaration import DeclarationError, form, load, of_backend
 from sut.reference.atp.backend import ReferenceAtp
 from sut.reference.crh2.backend import ReferenceTrain
 from sut.reference.metro.backend import ReferenceMetro
-from tests.variants import FREEDOM, IN_BAND
+from tests.variants import FREEDOM, IN_BAND, METRO_MODES_ZH, METRO_TEXTS_ZH, ChineseDisplayMetro
 
 ROOT = Path(__file__).resolve().parents[1]
 
@@ -32,6 +32,18 @@ profiles:
       cfsk_period_ms: 50
     texts:
       CFSK fault: CFSK故障
+"""
+
+
+GOOD_METRO = """\
+sut: vendor
+profiles:
+  metro-tcn:
+    parameters:
+      timing_resolution_us: 1000
+    texts:
+      no cab: 无激活司机室
+      "<bus> line <line>: fault": "<bus> <line>线故障"
 """
 
 
@@ -71,6 +83,30 @@ def test_every_mistake_names_file_line_and_key(tmp_path: Path, change: tuple[str
         load(path)
     message = str(caught.value)
     assert message.startswith(str(path) + where) and why in message, message
+
+
+def test_a_text_keeps_the_placeholders_of_its_message_identifier(tmp_path: Path) -> None:
+    metro = load(_write(tmp_path, GOOD_METRO)).of("metro-tcn")
+    assert metro.text("<bus> line <line>: fault") == "<bus> <line>线故障" and metro.text("no cab") == "无激活司机室"
+    fault = ":8: profiles.metro-tcn.texts.<bus> line <line>: fault: the text must hold <bus>, <line> once each"
+    for old, new, why in [('"<bus> <line>线故障"', '"<bus>线故障"', fault),
+                          ('"<bus> <line>线故障"', '"<bus> <line>线故障<line>"', fault),
+                          ("无激活司机室", "<cab>无激活司机室", ":7: profiles.metro-tcn.texts.no cab: the text must hold no")]:
+        path = _write(tmp_path, GOOD_METRO.replace(old, new))
+        with pytest.raises(DeclarationError) as caught:
+            load(path)
+        assert str(caught.value).startswith(str(path) + why), str(caught.value)
+
+
+def test_the_metro_declarations_word_every_message_as_the_sut_shows_it() -> None:
+    """The reference declares the identifiers' own words; ChineseDisplayMetro what its display shows."""
+    messages = set(form()["metro-tcn"]["texts"])
+    reference = of_backend(ReferenceMetro).of("metro-tcn")
+    assert set(reference.texts) == messages and all(reference.text(m) == m for m in messages)
+    chinese = of_backend(ChineseDisplayMetro).of("metro-tcn")
+    assert set(chinese.texts) == messages
+    for message in messages:
+        assert chinese.text(message) == {**METRO_MODES_ZH, **METRO_TEXTS_ZH}[message], message
 
 
 def test_a_bad_declaration_stops_the_run_before_any_scenario(tmp_path: Path) -> None:

@@ -56,6 +56,10 @@ def _run_variants(names: list[str], *args: str, env: dict[str, str] | None = Non
         [sys.executable, "-m", "pytest", "features", "-q", "-rA", "-p", "no:cacheprovider", "-n", "2", *args, *suts],
         cwd=ROOT, capture_output=True, text=True, timeout=1500, env=dict(os.environ, **(env or {})))
     assert result.returncode in (0, 1), result.stdout[-3000:] + result.stderr[-3000:]
+    # A faulty variant is rejected by a Then that fails, never by the suite asking it for something its
+    # contract does not list (a ContractGap in a failure message's own reads would hide the verdict).
+    gaps = sorted({line for line in result.stdout.splitlines() if "ContractGap" in line})
+    assert not gaps, "the suite read outside the contract while rejecting a variant:\n" + "\n".join(gaps[:10])
     by_variant: dict[str, list[tuple[str, str]]] = defaultdict(list)
     for test_id, outcome in verdicts(result.stdout):
         # [<variant>] or [<variant>-<example>] (verdicts() cuts an id at its first space: no "]" then)

@@ -110,7 +110,7 @@ def test_client_and_server_agree_on_the_interface() -> None:
     public = {name for name in dir(TrainDriver) if not name.startswith("_")}
     assert wire.METHODS <= public
     computed = {"advance_ms", "cut_ring", "shutdown", "open", "powered", "now_us", "trace", "check_us",
-                "check_direction", "PROFILES", "backend_name", "DETERMINISTIC",
+                "check_direction", "PROFILES", "backend_name", "DETERMINISTIC", "DECLARATION",
                 "snapshot", "from_snapshot"}        # in-process copies of a train: never over the wire
     assert public - wire.METHODS == computed, "a driver method the protocol does not carry"
     # every protocol method reaches the server: none left to TrainDriver's NotSupported default

@@ -27,7 +27,7 @@ def test_known_tags_become_marks(tag, expected):
 
 
 def test_unknown_kind_fails_loudly():
-    with pytest.raises(tags.TagError, match=r"unknown tag kind @reqs:NET-03 \(known kinds: @item:, @req:, @profile:\)"):
+    with pytest.raises(tags.TagError, match=r"unknown tag kind @reqs:NET-03 \(known kinds: @item:, @req:, @profile:, @option:\)"):
         pytest_bdd_apply_tag("reqs:NET-03", lambda: None)
 
 

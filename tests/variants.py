@@ -7,6 +7,8 @@ subclass that changes parameters: the reference's code is never edited at run ti
 """
 from __future__ import annotations
 
+import re
+
 from sut.reference.crh2.backend import ReferenceTrain
 from sut.reference.atp.backend import ReferenceAtp
 from sut.reference.metro.backend import ReferenceMetro
@@ -620,6 +622,46 @@ FAULTY += [
 IN_BAND += [BriskMetro]
 
 
+# A metro display unit that speaks Chinese: its modes, and its event texts on the displays and in the records,
+# by the English text's pattern (<name>: a name it keeps as it is). It declares what it shows for each message
+# the features name (tests/declarations/chinese-display-metro.yaml); the texts no feature names it need not.
+METRO_MODES_ZH = {"normal": "正常", "no cab": "无激活司机室", "train network failure": "列车网络故障",
+                  "emergency operation": "紧急运行", "power-up": "上电"}
+METRO_TEXTS_ZH = {"<device>: no status data": "<device>：无状态数据",
+                  "<device>: answering again": "<device>：恢复应答",
+                  "<node>: no answer on WTB": "<node>：WTB无应答",
+                  "<node>: answering on WTB again": "<node>：WTB恢复应答",
+                  "WTB master (<node> silent)": "WTB主控转移（<node>无响应）",
+                  "MVB master of unit <unit> (<node> silent)": "单元<unit> MVB主控转移（<node>无响应）",
+                  "inputs from <module>": "采用<module>的输入",
+                  "no MVB I/O module alive": "无可用MVB I/O模块",
+                  "<bus> line <line>: fault": "<bus> <line>线故障",
+                  "<bus> line <line>: restored": "<bus> <line>线恢复",
+                  "train network failure: braking to a stop": "列车网络故障，制动停车"}
+
+
+def _in_chinese(text: str) -> str:
+    for english, chinese in METRO_TEXTS_ZH.items():
+        parts = re.split(r"(<\w+>)", english)
+        rx = "".join(f"(?P<{p[1:-1]}>[A-Za-z0-9_.]+)" if p.startswith("<") else re.escape(p) for p in parts)
+        text = re.sub(rx, lambda m: re.sub(r"<(\w+)>", lambda n: m.group(n.group(1)), chinese), text)
+    return text
+
+
+class ChineseDisplayMetro(ReferenceMetro):
+    """Freedom (localized display): the cab displays show their modes and events in Chinese, and the CCU
+    memories record the events so, declared by message identifier."""
+    DECLARATION = "tests/declarations/chinese-display-metro.yaml"
+
+    def monitor(self, cab: int) -> dict:
+        shown = super().monitor(cab)
+        return {**shown, "mode": METRO_MODES_ZH.get(shown["mode"], shown["mode"]),
+                "faults": [_in_chinese(f) for f in shown["faults"]]}
+
+    def records(self, unit: str) -> list[str]:
+        return [_in_chinese(r) for r in super().records(unit)]
+
+
 # -- VDX emergency-brake interface (profile atp, issue 7) -----------------------------------------------
 class NewFirmwarePostpones16ms(ReferenceAtp):
     """VDX-06: the new firmware still postpones a self-test only 16 ms after a release."""
@@ -789,4 +831,4 @@ class TaskTickVdx(ReferenceAtp):
 IN_BAND += [AnotherCoil, AnotherAtpRig]
 # Design freedoms a conforming product may take (issue 30), each with its own declaration: the whole suite
 # must accept them, as the in-band variants.
-FREEDOM = [ChineseDmiAtp, TaskTickVdx]
+FREEDOM = [ChineseDmiAtp, TaskTickVdx, ChineseDisplayMetro]

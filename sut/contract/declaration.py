@@ -10,6 +10,9 @@ needs to test it, read from a YAML file and checked against the form (`form.yaml
           d_sen_m: 3.0
         texts:                          # what its display shows, by message identifier
           CFSK fault: CFSK故障
+      metro-tcn:
+        texts:                          # an identifier's <name> placeholders: the text keeps each once
+          "<device>: no status data": "<device>：无状态数据"
 
 Every mistake is a `DeclarationError` naming the file, the line and the key, raised before any scenario runs.
 """
@@ -20,12 +23,15 @@ from functools import lru_cache
 from pathlib import Path
 from typing import Any
 
+import re
+
 import yaml
 
 from sut.contract.catalogue import HERE
 
 ROOT = HERE.parents[1]
 TYPES = {"integer": (int,), "number": (int, float), "string": (str,), "boolean": (bool,)}
+PLACEHOLDER = re.compile(r"<[\w-]+>")       # in a message identifier: a name the features fill in
 
 
 class DeclarationError(Exception):
@@ -166,6 +172,11 @@ def load(path: str | Path, text: str | None = None) -> Declaration:
                            f"no such message identifier; the {profile} form has {', '.join(blank['texts']) or 'none'}")
             if not isinstance(shown_text, str) or not shown_text.strip():
                 raise fail(where + ("texts", str(message)), "the text the display shows, a non-empty string")
+            wanted = sorted(PLACEHOLDER.findall(str(message)))
+            if sorted(PLACEHOLDER.findall(shown_text)) != wanted:
+                raise fail(where + ("texts", str(message)),
+                           f"the text must hold {', '.join(wanted)} once each, where the display shows those names"
+                           if wanted else "the text must hold no <name> placeholder (this identifier has none)")
         out[str(profile)] = ProfileDeclaration(str(profile), path, frozenset(options), dict(params),
                                                {str(k): v for k, v in texts.items()})
     return Declaration(path, str(raw.get("sut") or path.stem), out)

@@ -70,52 +70,44 @@ def _plain(value: Any) -> Any:
     return type(value).__name__
 
 
-class CheckedFields(Mapping):
+class CheckedFields(dict):
     """An event's fields as a step reads them: a field the contract does not list for the kind is a gap of
-    the suite; one the contract requires and the SUT left out is a breach of the SUT (never a KeyError)."""
+    the suite; one the contract requires and the SUT left out is a breach of the SUT (never a KeyError).
 
-    __slots__ = ("_fields", "_ev", "_guard")
+    Only a read by name is checked (`ev["state"]`, `ev.get("state")`); a failure message that dumps every
+    field (`dict(ev.fields)`, `repr`) is not a reading of the contract. A dict subclass that leaves iteration
+    alone gives exactly that: CPython copies such a dict without calling __getitem__."""
+
+    __slots__ = ("_ev", "_guard")
 
     def __init__(self, fields: Mapping, ev: TraceEvent, guard: "ContractDriver"):
-        self._fields, self._ev, self._guard = fields, ev, guard
-
-    def _check(self, key: str) -> None:
-        self._guard._field(self._ev, key)
+        super().__init__(fields)
+        self._ev, self._guard = ev, guard
 
     def __getitem__(self, key: str) -> Any:
-        self._check(key)
+        self._guard._field(self._ev, key)
         try:
-            return self._fields[key]
+            return dict.__getitem__(self, key)
         except KeyError:
             raise ContractBreach(
                 f"{self._ev.source} {self._ev.kind} at {self._ev.t / 1000:g} ms has no field {key!r}"
                 f"{self._guard._contract.field_note(self._ev.kind, key) if self._guard._contract else ''}") from None
 
     def get(self, key: str, default: Any = None) -> Any:
-        self._check(key)
-        return self._fields.get(key, default)
-
-    def __contains__(self, key: object) -> bool:
-        return key in self._fields
-
-    def __iter__(self) -> Iterator[str]:
-        return iter(self._fields)
-
-    def __len__(self) -> int:
-        return len(self._fields)
-
-    def __repr__(self) -> str:
-        return repr(dict(self._fields))
+        self._guard._field(self._ev, key)
+        return dict.get(self, key, default)
 
 
-class CheckedAnswer(Mapping):
+class CheckedAnswer(dict):
     """A mapping a driver method answered (the cab monitor, the rated limits, counters), as a step reads it:
-    keys the contract lists for that answer, dotted where nested (`display.mode`)."""
+    keys the contract lists for that answer, dotted where nested (`display.mode`). As for event fields, only a
+    read by name is checked; a message dumping the whole answer is not."""
 
-    __slots__ = ("_answer", "_method", "_path", "_guard")
+    __slots__ = ("_method", "_path", "_guard")
 
     def __init__(self, answer: Mapping, method: str, path: str, guard: "ContractDriver"):
-        self._answer, self._method, self._path, self._guard = answer, method, path, guard
+        super().__init__(answer)
+        self._method, self._path, self._guard = method, path, guard
 
     def _key(self, key: Any) -> str:
         dotted = f"{self._path}{key}"
@@ -130,7 +122,7 @@ class CheckedAnswer(Mapping):
     def __getitem__(self, key: Any) -> Any:
         dotted = self._key(key)
         try:
-            value = self._answer[key]
+            value = dict.__getitem__(self, key)
         except KeyError:
             raise ContractBreach(
                 f"the SUT's {self._method}() answer has no {dotted!r}"
@@ -139,19 +131,7 @@ class CheckedAnswer(Mapping):
 
     def get(self, key: Any, default: Any = None) -> Any:
         dotted = self._key(key)
-        return self._wrap(dotted, self._answer.get(key, default))
-
-    def __contains__(self, key: object) -> bool:
-        return key in self._answer
-
-    def __iter__(self) -> Iterator:
-        return iter(self._answer)
-
-    def __len__(self) -> int:
-        return len(self._answer)
-
-    def __repr__(self) -> str:
-        return repr(dict(self._answer))
+        return self._wrap(dotted, dict.get(self, key, default))
 
 
 class ContractTrace:
