@@ -39,11 +39,11 @@ class Rig:
 
 
 def _guarded(events: list[TraceEvent], outputs: dict[str, str] | None = None) -> ContractDriver:
-    return ContractDriver(Rig(events, outputs), "atp", load("atp"))
+    return ContractDriver(Rig(events, outputs), "vdx", load("vdx"))
 
 
 def test_a_step_asking_for_an_unlisted_event_kind_is_a_gap_of_the_suite() -> None:
-    with pytest.raises(ContractGap, match=r"'bogus.kind' events, which the atp contract does not list"):
+    with pytest.raises(ContractGap, match=r"'bogus.kind' events, which the vdx contract does not list"):
         _guarded([]).trace.first(kind="bogus.kind")
 
 
@@ -56,7 +56,7 @@ def test_a_step_reading_an_unlisted_field_is_a_gap_of_the_suite() -> None:
 
 def test_a_sut_leaving_out_a_required_field_fails_naming_the_event_and_the_field() -> None:
     ev = _guarded([TraceEvent(2500, "VDX", "loop.change", {})]).trace.first(kind="loop.change")
-    with pytest.raises(ContractBreach, match=r"VDX loop.change at 2.5 ms has no field 'state'; the atp contract requires it"):
+    with pytest.raises(ContractBreach, match=r"VDX loop.change at 2.5 ms has no field 'state'; the vdx contract requires it"):
         ev["state"]
     assert not isinstance(ContractBreach("x"), KeyError) and isinstance(ContractBreach("x"), AssertionError)
 
@@ -76,10 +76,13 @@ def test_a_step_passing_an_unlisted_name_or_calling_an_unlisted_method_is_a_gap(
     guarded = _guarded([], {"EB loop": "open"})
     with pytest.raises(ContractGap, match=r"'EB3R' to output\(\)"):
         guarded.output("EB3R")
-    with pytest.raises(ContractGap, match=r"called cut_line\(\) on a atp SUT"):
+    with pytest.raises(ContractGap, match=r"called cut_line\(\) on a vdx SUT"):
         guarded.cut_line
+    with pytest.raises(ContractGap, match=r"called monitor\(\) on a vdx SUT"):
+        guarded.monitor(1)                            # the VDX rig has no DMI: the 200C ATP's has
+    atp = ContractDriver(Rig([]), "atp", load("atp"))
     with pytest.raises(ContractGap, match=r"'status' of the SUT's monitor\(\) answer"):
-        guarded.monitor(1)["status"]
+        atp.monitor(1)["status"]
 
 
 def test_an_unreadable_contract_file_names_the_file_and_entry(tmp_path: Path) -> None:
@@ -91,9 +94,9 @@ def test_an_unreadable_contract_file_names_the_file_and_entry(tmp_path: Path) ->
 
 def test_a_record_of_a_run_finds_stale_entries() -> None:
     """The check a whole run's record gets in make test: an entry no step reads is reported by its path."""
-    found = problems({"atp": {"methods": {}, "events": {}}}, ["atp"])
-    assert "sut/contract/atp.yaml: methods.power_on: no step calls it" in found
-    assert any(line.startswith("sut/contract/atp.yaml: events.loop.change: no step reads it") for line in found)
+    found = problems({"vdx": {"methods": {}, "events": {}}}, ["vdx"])
+    assert "sut/contract/vdx.yaml: methods.power_on: no step calls it" in found
+    assert any(line.startswith("sut/contract/vdx.yaml: events.loop.change: no step reads it") for line in found)
 
 
 @pytest.mark.parametrize("profile", PROFILES)

@@ -22,8 +22,10 @@ ROOT = Path(__file__).resolve().parents[1]
 GOOD_ATP = """\
 sut: vendor
 profiles:
-  atp:
+  vdx:
     options: [vdx-new-firmware]
+    parameters: {timing_resolution_us: 1000}
+  atp:
     parameters:
       timing_resolution_us: 1000
       d_sen_m: 3.0
@@ -54,8 +56,9 @@ def _write(tmp_path: Path, text: str) -> Path:
 
 
 def test_a_good_declaration_gives_its_options_parameters_and_texts(tmp_path: Path) -> None:
-    atp = load(_write(tmp_path, GOOD_ATP)).of("atp")
-    assert atp.claims("vdx-new-firmware") and not atp.claims("vdx-old-firmware")
+    found = load(_write(tmp_path, GOOD_ATP))
+    atp, vdx = found.of("atp"), found.of("vdx")
+    assert vdx.claims("vdx-new-firmware") and not vdx.claims("vdx-old-firmware") and not atp.claims("vdx-new-firmware")
     assert atp.parameter("timing_resolution_us") == 1000
     assert atp.text("CFSK fault") == "CFSK故障"
     assert atp.text("DEF fault") == "DEF fault"          # not declared: the message identifier itself
@@ -63,16 +66,16 @@ def test_a_good_declaration_gives_its_options_parameters_and_texts(tmp_path: Pat
 
 @pytest.mark.parametrize(("change", "where", "why"), [
     (("sut: vendor\n", "sut: vendor\nvendor: x\n"), ":2: vendor:", "unknown key"),
-    (("  atp:\n", "  tram:\n"), ":3: profiles.tram:", "no such profile"),
-    (("[vdx-new-firmware]", "[vdx-newest-firmware]"), ":4: profiles.atp.options.vdx-newest-firmware:", "not an option"),
-    (("      d_sen_m: 3.0\n", "      d_sen_m: 3.0\n      dsen: 3\n"), ":8: profiles.atp.parameters.dsen:", "unknown parameter"),
-    (("d_sen_m: 3.0", "d_sen_m: 300"), ":7: profiles.atp.parameters.d_sen_m:", "out of range: 0..30 (ATP-02)"),
-    (("d_sen_m: 3.0", "d_sen_m: three"), ":7: profiles.atp.parameters.d_sen_m:", "is not a number"),
-    (("timing_resolution_us: 1000", "timing_resolution_us: 0.5"), ":6: profiles.atp.parameters.timing_resolution_us:",
+    (("  atp:\n", "  tram:\n"), ":6: profiles.tram:", "no such profile"),
+    (("[vdx-new-firmware]", "[vdx-newest-firmware]"), ":4: profiles.vdx.options.vdx-newest-firmware:", "not an option"),
+    (("      d_sen_m: 3.0\n", "      d_sen_m: 3.0\n      dsen: 3\n"), ":10: profiles.atp.parameters.dsen:", "unknown parameter"),
+    (("d_sen_m: 3.0", "d_sen_m: 300"), ":9: profiles.atp.parameters.d_sen_m:", "out of range: 0..30 (ATP-02)"),
+    (("d_sen_m: 3.0", "d_sen_m: three"), ":9: profiles.atp.parameters.d_sen_m:", "is not a number"),
+    (("timing_resolution_us: 1000", "timing_resolution_us: 0.5"), ":5: profiles.vdx.parameters.timing_resolution_us:",
      "is not an integer"),
-    (("      cfsk_period_ms: 50\n", ""), ":5: profiles.atp.parameters:", "missing needed parameter(s) cfsk_period_ms"),
-    (("CFSK fault: CFSK故障", "CFSK failure: CFSK故障"), ":12: profiles.atp.texts.CFSK failure:", "no such message"),
-    (("CFSK fault: CFSK故障", "CFSK fault: ''"), ":12: profiles.atp.texts.CFSK fault:", "non-empty string"),
+    (("      cfsk_period_ms: 50\n", ""), ":7: profiles.atp.parameters:", "missing needed parameter(s) cfsk_period_ms"),
+    (("CFSK fault: CFSK故障", "CFSK failure: CFSK故障"), ":14: profiles.atp.texts.CFSK failure:", "no such message"),
+    (("CFSK fault: CFSK故障", "CFSK fault: ''"), ":14: profiles.atp.texts.CFSK fault:", "non-empty string"),
     (("    options: [vdx-new-firmware]\n", "    options: [vdx-new-firmware\n"), ":", "not YAML"),
 ])
 def test_every_mistake_names_file_line_and_key(tmp_path: Path, change: tuple[str, str], where: str, why: str) -> None:
@@ -114,7 +117,7 @@ def test_a_bad_declaration_stops_the_run_before_any_scenario(tmp_path: Path) -> 
     run = subprocess.run([sys.executable, "-m", "pytest", "features", "-q", "-p", "no:cacheprovider", "-p", "no:xdist",
                           "--profile", "atp", f"--declaration={path}"], cwd=ROOT, capture_output=True, text=True)
     assert run.returncode == 4, run.stdout[-2000:] + run.stderr[-2000:]
-    assert f"{path}:7: profiles.atp.parameters.d_sen_m: -1 m is out of range" in run.stderr
+    assert f"{path}:9: profiles.atp.parameters.d_sen_m: -1 m is out of range" in run.stderr
     assert "passed" not in run.stdout and "failed" not in run.stdout
 
 

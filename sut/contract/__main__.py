@@ -1,18 +1,18 @@
 """python -m sut.contract check|update RECORD... | render: hold a run's record (pytest features --contract-record
-RECORD) against the catalogue, refresh the catalogue's read_by lists from it, or write docs/implementing-a-sut.md
-from the catalogue and the declaration form."""
+RECORD) against the catalogue, refresh the catalogue's read_by lists from it (prune: also drop what no step of
+the run read), or write docs/implementing-a-sut.md from the catalogue and the declaration form."""
 from __future__ import annotations
 
 import argparse
 import sys
 from pathlib import Path
 
-from sut.contract.record import merge, problems, update
+from sut.contract.record import merge, problems, prune, update
 
 
 def main(argv: list[str] | None = None) -> int:
     parser = argparse.ArgumentParser(prog="python -m sut.contract", description=__doc__)
-    parser.add_argument("command", choices=("check", "update", "render"))
+    parser.add_argument("command", choices=("check", "update", "prune", "render"))
     parser.add_argument("record", nargs="*", type=Path, help="the --contract-record FILE of a run (FILE.<worker> too)")
     parser.add_argument("--profile", action="append", default=[], help="only these profiles (default: all recorded)")
     parser.add_argument("--partial", action="store_true",
@@ -30,9 +30,9 @@ def main(argv: list[str] | None = None) -> int:
         print(f"no record found at {', '.join(map(str, args.record))}", file=sys.stderr)
         return 2
     profiles = args.profile or sorted(record)
-    if args.command == "update":
+    if args.command in ("update", "prune"):
         for profile in profiles:
-            print(f"updated {update(record, profile)}")
+            print(f"{args.command}d {(update if args.command == 'update' else prune)(record, profile)}")
         return 0
     found = problems(record, profiles)
     if args.partial:

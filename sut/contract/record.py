@@ -118,3 +118,40 @@ def update(record: dict, profile: str) -> Path:
         entry["read_by"] = sorted(got.get("steps", []))
     path.write_text(yaml.safe_dump(raw, sort_keys=False, allow_unicode=True, width=110), encoding="utf-8")
     return path
+
+
+def prune(record: dict, profile: str) -> Path:
+    """Drop from a profile's contract every entry no step of the recorded run reads (a contract split off
+    another profile's keeps only what its own steps need), then refresh the read_by lists."""
+    import fnmatch
+    path = HERE / f"{profile}.yaml"
+    raw = yaml.safe_load(path.read_text(encoding="utf-8"))
+    seen = record.get(profile, {})
+    raw["methods"] = {m: n for m, n in (raw.get("methods") or {}).items() if m in seen.get("methods", {})}
+    for section in SECTIONS:
+        entries = (raw.get("names") or {}).get(section) or {}
+        used = seen.get(section, {})
+        kept = {name: entry for name, entry in entries.items()
+                if any(n == name or fnmatch.fnmatchcase(n, name) for n in used)}
+        if kept:
+            raw["names"][section] = kept
+        else:
+            (raw.get("names") or {}).pop(section, None)
+    answers = raw.get("answers") or {}
+    for method in list(answers):
+        used = {n.split(": ", 1)[1] for n in seen.get("answers", {}) if n.startswith(method + ": ")}
+        answers[method] = {k: v for k, v in answers[method].items()
+                           if any(u == k or fnmatch.fnmatchcase(u, k) for u in used)}
+        if not answers[method]:
+            del answers[method]
+    events = raw.get("events") or {}
+    for kind in list(events):
+        got = seen.get("events", {}).get(kind)
+        if got is None:
+            del events[kind]
+            continue
+        fields = events[kind].get("fields") or {}
+        events[kind]["fields"] = {f: spec for f, spec in fields.items() if f in got.get("fields", [])}
+    path.write_text(yaml.safe_dump(raw, sort_keys=False, allow_unicode=True, width=110), encoding="utf-8")
+    load.cache_clear()
+    return update(record, profile)

@@ -9,7 +9,7 @@ from sut.contract.catalogue import HERE, load
 from sut.contract.declaration import form
 
 GUIDE = HERE.parents[1] / "docs" / "implementing-a-sut.md"
-PROFILE_ORDER = ("crh2", "metro-tcn", "atp")
+PROFILE_ORDER = ("crh2", "metro-tcn", "atp", "atp-crh2", "vdx")
 
 
 def _oneline(text: object) -> str:

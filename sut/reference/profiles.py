@@ -1,8 +1,8 @@
 """`reference`: the embedded reference trains, one backend name for every profile they implement.
 
 Like python-can's `Bus(interface=...)`, opening the backend gives the class of the train asked for:
-`crh2` (sut/reference/crh2/backend.py), `metro-tcn` (sut/reference/metro/backend.py) or `atp`
-(sut/reference/atp/backend.py).
+`crh2` (sut/reference/crh2/backend.py), `metro-tcn` (sut/reference/metro/backend.py), or `atp`, `vdx` and
+`atp-crh2` (sut/reference/atp/backend.py: the 200C ATP rig, the 300T VDX rig, the ATP fitted to a CRH2 set).
 """
 from __future__ import annotations
 
@@ -12,7 +12,8 @@ from sut.reference.crh2.backend import ReferenceTrain
 from sut.reference.atp.backend import ReferenceAtp
 from sut.reference.metro.backend import ReferenceMetro
 
-TRAINS: dict[str, type[TrainDriver]] = {"crh2": ReferenceTrain, "metro-tcn": ReferenceMetro, "atp": ReferenceAtp}
+TRAINS: dict[str, type[TrainDriver]] = {"crh2": ReferenceTrain, "metro-tcn": ReferenceMetro, "atp": ReferenceAtp,
+                                        "vdx": ReferenceAtp, "atp-crh2": ReferenceAtp}
 
 
 class Reference(TrainDriver):

@@ -1,4 +1,4 @@
-@item:F-ATP-04 @profile:atp @req:TST-04
+@item:F-ATP-04 @profile:vdx @req:TST-04
 Feature: F-ATP-04 VDX emergency-brake loop: EB1R and EB2R in series, the isolation switch, the supply range
   Requirements: VDX-01 (primary), VDX-02, VDX-04, TST-04.
   The ATP opens the train's emergency-brake loop through EB1R (energised = brake, HR output) and EB2R

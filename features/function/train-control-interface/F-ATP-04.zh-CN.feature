@@ -1,5 +1,5 @@
 # language: zh-CN
-@item:F-ATP-04 @profile:atp @req:TST-04
+@item:F-ATP-04 @profile:vdx @req:TST-04
 功能: F-ATP-04 VDX紧急制动回路:EB1R与EB2R串联、ATP隔离开关、供电电压范围
   需求:VDX-01(主)、VDX-02、VDX-04、TST-04。
   ATP通过串联的EB1R(得电施加制动,HR输出)和EB2R(失电施加制动,FS输出)断开列车紧急制动回路;ATP隔离开关

@@ -1,4 +1,4 @@
-@item:F-ATP-05 @profile:atp @req:TST-04
+@item:F-ATP-05 @profile:vdx @req:TST-04
 Feature: F-ATP-05 FS output self-test every 5 s, 3 ms, sampled from the 2nd ms against 6 V
   Requirements: VDX-03 (primary), VDX-04, TST-04.
   Every 5 s the VDX removes one of the four excitation sources of the FS output for 3 ms and samples the

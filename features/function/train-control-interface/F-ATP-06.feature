@@ -1,4 +1,4 @@
-@item:F-ATP-06 @profile:atp @req:TST-04
+@item:F-ATP-06 @profile:vdx @req:TST-04
 Feature: F-ATP-06 C019: a release just before the FS self-test, by firmware and FS voltage
   Requirements: VDX-05 (primary), VDX-06, VDX-03, TST-04.
   The field fault C019 (seed 003): a brake released less than 30 ms before an FS self-test leaves the

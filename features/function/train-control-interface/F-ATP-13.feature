@@ -1,4 +1,4 @@
-@item:F-ATP-13 @profile:atp @req:TST-04
+@item:F-ATP-13 @profile:atp-crh2 @req:TST-04
 Feature: F-ATP-13 The ATP's brake reaches the train: traction suppressed, brake commanded (ILK-08)
   Requirements: ATP-02 (primary), ATP-11, VDX-01, ILK-08, CMD-02, CMD-05, TST-04.
   The ATP fitted to a CRH2 train set: its maximum service brake reaches the train as an ATP brake, which

@@ -48,7 +48,9 @@ SUPPLIES = ("VDX", "train 110V")
 
 class ReferenceAtp(PickledState, TrainDriver):
     backend_name = "reference"
-    PROFILES = ("atp",)
+    # One rig, three products' views of it: the 200C ATP alone (`atp`), the 300T VDX interface alone (`vdx`)
+    # and the 200C ATP fitted to a CRH2 set (`atp-crh2`, ILK-08). A vendor of one declares only its own.
+    PROFILES = ("atp", "vdx", "atp-crh2")
     DETERMINISTIC = True           # virtual time, no randomness, nothing outside the model
     DECLARATION = "sut/reference/declaration.yaml"
     VDX: ClassVar[dict[str, Any]] = {}
@@ -320,8 +322,14 @@ class ReferenceAtp(PickledState, TrainDriver):
         self._emit("VDX", "supply.on")
         self.vdx.power_on()
 
+    @classmethod
+    def open(cls, profile: str | None = None) -> "ReferenceAtp":
+        driver = super().open(profile)
+        driver.profile = profile or cls.PROFILES[0]       # what the report files its description under
+        return driver
+
     def describe(self) -> dict[str, str]:
         v = self._cfg.vdx
         return {"SUT backend": self.backend_name, "SUT class": f"{type(self).__module__}.{type(self).__qualname__}",
-                "profile": "atp", "VDX": f"FS self-test every {v.selftest_period_us / 1e6:g} s, "
+                "profile": getattr(self, "profile", "atp"), "VDX": f"FS self-test every {v.selftest_period_us / 1e6:g} s, "
                                          f"{v.selftest_removal_us / 1000:g} ms, threshold {v.low_threshold_v:g} V"}
