@@ -26,7 +26,7 @@ sys.path.insert(0, str(Path(__file__).resolve().parent))
 from _table import table  # noqa: E402
 
 ROOT = Path(__file__).resolve().parents[1]
-PROFILES = ("crh2", "metro-tcn", "atp")
+PROFILES = ("crh2", "metro-tcn", "atp", "vdx", "atp-crh2")
 
 
 def count(profile: str, extra: list[str]) -> tuple[dict[str, int], float, str]:

@@ -20,12 +20,18 @@ PROFILE_BACKGROUND = {
     "metro-tcn": ["Given a 6-car metro train with its train control and diagnosis system",
                   "And the driver has inserted the key in cab 1", "And the train has been powered up for 1000 ms"],
     "atp": ["Given a CTCS-2 200C on-board ATP on the test rig", "And the ATP has completed its start-up self-test"],
+    "vdx": ["Given a CTCS3-300T ATP with its VDX emergency-brake interface",
+            "And the train has been powered up for 1000 ms", "And the ATP has released the emergency brake"],
+    "atp-crh2": ["Given a CTCS-2 200C on-board ATP fitted to an 8-car CRH2 train set",
+                 "And the ATP has completed its start-up self-test"],
 }
 # A first check that already runs (the engineer replaces it), per profile.
 PROFILE_FIRST_CHECK = {
     "crh2": "Then every car has an LCU on the ring and every cab car a CCU with systems 1 and 2",
     "metro-tcn": 'Then the cab 1 display shows the mode "normal"',
     "atp": "Then the ATP is in mode SB",
+    "vdx": "Then the emergency-brake loop stays closed",
+    "atp-crh2": "Then the ATP is in mode SB",
 }
 
 
