@@ -51,8 +51,11 @@ Feature: F-ATP-04 VDX emergency-brake loop: EB1R and EB2R in series, the isolati
       | 110   |
       | 137.5 |
 
-  @req:VDX-02
-  Scenario Outline: F-ATP-04 Outside 70-125 % of 110 V (<volts> V) the VDX brakes
+  # VDX-02 gives the range it works in, not where it stops: a supply just outside may still be worked. Well
+  # outside it, the project reads the fail-safe principle as a brake (docs/decisions.md, "VDX outside its
+  # supply range"): a decision, hence @tentative, tested far from the edges.
+  @req:VDX-02 @tentative
+  Scenario Outline: F-ATP-04 Far outside 70-125 % of 110 V (<volts> V) the VDX brakes
     Given the ATP has released the emergency brake
     When 100 ms pass
     And the VDX supply goes to <volts> V
@@ -61,5 +64,5 @@ Feature: F-ATP-04 VDX emergency-brake loop: EB1R and EB2R in series, the isolati
 
     Examples:
       | volts |
-      | 76    |
-      | 138   |
+      | 50    |
+      | 165   |
