@@ -12,6 +12,7 @@ from __future__ import annotations
 
 import re
 
+import pytest
 from pytest_bdd import given, parsers, then, when
 
 from sut.contract.declaration import ProfileDeclaration
@@ -62,10 +63,29 @@ def _(sut: TrainDriver) -> int:
 @given(parsers.parse("the train is at {pos:g} m running at {kmh:g} km/h"))
 @when(parsers.parse("将列车置于{pos:g} m处,速度设为{kmh:g} km/h"), target_fixture="t_action")
 @when(parsers.parse("the train is set to {pos:g} m running at {kmh:g} km/h"), target_fixture="t_action")
-def _(sut: TrainDriver, pos: float, kmh: float) -> int:
+def _(sut: TrainDriver, motion: dict, pos: float, kmh: float) -> int:
     sut.set_input("position", pos)
     sut.set_input("speed", kmh)
+    motion.update(pos=pos, kmh=kmh, t=sut.now_us)
     return sut.now_us
+
+
+@pytest.fixture
+def motion() -> dict:
+    """Where the train was put and how fast it runs ({pos, kmh, t}), for steps that run it to a place."""
+    return {}
+
+
+@when(parsers.parse("列车行驶至接收范围后端越过{boundary:g} m处"))
+@when(parsers.parse("the train runs until the rear of the receiver range has passed {boundary:g} m"))
+def _(sut: TrainDriver, declaration: ProfileDeclaration, motion: dict, boundary: float) -> None:
+    """Run as long as the SUT's own figures need (its declared D_Sen, uncertainty and decode delay put the
+    edge), plus one comparison period and a second: a fixed wait would cap what a SUT may declare."""
+    assert motion.get("kmh"), "the train was not set running (the train is at <pos> m running at <kmh> km/h)"
+    edge = _rear_edge(declaration, boundary, motion["kmh"])
+    travel_s = max(0.0, edge - motion["pos"]) / (motion["kmh"] / 3.6)
+    until = motion["t"] + us(travel_s * 1000 + declaration.parameter("cfsk_period_ms") + 1000)
+    sut.advance(max(0, until - sut.now_us))
 
 
 @given(parsers.parse("列车静止于{boundary:g} m区段分界点的前端临界位置前方{delta:g} m处"))

@@ -30,7 +30,7 @@ Feature: F-ATP-08 Carrier consistency against the balise's track circuits, at bo
     Given the signal generator sends 1700 Hz with code L
     And the train is at 960 m running at <kmh> km/h
     And the train has passed balise group "2-1-1-1" describing track circuits 0-1000 m 1700 Hz, 1000-2000 m 2300 Hz and an end of authority at 3000 m
-    When 6 s pass
+    When the train runs until the rear of the receiver range has passed 1000 m
     Then the ATP declares the carrier inconsistent as the rear of the receiver range passes 1000 m at <kmh> km/h
     And the ATP commands max service brake
     And the DMI shows "carrier inconsistent"
@@ -49,7 +49,7 @@ Feature: F-ATP-08 Carrier consistency against the balise's track circuits, at bo
     And the train has passed balise group "2-1-1-1" describing track circuits 0-1000 m 1700 Hz, 1000-2000 m 2300 Hz and an end of authority at 3000 m
     When the ATP input "ATO start" is set
     Then the ATP is in mode AM
-    When 6 s pass
+    When the train runs until the rear of the receiver range has passed 1000 m
     Then the ATP declares the carrier inconsistent as the rear of the receiver range passes 1000 m at 72 km/h
     And the ATP commands max service brake
 
