@@ -9,8 +9,9 @@ from __future__ import annotations
 
 from pytest_bdd import parsers, then
 
+from sut.contract.declaration import ProfileDeclaration
 from sut.driver import TrainDriver
-from steps import analysis, zh
+from steps import analysis, messages, zh
 from steps.analysis import ms, same_value, us
 
 
@@ -91,8 +92,10 @@ def _(sut: TrainDriver, cab: int, node: str) -> None:
     assert fed_by == node, f"the cab {cab} monitor is fed by {fed_by}, not {node}"
 
 
-@then(parsers.parse('{cab:d}号司机室监视器显示"{text}"且无其他故障'))
+@then(parsers.parse('{cab:d}号司机室监视器显示"{text}"且无其他故障'), converters={"text": zh.crh2_fault})
 @then(parsers.parse('the cab {cab:d} monitor shows "{text}" and no other fault'))
-def _(sut: TrainDriver, cab: int, text: str) -> None:
+def _(sut: TrainDriver, declaration: ProfileDeclaration, cab: int, text: str) -> None:
+    pattern, said = messages.message(declaration, text, "faults")     # in the SUT's declared words
     faults = sut.monitor(cab)["faults"]
-    assert faults == [text], f"the cab {cab} monitor shows {faults or 'no faults'}, expected only {text!r}"
+    assert len(faults) == 1 and pattern.fullmatch(faults[0]), \
+        f"the cab {cab} monitor shows {faults or 'no faults'}, expected only {said}"

@@ -4,17 +4,19 @@ on mileage, service equipment, device interfaces, data recording, maintenance an
 Watching the cab monitor: what the monitor shows as faults is a snapshot (`sut.monitor(cab)["faults"]`),
 not a trace event, so "shows it within N ms" needs the monitor looked at while time passes. The When step
 "the cab N monitor is watched for M ms" lets the time pass in 1 ms steps and notes what was shown at each
-step; the Then steps read those notes. Several watches in one scenario add up (same cab).
+step; the Then steps read those notes. Several watches in one scenario add up (same cab). The monitor's fault
+texts and its maintenance view are read in the SUT's declared words (steps/messages.py).
 """
 from __future__ import annotations
 
-from typing import Any
+from typing import Any, Callable, Iterable
 
 import pytest
 from pytest_bdd import parsers, then, when
 
+from sut.contract.declaration import ProfileDeclaration
 from sut.driver import TrainDriver
-from steps import analysis, zh
+from steps import analysis, messages, zh
 from steps.analysis import ms, us
 
 WATCH_STEP_US = 1000
@@ -46,33 +48,46 @@ def _(sut: TrainDriver, monitor_watch: dict[str, Any] | None, cab: int, span: in
     return {"cab": cab, "samples": samples}
 
 
-@then(parsers.parse('{cab:d}号司机室监视器在{bound:g} ms内显示出"{text}"'))
+# The fault texts watched are read in the SUT's own words: the feature names a message of the form
+# (sut/contract/form.yaml, crh2 texts, view faults) and the SUT's declaration words it (steps/messages.py).
+def _fault(declaration: ProfileDeclaration, text: str) -> tuple[Callable[[Iterable[str]], bool], str]:
+    """(does a fault text shown say the feature's `text`, how to say it in a failure message)."""
+    pattern, said = messages.message(declaration, text, "faults")
+    return (lambda shown: any(pattern.fullmatch(f) for f in shown)), said
+
+
+@then(parsers.parse('{cab:d}号司机室监视器在{bound:g} ms内显示出"{text}"'), converters={"text": zh.crh2_fault})
 @then(parsers.parse('the cab {cab:d} monitor showed "{text}" within {bound:g} ms'))
-def _(monitor_watch: dict[str, Any] | None, t_action: int, cab: int, text: str, bound: float) -> None:
+def _(monitor_watch: dict[str, Any] | None, declaration: ProfileDeclaration, t_action: int, cab: int, text: str,
+      bound: float) -> None:
     """Measured from the last action; if the text was already shown when the watch began, the watch's
     start counts as the moment it appeared (an upper bound of the delay)."""
+    says, said = _fault(declaration, text)
     samples = [(t, shown) for t, shown in _watched(monitor_watch, cab) if t >= t_action]
-    hit = next((t for t, shown in samples if text in shown), None)
-    assert hit is not None, (f"the cab {cab} monitor never showed {text!r} in {ms(samples[-1][0] - t_action)}; "
+    hit = next((t for t, shown in samples if says(shown)), None)
+    assert hit is not None, (f"the cab {cab} monitor never showed {said} in {ms(samples[-1][0] - t_action)}; "
                              f"it showed {sorted({f for _, shown in samples for f in shown}) or 'no faults'}")
-    assert hit - t_action <= us(bound), f"{text!r} was shown {ms(hit - t_action)} after the action, limit {bound} ms"
+    assert hit - t_action <= us(bound), f"{said} was shown {ms(hit - t_action)} after the action, limit {bound} ms"
 
 
-@then(parsers.parse('{cab:d}号司机室监视器在{bound:g} ms内不再显示"{text}"'))
+@then(parsers.parse('{cab:d}号司机室监视器在{bound:g} ms内不再显示"{text}"'), converters={"text": zh.crh2_fault})
 @then(parsers.parse('the cab {cab:d} monitor stopped showing "{text}" within {bound:g} ms'))
-def _(monitor_watch: dict[str, Any] | None, t_action: int, cab: int, text: str, bound: float) -> None:
+def _(monitor_watch: dict[str, Any] | None, declaration: ProfileDeclaration, t_action: int, cab: int, text: str,
+      bound: float) -> None:
+    says, said = _fault(declaration, text)
     samples = [(t, shown) for t, shown in _watched(monitor_watch, cab) if t >= t_action]
-    assert samples and text not in samples[-1][1], f"the cab {cab} monitor still shows {text!r}"
-    shown_at = [t for t, shown in samples if text in shown]
+    assert samples and not says(samples[-1][1]), f"the cab {cab} monitor still shows {said}"
+    shown_at = [t for t, shown in samples if says(shown)]
     gone = t_action if not shown_at else next(t for t, shown in samples if t > shown_at[-1])
-    assert gone - t_action <= us(bound), f"{text!r} was shown until {ms(gone - t_action)} after the action, limit {bound} ms"
+    assert gone - t_action <= us(bound), f"{said} was shown until {ms(gone - t_action)} after the action, limit {bound} ms"
 
 
-@then(parsers.parse('{cab:d}号司机室监视器始终未显示"{text}"'))
+@then(parsers.parse('{cab:d}号司机室监视器始终未显示"{text}"'), converters={"text": zh.crh2_fault})
 @then(parsers.parse('the cab {cab:d} monitor never showed "{text}"'))
-def _(monitor_watch: dict[str, Any] | None, cab: int, text: str) -> None:
-    shown_at = [t for t, shown in _watched(monitor_watch, cab) if text in shown]
-    assert not shown_at, f"the cab {cab} monitor showed {text!r} at {ms(shown_at[0])}"
+def _(monitor_watch: dict[str, Any] | None, declaration: ProfileDeclaration, cab: int, text: str) -> None:
+    says, said = _fault(declaration, text)
+    shown_at = [t for t, shown in _watched(monitor_watch, cab) if says(shown)]
+    assert not shown_at, f"the cab {cab} monitor showed {said} at {ms(shown_at[0])}"
 
 
 @then(parsers.parse("{cab:d}号司机室监视器始终未显示任何故障"))
@@ -86,12 +101,14 @@ def _(monitor_watch: dict[str, Any] | None, cab: int) -> None:
                     "每次静默在{bound:g} ms内结束"))
 @then(parsers.parse("the cab {cab:d} monitor showed no fault but the silences of a token regeneration, "
                     "each over within {bound:g} ms"))
-def _(monitor_watch: dict[str, Any] | None, cab: int, bound: float) -> None:
+def _(monitor_watch: dict[str, Any] | None, declaration: ProfileDeclaration, cab: int, bound: float) -> None:
     """A frame damaged on the fibre may be the token; PRO-05 then regenerates it, and nodes are silent for a
     little longer than the monitor's status limit. That is the protocol recovering, so the only faults
-    allowed are "no status data" alarms, and each spell of them must end within `bound` ms."""
+    allowed are "no status data" alarms (in the SUT's declared words), and each spell of them must end within
+    `bound` ms."""
+    silent, _ = messages.message(declaration, "no status data from <node>", "faults")
     samples = _watched(monitor_watch, cab)
-    others = sorted({f for _, shown in samples for f in shown if not f.startswith("no status data from ")})
+    others = sorted({f for _, shown in samples for f in shown if not silent.fullmatch(f)})
     assert not others, f"the cab {cab} monitor showed {others}"
     began = None
     for t, shown in samples + [(samples[-1][0], ())]:
@@ -103,18 +120,20 @@ def _(monitor_watch: dict[str, Any] | None, cab: int, bound: float) -> None:
     assert not samples[-1][1], f"the cab {cab} monitor still shows {list(samples[-1][1])}"
 
 
-@then(parsers.parse('{cab:d}号司机室监视器除"{text}"外未显示任何故障'))
+@then(parsers.parse('{cab:d}号司机室监视器除"{text}"外未显示任何故障'), converters={"text": zh.crh2_fault})
 @then(parsers.parse('the cab {cab:d} monitor showed no fault but "{text}"'))
-def _(monitor_watch: dict[str, Any] | None, cab: int, text: str) -> None:
-    others = sorted({f for _, shown in _watched(monitor_watch, cab) for f in shown if f != text})
+def _(monitor_watch: dict[str, Any] | None, declaration: ProfileDeclaration, cab: int, text: str) -> None:
+    pattern, _ = messages.message(declaration, text, "faults")      # in the SUT's declared words
+    others = sorted({f for _, shown in _watched(monitor_watch, cab) for f in shown if not pattern.fullmatch(f)})
     assert not others, f"the cab {cab} monitor also showed {others}"
 
 
-@then(parsers.parse('{cab:d}号司机室监视器不显示"{text}"'))
+@then(parsers.parse('{cab:d}号司机室监视器不显示"{text}"'), converters={"text": zh.crh2_fault})
 @then(parsers.parse('the cab {cab:d} monitor does not show "{text}"'))
-def _(sut: TrainDriver, cab: int, text: str) -> None:
+def _(sut: TrainDriver, declaration: ProfileDeclaration, cab: int, text: str) -> None:
+    says, said = _fault(declaration, text)
     faults = sut.monitor(cab)["faults"]
-    assert text not in faults, f"the cab {cab} monitor shows {text!r}"
+    assert not says(faults), f"the cab {cab} monitor shows {said}"
 
 
 # -- vehicle-level interfaces (NET-09) ------------------------------------------------------------------
@@ -255,9 +274,10 @@ def _(sut: TrainDriver, cab: int, count: int) -> None:
     assert len(history) == count, f"the maintenance view of cab {cab} holds {len(history)} lines: {history}"
 
 
-@then(parsers.parse('{cab:d}号司机室的检修画面未列出"{text}"'))
+@then(parsers.parse('{cab:d}号司机室的检修画面未列出"{text}"'), converters={"text": zh.crh2_record})
 @then(parsers.parse('the maintenance view of cab {cab:d} does not list "{text}"'))
-def _(sut: TrainDriver, cab: int, text: str) -> None:
+def _(sut: TrainDriver, declaration: ProfileDeclaration, cab: int, text: str) -> None:
+    pattern, said = messages.message(declaration, text, "maintenance")     # in the SUT's declared words
     history = sut.monitor(cab)["maintenance"]
-    odd = [line for line in history if text in line]
-    assert not odd, f"the maintenance view of cab {cab} lists {odd}"
+    odd = [line for line in history if pattern.search(line)]
+    assert not odd, f"the maintenance view of cab {cab} lists {said}: {odd}"

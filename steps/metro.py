@@ -13,13 +13,12 @@ import re
 from pytest_bdd import given, parsers, then, when
 
 from sut.codecs import mvb
-from sut.contract.declaration import PLACEHOLDER, ProfileDeclaration, form
+from sut.contract.declaration import PLACEHOLDER, ProfileDeclaration
 from sut.driver import TrainDriver
-from steps import zh
+from steps import messages, zh
 from steps.analysis import describe, intervals, ms, us
 
 QUOTED = re.compile(r'"([^"]+)"')
-NAME = "[A-Za-z0-9_.]+"         # what a feature fills in for a message's <name>: car4.VVVF, unit1.MVB, WTB, A
 
 
 def _names(text: str) -> list[str]:
@@ -39,17 +38,8 @@ def _polls(sut: TrainDriver, bus: str, since: int) -> list:
     return sut.trace.select(kind=kind, source=bus, since=since)
 
 
-def _messages() -> dict:
-    return form()["metro-tcn"]["texts"]
-
-
-def _regex(template: str, fill) -> str:
-    """`template` as a regular expression: its words literally, each <name> placeholder as `fill(name)` gives."""
-    out, at = [], 0
-    for m in PLACEHOLDER.finditer(template):
-        out += [re.escape(template[at:m.start()]), fill(m.group())]
-        at = m.end()
-    return "".join(out) + re.escape(template[at:])
+def _messages() -> list[str]:
+    return messages.identifiers("metro-tcn")
 
 
 def _mode(declaration: ProfileDeclaration, mode: str) -> str:
@@ -60,27 +50,9 @@ def _mode(declaration: ProfileDeclaration, mode: str) -> str:
 
 
 def _message(declaration: ProfileDeclaration, text: str) -> tuple[re.Pattern, str]:
-    """How to find the feature's `text` in a display entry or a record line in the SUT's own words: the message
-    identifier it fills in (`car4.VVVF: no status data` fills `<device>: no status data`) worded as the SUT
-    declares it, with the feature's names. A text with the words of an identifier only (`no status data`)
-    stands for any name. Answers the pattern to search for and how to say it in a message."""
-    full, partial = [], []
-    for identifier in _messages():
-        names = [m.group() for m in PLACEHOLDER.finditer(identifier)]
-        found = re.fullmatch(_regex(identifier, lambda _: f"({NAME})"), text)
-        if found:
-            full.append((identifier, dict(zip(names, found.groups()))))
-        elif any(text in words for words in PLACEHOLDER.split(identifier)):
-            partial.append((identifier, {}))
-    candidates = full or partial
-    if len(candidates) != 1:
-        raise ValueError(f"the text {text!r} names {'several' if candidates else 'no'} message identifier(s) of the "
-                         f"metro-tcn form (sut/contract/form.yaml): {[c for c, _ in candidates] or list(_messages())}")
-    identifier, names = candidates[0]
-    declared = declaration.text(identifier)
-    pattern = re.compile(_regex(declared, lambda p: re.escape(names[p]) if p in names else ".+?"))
-    shown = PLACEHOLDER.sub(lambda m: names.get(m.group(), m.group()), declared)
-    return pattern, repr(text) if shown == text else f"{text!r} (declared as {shown!r})"
+    """How to find the feature's `text` in a display entry or a record line in the SUT's own words
+    (steps/messages.py): the pattern to search for and how to say it in a message."""
+    return messages.message(declaration, text)
 
 
 # -- composition and desk -------------------------------------------------------------------------

@@ -8,8 +8,9 @@ from __future__ import annotations
 
 from pytest_bdd import given, parsers, then, when
 
+from sut.contract.declaration import ProfileDeclaration
 from sut.driver import TrainDriver
-from steps import analysis, zh
+from steps import analysis, messages, zh
 from steps.analysis import ms, same_value, us
 
 
@@ -67,22 +68,31 @@ def _(sut: TrainDriver, lo: float, hi: float) -> None:
     assert lo <= km <= hi, f"the mileage is {km:.6f} km, outside {lo:g}..{hi:g} km"
 
 
-@then(parsers.re(r'(?P<cab>\d+)号司机室的检修画面列出"(?P<text>[^"]+)"'), converters={"cab": int})
+# The maintenance view's lines are found in the SUT's own words: the feature names a message of the form
+# (sut/contract/form.yaml, crh2 texts, view maintenance) and the SUT's declaration words it (steps/messages.py).
+@then(parsers.re(r'(?P<cab>\d+)号司机室的检修画面列出"(?P<text>[^"]+)"'),
+      converters={"cab": int, "text": zh.crh2_record})
 @then(parsers.re(r'the maintenance view of cab (?P<cab>\d+) lists "(?P<text>[^"]+)"'), converters={"cab": int})
-def _(sut: TrainDriver, cab: int, text: str) -> None:
+def _(sut: TrainDriver, declaration: ProfileDeclaration, cab: int, text: str) -> None:
+    pattern, said = messages.message(declaration, text, "maintenance")
     history = sut.monitor(cab)["maintenance"]
-    assert any(text in line for line in history), f"the maintenance view lists {history or 'nothing'}"
+    assert any(pattern.search(line) for line in history), \
+        f"the maintenance view does not list {said}; it lists {history or 'nothing'}"
     garbled = [line for line in history if not line.isprintable()]
     assert not garbled, f"the maintenance view shows lines a driver cannot read: {garbled}"
 
 
-@then(parsers.parse('{cab:d}号司机室的检修画面中"{first}"列在"{second}"之前'))
+@then(parsers.parse('{cab:d}号司机室的检修画面中"{first}"列在"{second}"之前'),
+      converters={"first": zh.crh2_record, "second": zh.crh2_record})
 @then(parsers.parse('the maintenance view of cab {cab:d} lists "{first}" before "{second}"'))
-def _(sut: TrainDriver, cab: int, first: str, second: str) -> None:
+def _(sut: TrainDriver, declaration: ProfileDeclaration, cab: int, first: str, second: str) -> None:
     history = sut.monitor(cab)["maintenance"]
-    where = {t: next((i for i, line in enumerate(history) if t in line), None) for t in (first, second)}
-    assert None not in where.values(), f"the maintenance view lists {history or 'nothing'}"
-    assert where[first] < where[second], f"{second!r} is listed before {first!r}: {history}"
+    found = {t: messages.message(declaration, t, "maintenance") for t in (first, second)}
+    where = {t: next((i for i, line in enumerate(history) if pattern.search(line)), None)
+             for t, (pattern, _) in found.items()}
+    missing = [found[t][1] for t, i in where.items() if i is None]
+    assert not missing, f"the maintenance view does not list {' nor '.join(missing)}; it lists {history or 'nothing'}"
+    assert where[first] < where[second], f"{found[second][1]} is listed before {found[first][1]}: {history}"
 
 
 @then(parsers.parse('"{master}"保存有"{node}"关于"{board}"{event:w}的故障记录'),

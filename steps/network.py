@@ -4,8 +4,9 @@ from __future__ import annotations
 from pytest_bdd import parsers, then
 
 from sut.codecs import arcnet
+from sut.contract.declaration import ProfileDeclaration
 from sut.driver import TrainDriver
-from steps import zh
+from steps import messages, zh
 from steps import analysis
 from steps.analysis import ms, us
 
@@ -165,11 +166,14 @@ def _(sut: TrainDriver, t_action: int, cab: int, after: float) -> None:
     assert not got, f"status data still arrived: {analysis.describe(got)}"
 
 
-@then(parsers.parse('{cab:d}号司机室监视器显示"{text}"'))
+# The monitor's fault texts are read in the SUT's own words: the feature names a message of the form
+# (sut/contract/form.yaml, crh2 texts, view faults) and the SUT's declaration words it (steps/messages.py).
+@then(parsers.parse('{cab:d}号司机室监视器显示"{text}"'), converters={"text": zh.crh2_fault})
 @then(parsers.parse('the cab {cab:d} monitor shows "{text}"'))
-def _(sut: TrainDriver, cab: int, text: str) -> None:
+def _(sut: TrainDriver, declaration: ProfileDeclaration, cab: int, text: str) -> None:
+    pattern, said = messages.message(declaration, text, "faults")
     faults = sut.monitor(cab)["faults"]
-    assert text in faults, f"the cab {cab} monitor shows {faults or 'no faults'}, not {text!r}"
+    assert any(pattern.fullmatch(f) for f in faults), f"the cab {cab} monitor shows {faults or 'no faults'}, not {said}"
 
 
 @then(parsers.parse("{cab:d}号司机室监视器不显示任何故障"))

@@ -195,3 +195,30 @@ def metro_data_classes(text: str) -> str:
     if not any(i in METRO_DATA_CLASSES for i in items):
         return text
     return ", ".join(METRO_DATA_CLASSES.get(i, i) for i in items)
+
+
+# -- steps/monitor.py, network.py, extra_display.py, extra_records.py, extra_control.py: the CRH2 cab monitor --
+# The CRH2 cab monitor's texts as a Chinese feature writes them, to the message identifiers of
+# sut/contract/form.yaml (crh2 texts): the fault texts it shows (CRH2_FAULTS) and the lines of its maintenance
+# view (CRH2_RECORDS; 故障 of a record is the event "failed", as in CORE_EVENTS). <name> is a name the sentence
+# fills in (car3.LCU, car5.LCU.MDM9, unit1); a bare name or the words of an identifier pass unchanged.
+CRH2_FAULTS = {"<node>无状态数据": "no status data from <node>", "无状态数据": "no status data from",
+               "<node>与<neighbour>之间光传输故障": "optical transmission fault between <node> and <neighbour>",
+               "<node>与<neighbour>间光传输故障": "optical transmission fault between <node> and <neighbour>",
+               "<board>故障": "<board> failure", "<unit>:主电路保护动作": "<unit>: main circuit protection acted",
+               "制动力不足": "insufficient brake force",
+               "过分相:严重故障,手动过分相": "neutral section: severe fault, pass manually",
+               "过分相:预告信号故障,强制自动过分相": "neutral section: warning signal fault, forced automatic passing",
+               "过分相:无进入信号,手动进入": "neutral section: no entry signal, enter manually",
+               "过分相:无退出信号,手动恢复": "neutral section: no exit signal, restore manually"}
+RESTART_REASONS = {"过温": "over-temperature", "低温": "under-temperature", "过压": "overvoltage",
+                   "欠压": "undervoltage", "断电": "interruption", "耐压试验": "withstand test"}
+CRH2_RECORDS = {"<board>故障": "<board> failed", "<board>恢复": "<board> recovered",
+                "<node>电源重启": "<node>.supply restarted",
+                **{f"<node>电源因{zh}重启": f"<node>.supply restarted after {en}" for zh, en in RESTART_REASONS.items()}}
+
+
+# car6.LCU无状态数据 -> no status data from car6.LCU, car5.LCU.MDM9故障 -> car5.LCU.MDM9 failure.
+crh2_fault = patterns(CRH2_FAULTS)
+# car3.LCU.MDM9故障 -> car3.LCU.MDM9 failed, car3.LCU电源因低温重启 -> car3.LCU.supply restarted after under-temperature.
+crh2_record = patterns(CRH2_RECORDS)

@@ -15,7 +15,9 @@ from sut.contract.declaration import DeclarationError, form, load, of_backend
 from sut.reference.atp.backend import ReferenceAtp
 from sut.reference.crh2.backend import ReferenceTrain
 from sut.reference.metro.backend import ReferenceMetro
-from tests.variants import FREEDOM, IN_BAND, METRO_MODES_ZH, METRO_TEXTS_ZH, ChineseDisplayMetro
+from steps import messages
+from tests.variants import (CRH2_FAULTS_ZH, CRH2_RECORDS_ZH, FREEDOM, IN_BAND, METRO_MODES_ZH, METRO_TEXTS_ZH,
+                            ChineseDisplayMetro, ChineseMonitorCrh2)
 
 ROOT = Path(__file__).resolve().parents[1]
 
@@ -110,6 +112,41 @@ def test_the_metro_declarations_word_every_message_as_the_sut_shows_it() -> None
     assert set(chinese.texts) == messages
     for message in messages:
         assert chinese.text(message) == {**METRO_MODES_ZH, **METRO_TEXTS_ZH}[message], message
+
+
+def test_the_crh2_declarations_word_every_monitor_message_as_the_sut_shows_it() -> None:
+    """Every crh2 text is shown in one part of the cab monitor's answer; the reference declares the identifiers'
+    own words, ChineseMonitorCrh2 what its monitor shows."""
+    texts = form()["crh2"]["texts"]
+    assert {spec.get("view") for spec in texts.values()} == {"faults", "maintenance"}
+    reference = of_backend(ReferenceTrain).of("crh2")
+    assert set(reference.texts) == set(texts) and all(reference.text(m) == m for m in texts)
+    chinese = of_backend(ChineseMonitorCrh2).of("crh2")
+    assert set(chinese.texts) == set(texts)
+    for message in texts:
+        assert chinese.text(message) == {**CRH2_FAULTS_ZH, **CRH2_RECORDS_ZH}[message], message
+
+
+def test_a_feature_text_is_found_in_the_declared_words() -> None:
+    """steps/messages.py: a text filling in an identifier, an identifier itself, a leading part of identifiers
+    with a name in it (any of the messages it begins), the bare words of one; in the view the step reads."""
+    chinese = of_backend(ChineseMonitorCrh2).of("crh2")
+    pattern, said = messages.message(chinese, "car5.LCU.MDM9 failure", "faults")
+    assert pattern.fullmatch("car5.LCU.MDM9故障") and not pattern.fullmatch("car5.LCU.MDM8故障")
+    assert said == "'car5.LCU.MDM9 failure' (declared as 'car5.LCU.MDM9故障')"
+    pattern, _ = messages.message(chinese, "no status data from <node>", "faults")
+    assert pattern.fullmatch("car3.LCU无状态数据") and not pattern.fullmatch("car3.LCU故障")
+    pattern, _ = messages.message(chinese, "car3.LCU.supply restarted", "maintenance")
+    assert pattern.search("1200 ms car3.LCU电源因低温重启") and pattern.search("5 ms car3.LCU电源因断电重启")
+    assert not pattern.search("1200 ms car4.LCU电源因低温重启")
+    pattern, _ = messages.message(chinese, "car7.LCU.MDM9", "maintenance")
+    assert pattern.search("9 ms car7.LCU.MDM9发生故障") and pattern.search("9 ms car7.LCU.MDM9恢复正常")
+    assert not pattern.search("9 ms car7.LCU.MDM8发生故障")
+    pattern, _ = messages.message(chinese, "insufficient brake", "faults")
+    assert pattern.fullmatch("制动力不足")
+    for text, view in [("car3.LCU.MDM9 failed", "faults"), ("brake force low", "faults"), ("neutral section", None)]:
+        with pytest.raises(ValueError, match="message identifier"):
+            messages.message(chinese, text, view)
 
 
 def test_a_bad_declaration_stops_the_run_before_any_scenario(tmp_path: Path) -> None:

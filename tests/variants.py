@@ -411,6 +411,56 @@ class RuggedBoards(ReferenceTrain):
 DOUBLE_ONLY = [StaleCommandsWhileTheRingIsHeard, FullNotchesOnPath3WithALiveModem, RxcRepeatsTheRing,
                BlockDataTheShortWayOnly]
 
+# A CRH2 cab monitor that speaks Chinese: its fault texts and the lines of its maintenance view, by the English
+# text's pattern (<name>: a name it keeps as it is). It declares what it shows for each message the features name
+# (tests/declarations/chinese-monitor-crh2.yaml). The fault records themselves (block data, `F|<t ms>|<node>|...`)
+# keep their documented ASCII format: that is a record format, not a display text.
+CRH2_FAULTS_ZH = {"no status data from <node>": "<node>无状态数据",
+                  "optical transmission fault between <node> and <neighbour>": "<node>与<neighbour>间光传输故障",
+                  "<board> failure": "<board>故障",
+                  "<unit>: main circuit protection acted": "<unit>：主电路保护动作",
+                  "insufficient brake force": "制动力不足",
+                  "neutral section: severe fault, pass manually": "过分相装置严重故障，请手动过分相",
+                  "neutral section: warning signal fault, forced automatic passing": "过分相预告信号故障，强制自动过分相",
+                  "neutral section: no entry signal, enter manually": "过分相无进入信号，请手动进入",
+                  "neutral section: no exit signal, restore manually": "过分相无退出信号，请手动恢复"}
+CRH2_RECORDS_ZH = {"<board> failed": "<board>发生故障", "<board> recovered": "<board>恢复正常",
+                   **{f"<node>.supply restarted after {reason}": f"<node>电源因{zh}重启" for reason, zh in
+                      {"over-temperature": "过温", "under-temperature": "低温", "overvoltage": "过压",
+                       "undervoltage": "欠压", "interruption": "断电", "withstand test": "耐压试验"}.items()}}
+MAINTENANCE_LINE = re.compile(r"(\d+ ms )(.*)")
+
+
+def _localized(text: str, table: dict[str, str]) -> str:
+    """`text` in the words of `table` (English identifier -> the monitor's words) if it is one of its messages
+    with names filled in, else unchanged."""
+    for english, words in table.items():
+        parts = re.split(r"(<\w+>)", english)
+        rx = "".join(f"(?P<{p[1:-1]}>[A-Za-z0-9_.]+)" if p.startswith("<") else re.escape(p) for p in parts)
+        found = re.fullmatch(rx, text)
+        if found:
+            return re.sub(r"<(\w+)>", lambda n: found.group(n.group(1)), words)
+    return text
+
+
+class ChineseMonitorCrh2(ReferenceTrain):
+    """Freedom (localized display): the cab monitors show their fault texts and maintenance view in Chinese,
+    declared by message identifier; the displayed values (value words) and the fault records are as the
+    reference's."""
+    DECLARATION = "tests/declarations/chinese-monitor-crh2.yaml"
+
+    def monitor(self, cab: int) -> dict:
+        shown = super().monitor(cab)
+        lines = [MAINTENANCE_LINE.fullmatch(line) for line in shown["maintenance"]]
+        return {**shown, "faults": [_localized(f, CRH2_FAULTS_ZH) for f in shown["faults"]],
+                "maintenance": [m.group(1) + _localized(m.group(2), CRH2_RECORDS_ZH) if m else line
+                                for m, line in zip(lines, shown["maintenance"])]}
+
+    def _monitor_faults(self, cab: int) -> list[str]:
+        # watch_monitor looks at the screen alone (the reference's shortcut past monitor()): the same words.
+        return [_localized(f, CRH2_FAULTS_ZH) for f in super()._monitor_faults(cab)]
+
+
 IN_BAND = [HoldCountedToSend, FasterNodes, CommandsEvery12ms, EarlierFallback, PipeTripAt585, DoorBandsNarrow,
            RuggedBoards]
 
@@ -831,4 +881,4 @@ class TaskTickVdx(ReferenceAtp):
 IN_BAND += [AnotherCoil, AnotherAtpRig]
 # Design freedoms a conforming product may take (issue 30), each with its own declaration: the whole suite
 # must accept them, as the in-band variants.
-FREEDOM = [ChineseDmiAtp, TaskTickVdx, ChineseDisplayMetro]
+FREEDOM = [ChineseDmiAtp, TaskTickVdx, ChineseDisplayMetro, ChineseMonitorCrh2]

@@ -13,7 +13,7 @@
   场景: R-DIA-01 司机室监视器在500 ms内指出断开的光纤链路
     当"car3.LCU"与"car4.LCU"之间的环网链路断开
     而且经过500 ms
-    那么1号司机室监视器显示"optical transmission fault between car3.LCU and car4.LCU"
+    那么1号司机室监视器显示"car3.LCU与car4.LCU之间光传输故障"
 
   @req:NET-03 @req:TST-03
   场景: R-DIA-01 完好的环网不显示光传输故障

@@ -13,10 +13,10 @@
   场景: R-DIA-02 MDM9(CI/BCU链路)故障显示在司机室监视器上
     当板卡"car5.LCU.MDM9"故障
     而且经过500 ms
-    那么1号司机室监视器显示"car5.LCU.MDM9 failure"
+    那么1号司机室监视器显示"car5.LCU.MDM9故障"
 
   @req:NET-02 @req:TST-03
   场景: R-DIA-02 失电的LCU显示为无状态数据
     当电源"car6.LCU"被关断
     而且经过1000 ms
-    那么1号司机室监视器显示"no status data from car6.LCU"
+    那么1号司机室监视器显示"car6.LCU无状态数据"

@@ -15,13 +15,13 @@
   场景: R-DIA-03 CPU组读入不同输入的TXC显示为故障
     当板卡"car1.CCU.sys1.TXC.group2"故障
     而且经过500 ms
-    那么1号司机室监视器显示"car1.CCU.sys1.TXC failure"
+    那么1号司机室监视器显示"car1.CCU.sys1.TXC故障"
 
   @req:FS-01 @req:TST-03
   场景: R-DIA-03 CPU组不一致的RXC显示为故障
     当板卡"car4.LCU.RXC.group2"故障
     而且经过500 ms
-    那么1号司机室监视器显示"car4.LCU.RXC failure"
+    那么1号司机室监视器显示"car4.LCU.RXC故障"
 
   @req:FS-03 @req:TST-03
   场景: R-DIA-03 输入电源失电的司机台发出制动而非牵引
