@@ -358,6 +358,19 @@ def _(sut: TrainDriver, declaration: ProfileDeclaration, t_action: int, boundary
         f"declared at {event['at_m']} m; the formula puts the edge at {edge:.2f} m (+{slack:.2f} m)"
 
 
+@then(parsers.parse("载频不一致判定{after:g} ms后没有CI收到高于0的牵引级位"))
+@then(parsers.parse("no CI receives a traction notch above 0 from {after:g} ms after the carrier inconsistency on"))
+def _(sut: TrainDriver, t_action: int, after: float) -> None:
+    """ILK-08 from the ATP's own decision on: when the ATP finds the inconsistency depends on what it declares
+    (its receiver range), so the window starts there, not at a fixed time after the train was set running."""
+    found = sut.trace.first(kind="carrier.inconsistent", since=t_action)
+    assert found is not None, "the ATP never declared the carrier inconsistent"
+    takes = sut.trace.select(kind="cmd.in", source="*.CI", since=found.t + us(after))
+    assert takes, "no CI received any command"
+    odd = [ev for ev in takes if (ev["traction"] or 0) > 0 or ev["traction_step"] in ("A", "B")]
+    assert not odd, f"traction reached a CI {after:g} ms and more after the inconsistency: {describe(odd)}"
+
+
 @then("ATP判定载频一致")
 @then("the ATP finds the carrier consistent")
 def _(sut: TrainDriver, t_action: int) -> None:

@@ -869,6 +869,14 @@ class ChineseDmiAtp(ReferenceAtp):
         return {**shown, "faults": faults}
 
 
+class FarDeclaredAtp(ReferenceAtp):
+    """Freedom (declared parameters): an installation and a CFSK far from the reference's, inside the form's
+    ranges: antenna 10 m behind the front, +-20 m odometry, comparisons every 100 ms, a 300 ms decode delay.
+    Every edge and wait of the features must come from what it declares (a fixed 6 s wait failed it)."""
+    ATP = {"d_sen_m": 10.0, "position_uncertainty_m": 20.0, "cfsk_period_us": 100 * MS, "decode_delay_us": 300 * MS}
+    DECLARATION = "tests/declarations/far-declared-atp.yaml"
+
+
 class TaskTickVdx(ReferenceAtp):
     """Freedom (timing resolution): a VDX on a 1 ms task tick with jitter, declared so: its self-test comes
     every 5000.7 ms and pulls the output low for 3.4 ms, each less than a tick off VDX-03; it samples on the
@@ -881,4 +889,4 @@ class TaskTickVdx(ReferenceAtp):
 IN_BAND += [AnotherCoil, AnotherAtpRig]
 # Design freedoms a conforming product may take (issue 30), each with its own declaration: the whole suite
 # must accept them, as the in-band variants.
-FREEDOM = [ChineseDmiAtp, TaskTickVdx, ChineseDisplayMetro, ChineseMonitorCrh2]
+FREEDOM = [ChineseDmiAtp, TaskTickVdx, ChineseDisplayMetro, ChineseMonitorCrh2, FarDeclaredAtp]

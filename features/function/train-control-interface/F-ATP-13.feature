@@ -41,10 +41,10 @@ Feature: F-ATP-13 The ATP's brake reaches the train: traction suppressed, brake 
     Given the signal generator sends 1700 Hz with code L
     And the train has passed balise group "6-1-1-2" describing track circuits 0-1000 m 1700 Hz, 1000-2000 m 2300 Hz and an end of authority at 5000 m
     When the train is set to 980 m running at 100 km/h
-    And 2 s pass
+    And the train runs until the rear of the receiver range has passed 1000 m
     Then the ATP declares the carrier inconsistent
     And the ATP commands max service brake
-    And no CI receives a traction notch above 0 from 1600 ms on
+    And no CI receives a traction notch above 0 from 500 ms after the carrier inconsistency on
 
   @req:VDX-01 @req:ILK-08
   Scenario: F-ATP-13 The ATP's emergency brake opens the train's loop through the VDX
