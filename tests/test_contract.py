@@ -141,5 +141,6 @@ def test_the_readme_shows_todays_assertion_count_and_every_freedom_variant() -> 
     from tests.variants import FREEDOM
     readme = (ROOT / "README.md").read_text(encoding="utf-8")
     assert table(ROOT / "features") in readme, "README's assertion table is stale: python -m outline assertions"
+    assert readme.count(table(ROOT / "features").splitlines()[0]) == 1, "README holds the assertion table more than once"
     missing = [v.__name__ for v in FREEDOM if f"`{v.__name__}`" not in readme]
     assert not missing, f"freedom variants the README's table does not name: {missing}"
