@@ -12,11 +12,13 @@ from __future__ import annotations
 
 import datetime as _dt
 import json
+import re
 import platform
 import subprocess
 from pathlib import Path
 
 from outline.allure_env import write_environment
+from outline.summary import NOT_APPLICABLE
 
 # The whole suite's title (allurerc.mjs names the report the same: tests/test_report_in_browser.py reads it there).
 REPORT_NAME = "Train network conformance: CRH2, metro TCN, ATP"
@@ -27,7 +29,7 @@ CATEGORIES = [
     {"name": "Product defect: the SUT does not conform", "matchedStatuses": ["failed"]},
     {"name": "Test defect: the suite or its input, the SUT not judged", "matchedStatuses": ["broken"]},
     {"name": "Not applicable: an option the SUT's declaration does not claim", "matchedStatuses": ["skipped"],
-     "messageRegex": r"(?s).*not applicable: .*"},
+     "messageRegex": r"(?s).*" + re.escape(NOT_APPLICABLE) + ".*"},
     {"name": "Pending test item", "matchedStatuses": ["skipped"], "messageRegex": r"(?s).*pending.*"},
     {"name": "Profile the SUT does not declare", "matchedStatuses": ["skipped"],
      "messageRegex": r"(?s).*profile .* declares.*"},

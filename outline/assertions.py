@@ -2,7 +2,7 @@
 project decision (a `@tentative` scenario: docs/decisions.md), per profile (`python -m outline assertions`).
 
 Counted per run of a scenario (an outline row is a run), `Then` and the `And`/`But` after it alike: what a
-reviewer signs off. The README's table is this output (tests/test_outline_repo.py keeps it current)."""
+reviewer signs off. The README's table is this output (tests/test_contract.py keeps it current)."""
 from __future__ import annotations
 
 from collections import Counter

@@ -196,7 +196,7 @@ def install() -> None:
 _PATTERNS: dict[tuple[Any, str], str] = {}
 
 
-def pattern_of(step_func: Any, step_type: str) -> str | None:
+def pattern_of(step_func: Any, step_type: str) -> str:
     """`<type> <pattern>` of a step function, its English pattern where it has one (the first registered
     otherwise): how a step is named in the implementer's contract."""
     key = (step_func, step_type)

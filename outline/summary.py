@@ -17,7 +17,7 @@ from pathlib import Path
 # whose reason says so (steps/verdicts.py), counted apart from the other skips.
 STATUSES = ("passed", "failed", "broken", "not applicable", "skipped")
 WORST_FIRST = ("broken", "failed", "unknown", "skipped", "not applicable", "passed")
-NOT_APPLICABLE = "not applicable: "
+NOT_APPLICABLE = "not applicable: "         # how such a skip's reason starts (steps/verdicts.py raises it)
 
 
 def verdict(result: dict) -> str:

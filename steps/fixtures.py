@@ -140,10 +140,9 @@ def pytest_testnodedown(node, error) -> None:
 
 def pytest_terminal_summary(terminalreporter, config: pytest.Config) -> None:
     # "not applicable" (ISO/IEC 9646) is a skip to pytest; say how many of the skips it was, and why.
-    reasons = [str(getattr(r, "longrepr", ""))
-               for r in terminalreporter.stats.get("skipped", []) if NOT_APPLICABLE in str(getattr(r, "longrepr", ""))]
-    if reasons:
-        terminalreporter.write_line(f"not applicable: {len(reasons)} of the skipped scenarios (an option the SUT's "
+    count = sum(NOT_APPLICABLE in str(getattr(r, "longrepr", "")) for r in terminalreporter.stats.get("skipped", []))
+    if count:
+        terminalreporter.write_line(f"not applicable: {count} of the skipped scenarios (an option the SUT's "
                                     f"declaration does not claim; -rs lists why)", yellow=True)
     cache = config.stash.get(_SNAPSHOTS, None)
     if cache is None or config.getoption("--no-snapshots") or hasattr(config, "workeroutput"):
@@ -213,7 +212,7 @@ def pytest_collection_modifyitems(config: pytest.Config, items: list[pytest.Item
         elif wanted and not any(p in wanted for p in profiles):
             drop.append(item)
         else:
-            reason = _not_applicable(item, sut_class, profiles, config)
+            reason = _not_applicable(item, sut_class, config)
             if reason:
                 item.add_marker(pytest.mark.skip(reason=reason))
             keep.append(item)
@@ -222,14 +221,24 @@ def pytest_collection_modifyitems(config: pytest.Config, items: list[pytest.Item
         items[:] = keep
 
 
-def _not_applicable(item: pytest.Item, sut_class: type[TrainDriver], profiles: list[str],
-                    config: pytest.Config) -> str | None:
+def _profile_for(item: pytest.Item, sut_class: type[TrainDriver]) -> str | None:
+    """The scenario's profile this SUT implements (its train), or None."""
+    return next((p for p in _profiles_of(item) if p in sut_class.PROFILES), None)
+
+
+def _declared(item: pytest.Item, sut_class: type[TrainDriver], config: pytest.Config):
+    """The SUT's declaration (None if it has none) and its part for the scenario's profile (None if absent)."""
+    found = declarations.of_backend(sut_class, config.getoption("--declaration"))
+    profile = _profile_for(item, sut_class)
+    return found, (found.of(profile) if found and profile else None)
+
+
+def _not_applicable(item: pytest.Item, sut_class: type[TrainDriver], config: pytest.Config) -> str | None:
     """Why a scenario's verdict is "not applicable" to this SUT (an option of the form it does not claim)."""
     needed = [str(a) for mark in item.iter_markers("option") for a in mark.args]
     if not needed:
         return None
-    found = declarations.of_backend(sut_class, config.getoption("--declaration"))
-    mine = found.of(next(p for p in profiles if p in sut_class.PROFILES)) if found else None
+    found, mine = _declared(item, sut_class, config)
     missing = [o for o in needed if mine is None or not mine.claims(o)]
     if not missing:
         return None
@@ -241,11 +250,10 @@ def _not_applicable(item: pytest.Item, sut_class: type[TrainDriver], profiles: l
 def declaration(sut_class: type[TrainDriver], request: pytest.FixtureRequest) -> declarations.ProfileDeclaration:
     """This scenario's SUT's declaration for the scenario's profile: the options it claims, its parameters and
     its display texts. A scenario that needs one of a SUT that declares none is not applicable."""
-    profiles = [p for p in _profiles_of(request.node) if p in sut_class.PROFILES]
-    found = declarations.of_backend(sut_class, request.config.getoption("--declaration"))
-    mine = found.of(profiles[0]) if found and profiles else None
+    _, mine = _declared(request.node, sut_class, request.config)
     if mine is None:
-        not_applicable(f"the SUT {sut_class.__qualname__} declares no parameters for {', '.join(profiles) or 'its profile'} "
+        profile = _profile_for(request.node, sut_class) or "its profile"
+        not_applicable(f"the SUT {sut_class.__qualname__} declares no parameters for {profile} "
                        f"(--declaration FILE; the form is sut/contract/form.yaml)")
     return mine
 
@@ -276,13 +284,12 @@ def pytest_bdd_after_step(request, feature, scenario, step, step_func, step_func
 def pytest_bdd_before_step(request, feature, scenario, step, step_func) -> None:
     recorder = request.config.stash.get(_RECORDER, None)
     if recorder is not None:
-        recorder.step = step_index.pattern_of(step_func, step.type) or f"{step.type} {step.name}"
+        recorder.step = step_index.pattern_of(step_func, step.type)
 
 
 @pytest.fixture
 def sut(sut_class: type[TrainDriver], request: pytest.FixtureRequest):
-    declared = [p for p in _profiles_of(request.node) if p in sut_class.PROFILES]
-    profile = declared[0] if declared else None
+    profile = _profile_for(request.node, sut_class)
     if request.config.getoption("--no-snapshots") or not sut_class.DETERMINISTIC:
         driver = sut_class.open(profile)
     else:

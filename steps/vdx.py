@@ -80,33 +80,33 @@ def _scheduled(sut: TrainDriver) -> list[int]:
     return [postponed.get(ev.t, ev.t) for ev in sut.trace.select(kind="selftest")]
 
 
-def _cycle(sut: TrainDriver) -> int:
-    """The SUT's own self-test period: the median of its recent gaps between due times (VDX-03's 5 s, up to
-    task tick off: gaps more than 50 ms off 5 s span a skipped cycle or a restart and are left out); 5 s until
-    it has run three."""
-    due = _scheduled(sut)[-8:]
+def _cycle(due: list[int]) -> int:
+    """The SUT's own self-test period from when its tests were due: the median of its recent gaps (VDX-03's
+    5 s, up to a task tick off; a gap more than 50 ms off 5 s spans a skipped cycle or a restart and is left
+    out); 5 s until it has run three."""
+    due = due[-8:]
     gaps = sorted(b - a for a, b in zip(due, due[1:]) if abs(b - a - SELFTEST_PERIOD_US) <= us(50))
     return gaps[len(gaps) // 2] if len(gaps) >= 2 else SELFTEST_PERIOD_US
 
 
-def _next_selftest(sut: TrainDriver) -> int:
+def _next_selftest(sut: TrainDriver) -> tuple[int, int]:
+    """When the next self-test is due, and the SUT's period."""
     due = _scheduled(sut)
     assert due, "no FS self-test yet: let the VDX run at least 5 s before"
-    period = _cycle(sut)
+    period = _cycle(due)
     nxt = due[-1] + period
     while nxt <= sut.now_us:
         nxt += period
-    return nxt
+    return nxt, period
 
 
 def release_before_selftest(sut: TrainDriver, offset_ms: float) -> int:
     """Brake for 300 ms, then release `offset_ms` before the next FS self-test is due (one of the SUT's cycles
     after the last); returns the release time."""
-    due = _next_selftest(sut)
+    due, period = _next_selftest(sut)
     release = due - us(offset_ms)
     if release - us(300) < sut.now_us:
-        due += _cycle(sut)
-        release += _cycle(sut)
+        release += period
     sut.advance(release - us(300) - sut.now_us)
     sut.set_input("ATP emergency brake", True)
     sut.advance(release - sut.now_us)
@@ -118,7 +118,7 @@ def release_before_selftest(sut: TrainDriver, offset_ms: float) -> int:
 @when(parsers.parse("the VDX is {at:g} ms into its next FS self-test"), target_fixture="t_action")
 def _(sut: TrainDriver, declaration: ProfileDeclaration, at: float) -> int:
     """Stop inside a self-test (one cycle after the last one, VDX-03), to read the FS output while it is low."""
-    due = _next_selftest(sut)
+    due, _ = _next_selftest(sut)
     sut.advance(due + us(at) - sut.now_us)
     started = sut.trace.last(kind="selftest")
     tick = declaration.parameter("timing_resolution_us")

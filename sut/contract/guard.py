@@ -61,13 +61,8 @@ class Recorder:
 
 
 def _plain(value: Any) -> Any:
-    if isinstance(value, bool) or value is None:
-        return value
-    if isinstance(value, (int, float)):
-        return type(value).__name__
-    if isinstance(value, str):
-        return value
-    return type(value).__name__
+    """How a recorded value is kept: a word or a flag as itself, anything else by its type."""
+    return value if value is None or isinstance(value, (bool, str)) else type(value).__name__
 
 
 class CheckedFields(dict):
@@ -232,12 +227,13 @@ class ContractDriver:
     def __getattr__(self, name: str) -> Any:
         if name.startswith("_"):
             raise AttributeError(name)
-        if callable(getattr(TrainDriver, name, None)):
+        interface = callable(getattr(TrainDriver, name, None))
+        if interface:
             self._method(name)                  # before the SUT is asked: a gap of the suite, whatever it has
         attr = getattr(self._driver, name)
         if not callable(attr):
             return attr
-        if not callable(getattr(TrainDriver, name, None)):
+        if not interface:
             self._method(name)
         if name in _ANSWERS:
             return lambda *args, **kwargs: CheckedAnswer(attr(*args, **kwargs), name, "", self)

@@ -13,7 +13,7 @@ from typing import Any, Iterable
 
 import yaml
 
-from sut.contract.catalogue import HERE, SECTIONS, load, parse
+from sut.contract.catalogue import HERE, SECTIONS, load, matches, parse
 
 ASPECTS_KEPT = ("items", "steps", "fields", "values", "answers", "sources asked", "sources seen")
 
@@ -67,14 +67,9 @@ def problems(record: dict, profiles: Iterable[str] | None = None) -> list[str]:
         for method, keys in (contract.raw.get("answers") or {}).items():
             used = {name.split(": ", 1)[1] for name in seen.get("answers", {}) if name.startswith(method + ": ")}
             for key in keys:
-                if not any(u == key or _glob(key, u) for u in used):
+                if not any(matches(key, u) for u in used):
                     out.append(f"{where}: answers.{method}.{key}: no step reads it")
     return out
-
-
-def _glob(pattern: str, name: str) -> bool:
-    import fnmatch
-    return any(ch in pattern for ch in "*?[") and fnmatch.fnmatchcase(name, pattern)
 
 
 def update(record: dict, profile: str) -> Path:
@@ -123,7 +118,6 @@ def update(record: dict, profile: str) -> Path:
 def prune(record: dict, profile: str) -> Path:
     """Drop from a profile's contract every entry no step of the recorded run reads (a contract split off
     another profile's keeps only what its own steps need), then refresh the read_by lists."""
-    import fnmatch
     path = HERE / f"{profile}.yaml"
     raw = yaml.safe_load(path.read_text(encoding="utf-8"))
     seen = record.get(profile, {})
@@ -132,7 +126,7 @@ def prune(record: dict, profile: str) -> Path:
         entries = (raw.get("names") or {}).get(section) or {}
         used = seen.get(section, {})
         kept = {name: entry for name, entry in entries.items()
-                if any(n == name or fnmatch.fnmatchcase(n, name) for n in used)}
+                if any(matches(name, n) for n in used)}
         if kept:
             raw["names"][section] = kept
         else:
@@ -141,7 +135,7 @@ def prune(record: dict, profile: str) -> Path:
     for method in list(answers):
         used = {n.split(": ", 1)[1] for n in seen.get("answers", {}) if n.startswith(method + ": ")}
         answers[method] = {k: v for k, v in answers[method].items()
-                           if any(u == k or fnmatch.fnmatchcase(u, k) for u in used)}
+                           if any(matches(k, u) for u in used)}
         if not answers[method]:
             del answers[method]
     events = raw.get("events") or {}
