@@ -18,7 +18,7 @@ import subprocess
 from pathlib import Path
 
 from outline.allure_env import write_environment
-from outline.summary import NOT_APPLICABLE
+from outline.summary import INFORMATIVE, NOT_APPLICABLE
 
 # The whole suite's title (allurerc.mjs names the report the same: tests/test_report_in_browser.py reads it there).
 REPORT_NAME = "Train network conformance: CRH2, metro TCN, ATP"
@@ -30,6 +30,8 @@ CATEGORIES = [
     {"name": "Test defect: the suite or its input, the SUT not judged", "matchedStatuses": ["broken"]},
     {"name": "Not applicable: an option the SUT's declaration does not claim", "matchedStatuses": ["skipped"],
      "messageRegex": r"(?s).*" + re.escape(NOT_APPLICABLE) + ".*"},
+    {"name": "Informative deviation: no requirement states it, conformance not affected",
+     "matchedStatuses": ["skipped"], "messageRegex": r"(?s).*" + re.escape(INFORMATIVE) + ".*"},
     {"name": "Pending test item", "matchedStatuses": ["skipped"], "messageRegex": r"(?s).*pending.*"},
     {"name": "Profile the SUT does not declare", "matchedStatuses": ["skipped"],
      "messageRegex": r"(?s).*profile .* declares.*"},

@@ -1,5 +1,6 @@
 """How many `Then` assertions the features make, by what backs them: a requirement (docs/requirements.md), a
-project decision (a `@tentative` scenario: docs/decisions.md), per profile (`python -m outline assertions`).
+project decision (a `@tentative` scenario: docs/decisions.md), or informative (an `@informative` scenario: what
+no requirement states, reported and never failing conformance), per profile (`python -m outline assertions`).
 
 Counted per run of a scenario (an outline row is a run), `Then` and the `And`/`But` after it alike: what a
 reviewer signs off. The README's table is this output (tests/test_contract.py keeps it current)."""
@@ -11,7 +12,7 @@ from pathlib import Path
 from .binding import feature_paths
 from .gherkin import parse_feature
 
-KINDS = ("requirement", "project decision")
+KINDS = ("requirement", "project decision", "informative")
 
 
 def count(features_dir: str | Path) -> dict[str, Counter]:
@@ -20,7 +21,8 @@ def count(features_dir: str | Path) -> dict[str, Counter]:
     for path in feature_paths(features_dir, asked=set()):
         feature = parse_feature(Path(features_dir) / path)
         for scenario in feature.scenarios:
-            kind = "project decision" if "tentative" in scenario.tag_names else "requirement"
+            kind = ("informative" if "informative" in scenario.tag_names
+                    else "project decision" if "tentative" in scenario.tag_names else "requirement")
             for profile in scenario.tag_values("profile") or ["-"]:
                 for _, steps in scenario.instances():
                     out.setdefault(profile, Counter())[kind] += sum(1 for s in steps if s.type == "then")

@@ -1,7 +1,7 @@
 """pytest plugin of the test outline (loaded by the root conftest).
 
 - tags -> marks: `@item:X` -> mark.item("X"), `@req:X` -> mark.req("X"), `@profile:X` -> mark.profile("X"),
-  `@tentative`, `@pending` (also skipped, reason "pending"); an unknown `kind:` fails loudly.
+  `@tentative`, `@informative`, `@pending` (also skipped, reason "pending"); an unknown `kind:` fails loudly.
 - `--item ID` / `--req ID` keep only matching scenarios (repeatable, comma-separated; union of all given).
 - Allure labels from the registry: epic = class, feature = category, story = "<item> <title>",
   one `requirement` label and one `req:` tag per requirement, `item:` and `profile:` tags; with
@@ -29,6 +29,7 @@ MARKERS = (
     "option(name): an option of the implementation declaration form the scenario needs (from @option:<name>); "
     "not applicable to a SUT that does not claim it",
     "tentative: checks a project decision where the sources are ambiguous",
+    "informative: checks what no requirement states; a failed Then is an informative deviation, not a failure",
     "pending: written but not yet runnable; skipped with reason 'pending'",
     "on_request: a feature bound only when its item is asked for with --item (the double-fault campaign)",
     "allure_label: allure label marker",
@@ -75,7 +76,7 @@ def pytest_bdd_apply_tag(tag: str, function):
         pytest.mark.pending(function)
         pytest.mark.skip(reason="pending")(function)
         return True
-    if value in ("tentative", "on_request"):
+    if value in ("tentative", "informative", "on_request"):
         getattr(pytest.mark, value)(function)
         return True
     return None  # pytest-bdd's default: getattr(pytest.mark, tag); --strict-markers rejects unregistered ones

@@ -15,16 +15,22 @@ from pathlib import Path
 
 # "not applicable" is ISO/IEC 9646's verdict for a scenario needing an option the SUT does not claim: a skip
 # whose reason says so (steps/verdicts.py), counted apart from the other skips.
-STATUSES = ("passed", "failed", "broken", "not applicable", "skipped")
-WORST_FIRST = ("broken", "failed", "unknown", "skipped", "not applicable", "passed")
+# An "informative deviation" is a failed Then of an @informative scenario: a check of what no requirement states
+# (docs/decisions.md), shown to the reviewer and never failing conformance; an xfail to pytest.
+STATUSES = ("passed", "failed", "broken", "informative deviation", "not applicable", "skipped")
+WORST_FIRST = ("broken", "failed", "unknown", "skipped", "informative deviation", "not applicable", "passed")
 NOT_APPLICABLE = "not applicable: "         # how such a skip's reason starts (steps/verdicts.py raises it)
+INFORMATIVE = "informative deviation: "     # how an informative check's failure reads (steps/verdicts.py)
 
 
 def verdict(result: dict) -> str:
     """A result's status, with "not applicable" told apart from the other skips."""
     status = result.get("status", "unknown")
-    if status == "skipped" and NOT_APPLICABLE in str((result.get("statusDetails") or {}).get("message", "")):
+    message = str((result.get("statusDetails") or {}).get("message", ""))
+    if status == "skipped" and NOT_APPLICABLE in message:
         return "not applicable"
+    if status == "skipped" and INFORMATIVE in message:
+        return "informative deviation"
     return status
 
 
@@ -94,8 +100,9 @@ def summarize(results: list[dict]) -> Summary:
 
 
 def format_summary(summary: Summary) -> str:
-    # "not applicable" shows only where a run has any: most runs have none, and the line stays as it was.
-    parts = [f"{summary.counts.get(s, 0)} {s}" for s in STATUSES if s != "not applicable" or summary.counts.get(s)]
+    # The verdicts besides ISO/IEC 9646's pass/fail show only where a run has any: the line stays as it was.
+    rare = ("not applicable", "informative deviation")
+    parts = [f"{summary.counts.get(s, 0)} {s}" for s in STATUSES if s not in rare or summary.counts.get(s)]
     extra = summary.total - sum(summary.counts.get(s, 0) for s in STATUSES)
     if extra:
         parts.append(f"{extra} unknown")

@@ -5,7 +5,7 @@ from __future__ import annotations
 # `@kind:value` tags, each turned into one registered marker of the same name.
 KINDS = ("item", "req", "profile", "option")
 # Bare tags the project defines; each is a registered marker.
-PLAIN = ("tentative", "pending", "on_request")
+PLAIN = ("tentative", "informative", "pending", "on_request")
 
 
 class TagError(ValueError):

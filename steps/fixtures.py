@@ -23,6 +23,7 @@ from sut.snapshot import SnapshotCache, SnapshotDriver
 from outline import step_index
 from steps import report
 from steps.diagram import Bound
+from steps import verdicts
 from steps.verdicts import NOT_APPLICABLE, not_applicable
 
 
@@ -59,6 +60,17 @@ def pytest_addoption(parser: pytest.Parser) -> None:
     group.addoption("--trace-dir", default=None, metavar="DIR",
                     help="also write each scenario's whole trace to DIR/<test id>.csv (to compare runs: two "
                          "runs of one SUT, in-process against remote, serial against -n auto)")
+
+
+@pytest.hookimpl(wrapper=True)
+def pytest_pyfunc_call(pyfuncitem: pytest.Function):
+    # A failed Then of an @informative scenario is reported, not counted against conformance (steps/verdicts.py).
+    try:
+        return (yield)
+    except AssertionError as error:
+        if not verdicts.informative(pyfuncitem, error):
+            raise
+        verdicts.as_informative(error)
 
 
 @pytest.hookimpl(wrapper=True)
@@ -144,6 +156,11 @@ def pytest_terminal_summary(terminalreporter, config: pytest.Config) -> None:
     if count:
         terminalreporter.write_line(f"not applicable: {count} of the skipped scenarios (an option the SUT's "
                                     f"declaration does not claim; -rs lists why)", yellow=True)
+    deviations = len(terminalreporter.stats.get("xfailed", []))
+    if deviations:
+        terminalreporter.write_line(f"informative deviation: {deviations} xfailed scenarios checked what no "
+                                    f"requirement states and found the SUT doing otherwise; conformance is not "
+                                    f"affected (-rx lists them)", yellow=True)
     cache = config.stash.get(_SNAPSHOTS, None)
     if cache is None or config.getoption("--no-snapshots") or hasattr(config, "workeroutput"):
         return

@@ -20,7 +20,7 @@ import pytest
 
 from tests.helpers import verdicts
 from sut.reference.crh2.backend import ReferenceTrain
-from tests.variants import FAULTY, FREEDOM, IN_BAND
+from tests.variants import FAULTY, FREEDOM, FREEDOM_CLASSES, IN_BAND
 
 ROOT = Path(__file__).resolve().parents[1]
 
@@ -152,9 +152,24 @@ def test_features_accept_in_band_variant(variant: type) -> None:
 
 @pytest.mark.parametrize("variant", [pytest.param(v, id=v.__name__, marks=pytest.mark.cost(_in_band_cost(v)))
                                      for v in FREEDOM])
-def test_a_freedom_variant_passes_by_its_own_declaration_only(variant: type) -> None:
-    """Evidence that a freedom variant exercises its freedom: held to the reference's declaration instead of
-    its own, the features reject it (so they read the declaration, not the reference's habits)."""
-    assert variant.DECLARATION != ReferenceTrain.DECLARATION
-    result = run_features(variant, "--declaration=sut/reference/declaration.yaml", "-x")
-    assert result.returncode == 1, f"{variant.__name__} passed under the reference's declaration:\n{result.stdout[-2000:]}"
+def test_a_freedom_variant_exercises_its_freedom(variant: type, tmp_path: Path) -> None:
+    """Evidence that a freedom variant exercises its freedom. One with its own declaration: held to the
+    reference's instead, the features reject it (so they read the declaration, not the reference's habits).
+    One without (a choice nothing declares): the trace of the item it names in EXERCISED_BY differs from the
+    reference's (so the suite really met the other choice, and accepted it)."""
+    assert variant.FREEDOM_CLASS in FREEDOM_CLASSES, f"{variant.__name__}: unknown FREEDOM_CLASS"
+    if variant.DECLARATION != ReferenceTrain.DECLARATION:
+        result = run_features(variant, "--declaration=sut/reference/declaration.yaml", "-x")
+        assert result.returncode == 1, \
+            f"{variant.__name__} passed under the reference's declaration:\n{result.stdout[-2000:]}"
+        return
+    item = variant.EXERCISED_BY
+    traces = {}
+    for name, sut in (("reference", "reference"), ("variant", f"tests.variants:{variant.__name__}")):
+        out = tmp_path / name
+        result = run_features(variant, f"--item={item}", f"--trace-dir={out}", sut=sut)
+        assert result.returncode == 0, result.stdout[-2000:]
+        traces[name] = {f.name: f.read_bytes() for f in sorted(out.rglob("*")) if f.is_file()}
+    assert traces["reference"], f"{item} wrote no trace"
+    assert traces["reference"] != traces["variant"], \
+        f"{variant.__name__}: the traces of {item} are the reference's, so its freedom is never exercised there"

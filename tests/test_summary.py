@@ -56,3 +56,20 @@ def test_summary_counts_each_train_profile(tmp_path: Path):
         (tmp_path / f"s{i}-result.json").write_text(json.dumps(data))
     text = format_summary(summarize(load_results(tmp_path)))
     assert "by profile: crh2 2 (1 passed, 1 failed); metro-tcn 1 (1 passed)" in text.splitlines()
+
+
+def test_an_informative_deviation_is_counted_apart_and_listed(tmp_path: Path, capsys):
+    """A failed Then of an @informative scenario (an xfail whose message says so) is neither a pass nor a
+    failure: counted on its own, listed for the reviewer, its requirements not counted as covered."""
+    _result(tmp_path, "F-NET-01 a", "passed", ["NET-03"])
+    data = {"name": "F-NET-01 b", "status": "skipped", "historyId": "b", "stop": 1,
+            "statusDetails": {"message": "XFailed: informative deviation: period 52 ms, the reference's 50"},
+            "labels": [{"name": "requirement", "value": "NET-05"}]}
+    (tmp_path / "b-1-result.json").write_text(json.dumps(data))
+    assert main([str(tmp_path)]) == 0
+    assert capsys.readouterr().out.splitlines() == [
+        "2 scenarios: 1 passed, 0 failed, 0 broken, 1 informative deviation, 0 skipped; 1 requirement IDs covered "
+        "by passing scenarios (of 2 exercised)",
+        "covered: NET-03",
+        "informative deviation: F-NET-01 b",
+    ]

@@ -890,3 +890,31 @@ IN_BAND += [AnotherCoil, AnotherAtpRig]
 # Design freedoms a conforming product may take (issue 30), each with its own declaration: the whole suite
 # must accept them, as the in-band variants.
 FREEDOM = [ChineseDmiAtp, TaskTickVdx, ChineseDisplayMetro, ChineseMonitorCrh2, FarDeclaredAtp]
+# The classes of design freedom issue 30 names, by the key a variant's FREEDOM_CLASS gives. Each freedom variant
+# takes one design choice a conforming product may take; the whole suite must accept it
+# (tests/test_faulty_variants.py). One with its own declaration must be rejected when held to the reference's;
+# one without (a choice nothing declares, such as the order of simultaneous events) names in EXERCISED_BY the
+# item whose trace shows it differing from the reference's.
+FREEDOM_CLASSES = {
+    "task-tick": "a task tick with jitter, within the declared timing resolution",
+    "declared-parameters": "parameters declared away from the reference's values",
+    "localized-texts": "localized display and DMI texts",
+    "actuator-latency": "latency inside a bound, measured at the actuator",
+    "range-edge-tolerance": "measurement tolerance at range edges",
+    "simultaneous-ordering": "another ordering of simultaneous events",
+    "record-wording": "another record wording in the documented shape",
+    "io-map": "another I/O map and port layout",
+    "optional-feature": "an optional feature a product may add (a standstill holding brake)",
+}
+for _variant, _freedom in ((ChineseDmiAtp, "localized-texts"), (TaskTickVdx, "task-tick"),
+                           (ChineseDisplayMetro, "localized-texts"), (ChineseMonitorCrh2, "localized-texts"),
+                           (FarDeclaredAtp, "declared-parameters")):
+    _variant.FREEDOM_CLASS = _freedom
+
+# The freedom variants kept per profile; each is reachable as tests.variants:<Name> (--sut) like the others.
+from tests import freedom_atp, freedom_crh2, freedom_metro  # noqa: E402  (they import nothing from here)
+
+for _module in (freedom_atp, freedom_crh2, freedom_metro):
+    for _variant in _module.FREEDOM:
+        globals()[_variant.__name__] = _variant
+    FREEDOM += _module.FREEDOM
