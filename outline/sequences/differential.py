@@ -1,0 +1,117 @@
+"""Two SUTs driven side by side (issue 31): the same random stimulus sequences through the driver interface,
+every observable compared after every stimulus (observe.py). A difference is printed as the shortest sequence
+hypothesis shrinks it to; none in the budget is the evidence a mutant or variant may be called equivalent.
+
+    python -m outline.sequences.differential --profile crh2 --sut tests.variants:PipeTripTooLow
+"""
+from __future__ import annotations
+
+import argparse
+import sys
+from dataclasses import dataclass
+from typing import Any, Callable
+
+from hypothesis import HealthCheck, Phase, given, seed as hypothesis_seed, settings
+from hypothesis import strategies as st
+
+from sut.backends import resolve
+from sut.driver import TrainDriver
+
+from .observe import Observer
+from .stimuli import Action, actions
+
+Factory = Callable[[], TrainDriver]
+
+
+@dataclass
+class Difference:
+    sequence: list[Action]
+    step: int                      # stimuli applied before the looks differed (0: at power-up)
+    what: str                      # the observable
+    a: Any
+    b: Any
+
+    def __str__(self) -> str:
+        lines = ["power_on()"] + [str(a) for a in self.sequence]
+        shown = "\n".join(f"  {'>' if i == self.step else ' '} {line}" for i, line in enumerate(lines))
+        return (f"the SUTs differ after {self.step} stimuli, in {self.what}:\n  A: {self.a!r}\n  B: {self.b!r}\n"
+                f"shortest sequence found (> marks the last stimulus before the difference):\n{shown}")
+
+
+def _looks(make: Factory, profile: str, sequence: list[Action]):
+    driver = make()
+    driver.power_on()
+    observer = Observer(profile, driver)
+    yield observer.look()
+    for action in sequence:
+        try:
+            action.apply(driver)
+        except Exception as error:      # noqa: BLE001  (a refusal is an observable like any other)
+            yield {"refused": type(error).__name__}
+            continue
+        yield observer.look()
+
+
+def first_difference(make_a: Factory, make_b: Factory, profile: str, sequence: list[Action]) -> Difference | None:
+    for step, (a, b) in enumerate(zip(_looks(make_a, profile, sequence), _looks(make_b, profile, sequence))):
+        if a != b:
+            what = next((k for k in sorted(set(a) | set(b)) if a.get(k) != b.get(k)), "?")
+            av, bv = a.get(what), b.get(what)
+            if what == "events":
+                pairs = [(x, y) for x, y in zip(av, bv) if x != y]
+                av, bv = pairs[0] if pairs else (av[len(bv):][:1], bv[len(av):][:1])
+            return Difference(sequence, step, what, av, bv)
+    return None
+
+
+def opener(sut: str, profile: str) -> Factory:
+    cls = resolve(sut)
+    return lambda: cls.open(profile)
+
+
+def search(make_a: Factory, make_b: Factory, profile: str, *, examples: int = 30, max_actions: int = 8,
+           seed: int = 0) -> Difference | None:
+    """The shortest difference hypothesis finds in `examples` sequences of up to `max_actions` stimuli, or
+    None. Seeded and without a database: the same arguments give the same answer."""
+    probe = make_a()
+    probe.power_on()
+    sequences = st.lists(actions(profile, probe), max_size=max_actions)
+    found: list[Difference] = []
+
+    @hypothesis_seed(seed)
+    @settings(max_examples=examples, deadline=None, database=None, derandomize=False,
+              suppress_health_check=list(HealthCheck), phases=[Phase.generate, Phase.shrink])
+    @given(sequences)
+    def compare(sequence: list[Action]) -> None:
+        difference = first_difference(make_a, make_b, profile, sequence)
+        if difference is not None:
+            found.append(difference)
+            raise AssertionError(str(difference))
+
+    try:
+        compare()
+    except AssertionError:
+        return found[-1]                # the last failing example is the shrunk one
+    return None
+
+
+def main(argv: list[str] | None = None) -> int:
+    parser = argparse.ArgumentParser(prog="python -m outline.sequences.differential", description=__doc__.split("\n\n")[0])
+    parser.add_argument("--profile", required=True)
+    parser.add_argument("--sut", required=True, help="the SUT compared (reference, or package.module:Class)")
+    parser.add_argument("--against", default="reference", help="the SUT it is compared with (default: reference)")
+    parser.add_argument("--examples", type=int, default=30, help="random sequences tried (default 30)")
+    parser.add_argument("--actions", type=int, default=8, help="stimuli per sequence at most (default 8)")
+    parser.add_argument("--seed", type=int, default=0)
+    args = parser.parse_args(argv)
+    difference = search(opener(args.against, args.profile), opener(args.sut, args.profile), args.profile,
+                        examples=args.examples, max_actions=args.actions, seed=args.seed)
+    if difference is None:
+        print(f"no difference in {args.examples} sequences of up to {args.actions} stimuli (seed {args.seed})")
+        return 0
+    print(difference)
+    return 1
+
+
+if __name__ == "__main__":
+    sys.exit(main())

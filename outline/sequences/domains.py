@@ -1,0 +1,28 @@
+"""The values a random sequence may give each stimulus of a profile, where the contract names a stimulus but
+not its range: the cabs a desk has, the numbers an input takes. The ranges span the features' own values and
+beyond (an input the features set to 0-300 km/h is drawn from 0-350), so a sequence reaches both sides of
+every band the requirements give."""
+from __future__ import annotations
+
+# Cabs are numbered by their car (the contracts' `about`): the two ends of the set.
+CABS = {"crh2": (1, 8), "atp-crh2": (1, 8), "metro-tcn": (1, 6)}
+CARS = {"crh2": 8, "atp-crh2": 8, "metro-tcn": 6}
+# Supplies where the SUT does not list them (supplies()): the VDX's own input.
+SUPPLIES = {"vdx": ("VDX",)}
+SUPPLY_VOLTS = (0.0, 160.0)             # both sides of 70-125 % of 110 V and of the CRH2 supply bands
+RECORD_UNITS = {"metro-tcn": ("car1.CCU", "car6.CCU"), "atp": ("ATP",)}
+# A number input's range by its unit (the contract gives the unit); an input without one is left out.
+NUMBER_RANGES = {"km/h": (0.0, 350.0), "kPa": (0.0, 900.0), "% of demand": (0.0, 120.0), "%": (0.0, 100.0),
+                 "m": (0.0, 5000.0), "V": (0.0, 160.0), "mV": (0.0, 1000.0)}
+# Desk controls: notches and steps the contracts give (set_traction 0..10, set_brake 0..8).
+TRACTION_NOTCHES = range(0, 11)
+BRAKE_STEPS = range(0, 9)
+DIRECTIONS = ("neutral", "forward", "reverse")
+# How long time runs between stimuli (us): a millisecond at a time, where relays and pulses are judged (3, 6,
+# 8 ms), a poll, a cycle, a supervision bound, a long wait. The observables are looked at after each.
+ADVANCES_US = (1_000, 2_000, 3_000, 5_000, 10_000, 50_000, 120_000, 500_000, 2_000_000, 10_000_000)
+# Integer inputs by unit: a digital input without one is 0/1; an analogue raw count spans 0..100 %.
+INTEGER_RANGES = {None: (0, 1), "Hz": (1650, 2650)}
+RAW_COUNT = (0, 10_000)
+# ZPW-2000 carriers (Hz): drawn half the time, so a carrier the ATP knows is not left to chance.
+CARRIERS = (1700, 2000, 2300, 2600)

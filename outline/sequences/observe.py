@@ -1,0 +1,76 @@
+"""What can be seen of a SUT at its driver interface after a stimulus, as plain data two runs can compare:
+every output, reading and lamp the contract names, each cab's monitor, the records, every ring node's
+counters, rated_limits(), and the trace events of the kinds the contract lists since the last look. An
+answer that is an error is seen as its error's class: two SUTs that refuse alike do not differ."""
+from __future__ import annotations
+
+import math
+from typing import Any, Callable
+
+from sut.contract import load as load_contract
+from sut.driver import TrainDriver
+
+from . import domains
+from .stimuli import _expand, _names
+
+
+def _ask(call: Callable[[], Any]) -> Any:
+    try:
+        return _plain(call())
+    except Exception as error:          # noqa: BLE001  (what is compared is which error, not why)
+        return ("error", type(error).__name__)
+
+
+def _plain(value: Any) -> Any:
+    """Comparable data: floats to 9 significant digits (a float printed by another path is the same value)."""
+    if isinstance(value, float):
+        return float(f"{value:.9g}") if math.isfinite(value) else repr(value)
+    if isinstance(value, dict):
+        return {str(k): _plain(v) for k, v in sorted(value.items(), key=lambda kv: str(kv[0]))}
+    if isinstance(value, (list, tuple)):
+        return [_plain(v) for v in value]
+    if isinstance(value, bytes):
+        return value.hex()
+    return value
+
+
+class Observer:
+    """Looks at one driver of `profile`; `look()` answers what it shows now and the contract's trace events
+    since the previous look."""
+
+    def __init__(self, profile: str, driver: TrainDriver) -> None:
+        self.driver = driver
+        contract = load_contract(profile)
+        has = set(contract.methods).__contains__
+        vehicle = driver.vehicle_names() if has("output") or has("reading") else {}
+        cars = [f"car{n}" for n in range(1, domains.CARS.get(profile, 0) + 1)]
+        self.probes: dict[str, Callable[[], Any]] = {}
+        for kind, method in (("outputs", "output"), ("readings", "reading")):
+            if has(method):
+                for pattern in contract.names.get(kind, {}):
+                    names = _expand(pattern, vehicle.get(kind, [])) or _expand(pattern.replace("car*", "car?"),
+                                                                               [f"{c}{pattern[4:]}" for c in cars])
+                    for name in names:
+                        self.probes[f"{method} {name}"] = lambda m=getattr(driver, method), n=name: m(n)
+        for cab in domains.CABS.get(profile, (1,)):
+            if has("monitor"):
+                self.probes[f"monitor {cab}"] = lambda c=cab: driver.monitor(c)
+            for lamp in contract.names.get("lamps", {}) if has("lamp") else ():
+                self.probes[f"lamp {cab} {lamp}"] = lambda c=cab, n=lamp: driver.lamp(c, n)
+        for unit in domains.RECORD_UNITS.get(profile, ()) if has("records") else ():
+            self.probes[f"records {unit}"] = lambda u=unit: driver.records(u)
+        for node in _names(driver, "ring_nodes") if has("counters") else ():
+            self.probes[f"counters {node}"] = lambda n=node: driver.counters(n)
+        if has("rated_limits"):
+            self.probes["rated_limits"] = driver.rated_limits
+        self.kinds = set(contract.events)
+        self.seen = 0
+
+    def look(self) -> dict[str, Any]:
+        shown = {name: _ask(probe) for name, probe in self.probes.items()}
+        shown["now us"] = self.driver.now_us
+        events = self.driver.trace[self.seen:]
+        self.seen += len(events)
+        shown["events"] = [(ev.t, ev.source, ev.kind, _plain(dict(ev.fields)))
+                           for ev in events if ev.kind in self.kinds]
+        return shown

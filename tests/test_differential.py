@@ -1,0 +1,51 @@
+"""The differential checker (outline/sequences, issue 31): two SUTs driven side by side through the driver
+interface by the same random stimulus sequences. It must find a difference where a variant behaves otherwise,
+print the shortest sequence it shrinks to, find none between a SUT and itself, and answer the same for the
+same seed."""
+from __future__ import annotations
+
+import pytest
+
+from outline.sequences.differential import main, opener, search
+from sut.reference.atp.backend import ReferenceAtp
+from sut.reference.crh2.backend import ReferenceTrain
+from sut.reference.metro.backend import ReferenceMetro
+from tests.variants import LongTokenHold, SlowRelay
+
+
+class SameAtp(ReferenceAtp):
+    """The reference under another name: nothing differs."""
+
+
+class SameTrain(ReferenceTrain):
+    pass
+
+
+class SameMetro(ReferenceMetro):
+    pass
+
+
+@pytest.mark.parametrize(("cls", "profile"), [(SameTrain, "crh2"), (SameMetro, "metro-tcn"), (SameAtp, "atp"),
+                                              (SameAtp, "vdx"), (SameAtp, "atp-crh2")])
+def test_a_sut_against_itself_shows_no_difference(cls: type, profile: str) -> None:
+    assert search(opener("reference", profile), lambda: cls.open(profile), profile, examples=15) is None
+
+
+def test_a_slow_relay_is_found_by_the_shortest_sequence_that_shows_it() -> None:
+    difference = search(opener("reference", "vdx"), lambda: SlowRelay.open("vdx"), "vdx", examples=400,
+                        max_actions=12)
+    assert difference is not None
+    # the loop closes, the FS output goes off (the ATP brakes, or the VDX loses its supply), and a few ms later
+    # the reference's EB2R has opened the loop, SlowRelay's not yet
+    assert difference.sequence[-1].method == "advance", difference
+    assert len(difference.sequence) <= 5, difference
+
+
+def test_the_same_seed_gives_the_same_answer(capsys: pytest.CaptureFixture) -> None:
+    args = ["--profile", "crh2", "--sut", f"tests.variants:{LongTokenHold.__name__}", "--examples", "200",
+            "--actions", "10", "--seed", "0"]
+    assert main(args) == 1
+    first = capsys.readouterr().out
+    assert main(args) == 1
+    assert capsys.readouterr().out == first
+    assert "shortest sequence found" in first and "power_on()" in first
