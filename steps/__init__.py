@@ -21,4 +21,5 @@ STEP_MODULES = [
     "steps.metro",
     "steps.vdx",
     "steps.atp",
+    "steps.sequences",
 ]

@@ -4,7 +4,7 @@ value words and units (domains.py for ranges the contract leaves out)."""
 from __future__ import annotations
 
 import re
-from dataclasses import dataclass
+from dataclasses import dataclass, field
 from typing import Any
 
 from hypothesis import strategies as st
@@ -17,9 +17,11 @@ from . import domains
 
 @dataclass(frozen=True)
 class Action:
-    """One driver call: `method(*args)`."""
+    """One driver call, `method(*args)`, and where it has one, the step library's sentence that makes it (a
+    sequence of such sentences is a scenario a user can paste into a feature file: sentences.py)."""
     method: str
     args: tuple
+    sentence: str = field(default="", compare=False)
 
     def apply(self, driver: TrainDriver) -> None:
         getattr(driver, self.method)(*self.args)

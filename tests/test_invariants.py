@@ -1,0 +1,66 @@
+"""The random-sequence judge (outline/sequences, steps/sequences.py; features F-ILK-10, F-ATP-14): its stimuli are
+the step library's own sentences, so a sequence it prints is a scenario a user can paste; it finds a variant
+that breaks an invariant and shrinks the sequence; the same seed gives the same sequence."""
+from __future__ import annotations
+
+import pytest
+from hypothesis import HealthCheck, given, settings
+from hypothesis import strategies as st
+
+from outline.sequences.invariants import INVARIANTS
+from outline.sequences.judge import OPENING, search
+from outline.sequences.sentences import OPENINGS, PROFILES, sequences
+from outline.stepdefs import definitions_in_modules, step_problem
+from steps import STEP_MODULES
+from sut.backends import resolve
+from tests.variants import IsolationIgnored, SeparationWithoutRapidBrake
+
+DEFINITIONS = definitions_in_modules(STEP_MODULES)
+
+
+@pytest.mark.parametrize("profile", sorted(PROFILES))
+def test_every_stimulus_is_a_sentence_of_the_step_library(profile: str) -> None:
+    driver = resolve("reference").open(profile)
+    driver.power_on()
+    drawn = sequences(profile, driver, 12)
+    said: set[str] = set()
+
+    @settings(max_examples=300, database=None, deadline=None, suppress_health_check=list(HealthCheck))
+    @given(drawn)
+    def collect(sequence) -> None:
+        said.update(a.sentence for a in sequence)
+
+    collect()
+    said.update(a.sentence for opening in OPENINGS[profile] for a in opening)
+    problems = [p for p in (step_problem("when", text, DEFINITIONS) for text in sorted(said)) if p]
+    problems += [p for line in OPENING[profile]
+                 if (p := step_problem("given", line.split(" ", 1)[1], DEFINITIONS))]
+    assert not problems, problems
+    assert len(said) > 20, sorted(said)
+
+
+def _invariant(requirement: str):
+    return next(i for i in INVARIANTS if i.requirements[0] == requirement)
+
+
+def test_a_variant_breaking_an_invariant_is_found_and_shown_as_a_scenario() -> None:
+    violation = search(lambda: IsolationIgnored.open("vdx"), _invariant("VDX-01"), examples=40)
+    assert violation is not None
+    text = violation.gherkin().splitlines()
+    assert text[1:3] == [f"  {line}" for line in OPENING["vdx"]]
+    assert any(line.endswith(" the ATP isolation switch is turned on") for line in text), text
+    assert text[-1].startswith("  # Then the loop is closed exactly when"), text
+
+
+def test_the_same_seed_finds_the_same_sequence() -> None:
+    runs = [search(lambda: SeparationWithoutRapidBrake.open("crh2"), _invariant("ILK-01"), examples=25, seed=0)
+            for _ in range(2)]
+    assert runs[0] is not None and runs[0].gherkin() == runs[1].gherkin()
+    assert "the train separates between car" in runs[0].gherkin()
+
+
+def test_every_invariant_names_requirements_a_feature_verifies() -> None:
+    from pathlib import Path
+    text = "".join(p.read_text(encoding="utf-8") for p in Path("features").rglob("*.feature"))
+    for invariant in INVARIANTS:
+        assert f"after every stimulus of every sequence, {invariant.name}\n" in text, invariant
