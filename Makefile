@@ -44,7 +44,9 @@ SHARDS ?= 4
 SHARD ?= 1
 SHARD_RESULTS := reports/shards
 
-CAMPAIGN_ITEMS := F-NET-30,F-NET-31,F-NET-32,F-NET-33,F-NET-34
+CAMPAIGN_ITEMS := F-NET-30,F-NET-31,F-NET-32,F-NET-33,F-NET-34,F-ILK-10,F-ATP-14
+# Random sequences per invariant in make campaign (the features' own budget, 25-40, in make test/report).
+SEQUENCES ?= 400
 
 .PHONY: help report test check trace clean distclean mutate shard merge durations campaign
 
@@ -80,8 +82,8 @@ mutate: $(VENV_STAMP) $(MUTATE_STAMP) ## mutation testing of the references (MUT
 
 # No Allure report: 16,120 rows make one of ~400 MB even with evidence for failures only (3160 rows: 82 MB).
 # A campaign's report: make report PYTEST_ARGS="--item F-NET-32 --evidence failed".
-campaign: $(VENV_STAMP) ## the fault campaigns in full (every single and every double fault, 8 and 16 cars): verdicts and each failing row
-	$(PY) -m pytest features $(XDIST) -q -rf --item $(CAMPAIGN_ITEMS) $(SUT_ARG) $(PYTEST_ARGS)
+campaign: $(VENV_STAMP) ## the fault campaigns in full (every single and every double fault, 8 and 16 cars), and the random-sequence invariants with SEQUENCES sequences each: verdicts and each failing row
+	$(PY) -m pytest features $(XDIST) -q -rf --item $(CAMPAIGN_ITEMS) --sequences $(SEQUENCES) $(SUT_ARG) $(PYTEST_ARGS)
 
 shard: $(VENV_STAMP) ## one shard of the conformance run (SHARDS=4 SHARD=1, balanced by .test_durations): allure results in reports/shards/<SHARD>
 	@rm -rf $(SHARD_RESULTS)/$(SHARD) && mkdir -p $(SHARD_RESULTS)/$(SHARD)
