@@ -104,3 +104,10 @@ def describe(events: list[TraceEvent], limit: int = 6) -> str:
     shown = "; ".join(f"{e.t_ms:.3f} ms {e.source} {e.kind} {dict(e.fields)}" for e in events[:limit])
     more = f" ... ({len(events)} in all)" if len(events) > limit else ""
     return shown + more
+
+
+def record_event(declaration, event: str) -> str:
+    """The word a SUT's fault records (`F|<t ms>|<node>|<board>|<event>`) use for `event`: a board's `failed` and
+    `recovered` as it declares them (sut/contract/form.yaml crh2 texts, view records), other events (a supply's
+    `restarted after ...`) as they are."""
+    return declaration.text(event) if event in ("failed", "recovered") else event

@@ -167,13 +167,61 @@ def _(sut: TrainDriver, car: int, device: str) -> None:
 @then(parsers.parse("每辆车的{device:w}每{lo:g}至{hi:g} ms被轮询一次"))
 @then(parsers.parse("the {device:w} of every car is polled every {lo:g} to {hi:g} ms"))
 def _(sut: TrainDriver, t_action: int, device: str, lo: float, hi: float) -> None:
+    _every_car_polls(sut, t_action, device, lo, hi, "polled")
+
+
+def _every_car_polls(sut: TrainDriver, t_action: int, device: str, lo: float, hi: float, what: str) -> None:
+    """The device of every car answers every poll since the action, its polls lo..hi ms apart."""
     for car in analysis.cars(sut):
         name = f"car{car}.{device}"
         assert name in sut.devices(car), f"car {car} has no {device}: {sorted(sut.devices(car))}"
         polls = sut.trace.select(kind="loop.poll", source=name, since=t_action)
         unanswered = [ev for ev in polls if not ev["reply"]]
         assert not unanswered, f"{name} did not answer: {analysis.describe(unanswered)}"
-        analysis.expect_period((ev.t for ev in polls), lo, hi, f"{name} polled")
+        analysis.expect_period((ev.t for ev in polls), lo, hi, f"{name} {what}")
+
+
+# NET-09: "polled, periods per device" and no figures: each device's period is the SUT's, declared (IXIT).
+_LOOP_PERIODS = {"ACS": "acs_poll_period_ms", "PID": "pid_poll_period_ms", "APU": "apu_poll_period_ms",
+                 "SDD": "sdd_send_period_ms", "DD": "dd_report_period_ms"}
+
+
+def _declared_period(declaration: ProfileDeclaration, device: str) -> tuple[float, float]:
+    """lo, hi in ms: the period the SUT declares for this kind of current-loop device, within its declared
+    tolerance (per cent of the period) and timing resolution."""
+    kind = device.rsplit(".", 1)[-1]
+    assert kind in _LOOP_PERIODS, f"{device} is not a current-loop device with a declared period"
+    period = declaration.parameter(_LOOP_PERIODS[kind])
+    slack = period * declaration.parameter("loop_period_tolerance_pct") / 100 \
+        + declaration.parameter("timing_resolution_us") / 1000
+    return period - slack, period + slack
+
+
+@then(parsers.parse("每辆车的{device:w}按其声明的周期被轮询"))
+@then(parsers.parse("the {device:w} of every car is polled at its declared period"))
+def _(sut: TrainDriver, declaration: ProfileDeclaration, t_action: int, device: str) -> None:
+    lo, hi = _declared_period(declaration, device)
+    _every_car_polls(sut, t_action, device, lo, hi, "polled (declared period)")
+
+
+@then(parsers.parse('"{device}"按其声明的周期被轮询'))
+@then(parsers.parse('"{device}" is polled at its declared period'))
+def _(sut: TrainDriver, declaration: ProfileDeclaration, t_action: int, device: str) -> None:
+    lo, hi = _declared_period(declaration, device)
+    polls = sut.trace.select(kind="loop.poll", source=device, since=t_action)
+    analysis.expect_period((ev.t for ev in polls), lo, hi, f"{device} polled (declared period)")
+
+
+@then(parsers.parse('"{device}"只接收其LCU发来的数据,按其声明的周期'))
+@then(parsers.parse('"{device}" only receives from its LCU, at its declared period'))
+def _(sut: TrainDriver, declaration: ProfileDeclaration, t_action: int, device: str) -> None:
+    _one_way(sut, t_action, device, "loop.send", *_declared_period(declaration, device))
+
+
+@then(parsers.parse('"{device}"只向其LCU发送数据,按其声明的周期'))
+@then(parsers.parse('"{device}" only sends to its LCU, at its declared period'))
+def _(sut: TrainDriver, declaration: ProfileDeclaration, t_action: int, device: str) -> None:
+    _one_way(sut, t_action, device, "loop.report", *_declared_period(declaration, device))
 
 
 @then(parsers.parse('"{device}"接在{milliamps:d} mA电流环上'))
@@ -220,9 +268,11 @@ def _fault_records(sut: TrainDriver, master: str, node: str) -> list[list[str]]:
     return [t.split("|") for t in texts if t.startswith("F|")]
 
 
-def _records_saying(sut: TrainDriver, master: str, node: str, board: str, event: str) -> list[list[str]]:
-    """Those of them saying `board` `event` (failed, recovered)."""
-    return [r for r in _fault_records(sut, master, node) if r[3:] == [board, event]]
+def _records_saying(sut: TrainDriver, declaration: ProfileDeclaration, master: str, node: str, board: str,
+                    event: str) -> list[list[str]]:
+    """Those of them saying `board` `event` (failed, recovered: in the SUT's declared words)."""
+    word = analysis.record_event(declaration, event)
+    return [r for r in _fault_records(sut, master, node) if r[3:] == [board, word]]
 
 
 @then(parsers.parse('"{master}"保存有"{node}"的{count:d}条故障记录'))
@@ -236,8 +286,9 @@ def _(sut: TrainDriver, master: str, count: int, node: str) -> None:
                     '不超过{bound:g} ms'), converters={"event": zh.core_event})
 @then(parsers.parse('"{master}" holds a fault record of "{node}" saying "{board}" {event:w}, stamped within '
                     '{bound:g} ms of it'))
-def _(sut: TrainDriver, t_action: int, master: str, node: str, board: str, event: str, bound: float) -> None:
-    records = _records_saying(sut, master, node, board, event)
+def _(sut: TrainDriver, declaration: ProfileDeclaration, t_action: int, master: str, node: str, board: str,
+      event: str, bound: float) -> None:
+    records = _records_saying(sut, declaration, master, node, board, event)
     assert records, f"{master} holds no record of {node} saying {board} {event}: {_fault_records(sut, master, node)}"
     stamp_us = int(records[-1][1]) * 1000              # whole milliseconds
     assert t_action - 1000 < stamp_us <= t_action + us(bound), (
@@ -253,13 +304,14 @@ RECORD_LOOK_US = 10_000
       converters={"event": zh.core_event})
 @then(parsers.parse('"{master}" holds a fault record of "{node}" saying "{board}" {event:w} at most {bound:g} ms '
                     'after it'))
-def _(sut: TrainDriver, t_action: int, master: str, node: str, board: str, event: str, bound: float) -> None:
+def _(sut: TrainDriver, declaration: ProfileDeclaration, t_action: int, master: str, node: str, board: str,
+      event: str, bound: float) -> None:
     deadline = t_action + us(bound)
     if sut.now_us > deadline:
         raise AssertionError(f"the step comes {ms(sut.now_us - deadline)} after its bound: when the record came "
                              f"cannot be told any more (look before {bound:g} ms have passed)")
     while True:
-        if _records_saying(sut, master, node, board, event):
+        if _records_saying(sut, declaration, master, node, board, event):
             return
         if sut.now_us >= deadline:
             raise AssertionError(f"{ms(deadline - t_action)} after the {event} {master} holds no record of {node} "

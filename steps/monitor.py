@@ -98,9 +98,9 @@ def _(sut: TrainDriver, declaration: ProfileDeclaration, cab: int, first: str, s
 @then(parsers.parse('"{master}"保存有"{node}"关于"{board}"{event:w}的故障记录'),
       converters={"event": zh.core_event})
 @then(parsers.parse('"{master}" holds a fault record of "{node}" saying "{board}" {event:w}'))
-def _(sut: TrainDriver, master: str, node: str, board: str, event: str) -> None:
+def _(sut: TrainDriver, declaration: ProfileDeclaration, master: str, node: str, board: str, event: str) -> None:
     records = [r.rstrip(b"\0").decode("ascii", "replace") for r in sut.block_store(master).get(node, [])]
-    want = f"|{node}|{board}|{event}"
+    want = f"|{node}|{board}|{analysis.record_event(declaration, event)}"
     assert any(r.startswith("F|") and r.endswith(want) for r in records), f"{master} holds {records} from {node}"
 
 

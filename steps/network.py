@@ -16,15 +16,18 @@ def _node(source: str) -> str:
 
 
 # -- token ------------------------------------------------------------------------------------------
-@then(parsers.parse("每个节点在上电后{lo:g}至{hi:g} ms发送令牌初始化"))
-@then(parsers.parse("every node sends a token initialisation {lo:g} to {hi:g} ms after power-up"))
+@then(parsers.parse("令牌初始化仅在上电后{lo:g}至{hi:g} ms发送"))
+@then(parsers.parse("token initialisations are sent {lo:g} to {hi:g} ms after power-up and at no other time"))
 def _(sut: TrainDriver, lo: float, hi: float) -> None:
+    """PRO-03: nodes that heard no status data for 500 ms send a token initialisation. A node that has
+    already heard another's initialisation may stay quiet (it is no longer waiting on silence), so the
+    check is that the initialisation comes, and that no node sends one outside the window."""
     inits = {}
     for ev in sut.trace.select(kind="token.init"):
         inits.setdefault(_node(ev.source), ev.t)
-    for node in sut.ring_nodes():
-        assert node in inits, f"{node} never sent a token initialisation"
-        assert us(lo) <= inits[node] <= us(hi), f"{node} sent it at {ms(inits[node])}, outside {lo}..{hi} ms"
+    assert inits, "no node sent a token initialisation"
+    for node, t in inits.items():
+        assert us(lo) <= t <= us(hi), f"{node} sent it at {ms(t)}, outside {lo}..{hi} ms"
 
 
 @then(parsers.parse('首次令牌初始化后{lo:g}至{hi:g} ms由"{node}"生成令牌'))
@@ -56,12 +59,16 @@ def _(sut: TrainDriver, t_action: int, lo: float, hi: float) -> None:
 @then("令牌按环网顺序依次经过各节点")
 @then("the token visits the nodes in ring order")
 def _(sut: TrainDriver, t_action: int) -> None:
+    """PRO-04: passed to the neighbour in sequence. Either way round is a sequence: the direction is the
+    SUT's, taken from its first pass, and must then hold for every pass."""
     nodes = sut.ring_nodes()
     visits = [_node(ev.source) for ev in sut.trace.select(kind="token.rx", since=t_action)]
     assert len(visits) > len(nodes), f"only {len(visits)} token visits"
+    step = (nodes.index(visits[1]) - nodes.index(visits[0])) % len(nodes)
+    assert step in (1, len(nodes) - 1), f"the token went from {visits[0]} to {visits[1]}, not to a neighbour"
     for a, b in zip(visits, visits[1:]):
         ia = nodes.index(a)
-        assert nodes[(ia + 1) % len(nodes)] == b, f"the token went from {a} to {b}, not to the next node"
+        assert nodes[(ia + step) % len(nodes)] == b, f"the token went from {a} to {b}, not to the next node"
 
 
 @then(parsers.parse('"{node}"收到令牌后{lo:g}至{hi:g} ms将令牌沿原路送回'))
@@ -411,10 +418,16 @@ def _(sut: TrainDriver, t_action: int) -> None:
         else:                            # token formation: no handover in the trace to hold the ID against
             assert sid in numbers.values(), f"{where}: a {ev['frame']} packet from node {sid}, not on the ring"
         carried.setdefault(ev["frame"], set()).add(sid)
-    # Every node's status crosses every span (broadcast both ways): all of those sent early enough are seen.
+    # NET-03 asks only that every node is reached: a broadcast sent one way round an intact ring reaches
+    # everyone and crosses every span but the one behind its sender. So every node's status (sent early
+    # enough) crosses the span, except perhaps one of the two nodes at its ends; a wire that misnames senders
+    # (one constant ID) shows far fewer source IDs than that.
     early = {sid for sid, t in handed.get("status", {}).items() if t <= end - us(100)}
+    ends = {numbers[n] for ev in sut.trace.select(kind="link.tx", since=t_action) for n in (ev["frm"], ev["to"])
+            if n in numbers}
     missing = early - carried.get("status", set())
-    assert early and not missing, f"no status packet with the source ID of node(s) {sorted(missing)} crossed the span"
+    assert early and len(missing - ends) == 0 and len(missing) <= 1, \
+        f"no status packet with the source ID of node(s) {sorted(missing)} crossed the span"
 
 
 @then(parsers.parse("分析仪发现被损坏的{kind}帧未通过ARCNET校验"), converters={"kind": zh.frame})

@@ -16,6 +16,18 @@ from steps.verdicts import not_applicable
 
 SELFTEST_PERIOD_US = 5_000_000          # VDX-03: every 5 s
 THRESHOLD_V = 6.0                       # VDX-03
+NOMINAL_V, SUPPLY_LO, SUPPLY_HI = 110.0, 0.70, 1.25      # VDX-02: DC 110 V, 70 % to 125 %
+
+
+def inside_supply(declaration: ProfileDeclaration, volts: float) -> float:
+    """The supply to set for a feature's `volts`: inside VDX-02's range, moved inside by the accuracy the SUT
+    declares for its own supply measurement (a VDX whose measurement is 0.5 % off may find 137.5 V out of
+    range), so the range's edges are tested where every conforming VDX must work; outside it, as written."""
+    lo, hi = SUPPLY_LO * NOMINAL_V, SUPPLY_HI * NOMINAL_V
+    if not lo <= volts <= hi:
+        return volts
+    accuracy = declaration.parameters.get("supply_accuracy_pct", 0) / 100 * NOMINAL_V   # not declared: exact
+    return min(max(volts, lo + accuracy), hi - accuracy)
 
 
 @given("一套CTCS3-300T车载ATP及其VDX紧急制动接口")
@@ -37,8 +49,8 @@ def _(sut: TrainDriver, declaration: ProfileDeclaration, firmware: str) -> None:
 @given(parsers.parse("the FS output is fed with {volts:g} V"))
 @when(parsers.parse("VDX电源电压变为{volts:g} V"), target_fixture="t_action")
 @when(parsers.parse("the VDX supply goes to {volts:g} V"), target_fixture="t_action")
-def _(sut: TrainDriver, volts: float) -> int:
-    sut.set_supply_voltage("VDX", volts)
+def _(sut: TrainDriver, declaration: ProfileDeclaration, volts: float) -> int:
+    sut.set_supply_voltage("VDX", inside_supply(declaration, volts))
     return sut.now_us
 
 
@@ -147,13 +159,23 @@ def _(sut: TrainDriver, relay: str, state: str) -> None:
     assert sut.output(relay) == state, f"{relay} is {sut.output(relay)}, not {state}"
 
 
-@then(parsers.parse("FS输出电压为{volts:g} V,误差不超过{tol:g} V"))
-@then(parsers.parse("the FS output reads {volts:g} V within {tol:g} V"))
-def _(sut: TrainDriver, volts: float, tol: float) -> None:
-    """VDX-01: the FS output feeds EB2R's coil, so it carries the supply while the brake is released and
-    nothing once the ATP brakes (fail-safe: a dead output is the braking state)."""
+@then(parsers.parse("FS输出电压不低于{volts:g} V"))
+@then(parsers.parse("the FS output reads at least {volts:g} V"))
+def _(sut: TrainDriver, volts: float) -> None:
+    """VDX-01: the FS output feeds EB2R's coil and is on while the brake is released. Its voltage VDX-01/02 do
+    not give (the reference carries the supply); the features ask only that it is not low in VDX-03's sense
+    (below 6 V)."""
     got = sut.reading("FS output voltage")
-    assert abs(got - volts) <= tol, f"the FS output reads {got:g} V, not {volts:g} V within {tol:g} V"
+    assert got >= volts, f"the FS output reads {got:g} V, below {volts:g} V"
+
+
+@then(parsers.parse("FS输出电压低于{volts:g} V"))
+@then(parsers.parse("the FS output reads below {volts:g} V"))
+def _(sut: TrainDriver, volts: float) -> None:
+    """The FS output low: braking (fail-safe, a dead output is the braking state) or inside a self-test's
+    pull-down (VDX-03: below 6 V passes)."""
+    got = sut.reading("FS output voltage")
+    assert got < volts, f"the FS output reads {got:g} V, not below {volts:g} V"
 
 
 @then(parsers.parse("紧急制动回路在{bound:g} ms内断开"))
@@ -266,9 +288,9 @@ def c019_sweep() -> dict:
 @when(parsers.parse("在{volts} V下,缓解时刻从FS自检前{lo:d} ms逐毫秒扫描至{hi:d} ms"),
       converters={"volts": zh.vdx_volts})
 @when(parsers.parse("the release is swept from {lo:d} to {hi:d} ms before an FS self-test at {volts} V"))
-def _(sut: TrainDriver, c019_sweep: dict, lo: int, hi: int, volts: str) -> None:
+def _(sut: TrainDriver, declaration: ProfileDeclaration, c019_sweep: dict, lo: int, hi: int, volts: str) -> None:
     for v in [float(x) for x in volts.replace(" and ", ",").split(",")]:
-        sut.set_supply_voltage("VDX", v)
+        sut.set_supply_voltage("VDX", inside_supply(declaration, v))     # the table keeps the feature's volts
         for offset in range(lo, hi + 1):
             if sut.output("VDX fault") == "C019":
                 sut.power_off("VDX")                      # C019 latches until restart (VDX-06)
@@ -296,6 +318,15 @@ def _(c019_sweep: dict, volts: float, below: float) -> None:
     swept = sorted(o for (v, o) in c019_sweep if v == volts)
     missing = [o for o in swept if o < below and not c019_sweep[(volts, o)]]
     assert swept and not missing, f"at {volts:g} V no C019 for releases {missing} ms before the test"
+
+
+@then(parsers.parse("{volts:g} V下,有在自检前不足{below:g} ms缓解而报C019的"))
+@then(parsers.parse("at {volts:g} V C019 is raised for some release under {below:g} ms before the test"))
+def _(c019_sweep: dict, volts: float, below: float) -> None:
+    """VDX-05/06: with the old firmware C019 is still possible after a late release; for which releases depends
+    on where in the 2nd ms the VDX samples (VDX-03), so not every one."""
+    hits = [o for o in _c019_offsets(c019_sweep, volts) if o < below]
+    assert hits, f"at {volts:g} V no C019 for any release under {below:g} ms before the test"
 
 
 @then(parsers.parse("{volts:g} V下,凡在自检前{least:g} ms及以上缓解的均不报C019"))

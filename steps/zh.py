@@ -35,7 +35,9 @@ frame = words(FRAMES)
 ATP_LINES = {"上行": "up", "下行": "down", "上": "up", "下": "down"}
 ATP_MODES = {"完全监控": "FS", "完全": "FS", "部分监控": "PS", "部分": "PS", "待机": "SB", "机车信号": "CS",
              "休眠": "SL", "自动驾驶": "AM"}
-ATP_BRAKES = {"最大常用": "max service", "紧急": "emergency", "常用": "service", "无": "no"}
+# The brakes an ATP commands (its `ATP brake` output: none, max service, emergency). No word for a plain service
+# brake (常用 -> service): an ATP never commands one, so such a feature could never pass; 最大常用 is the word.
+ATP_BRAKES = {"最大常用": "max service", "紧急": "emergency", "无": "no"}
 ATP_PERMISSIONS = {"门控许可": "door enable", "开门许可": "door enable", "门允许": "door enable",
                    "屏蔽门许可": "PSD permission", "屏蔽门开关许可": "PSD permission", "站台门许可": "PSD permission",
                    "ATO允许": "ATO allowed"}
@@ -138,9 +140,11 @@ core_list = listing
 
 
 # -- steps/metro.py (metro TCN profile), steps/environment.py, steps/extra_*.py -----------------------------
-# The display unit's modes (sut/reference/metro/tcds.py) and the MVB data classes (sut/codecs/mvb.py).
+# The display unit's modes as a Chinese feature names them, to the form's message identifiers (sut/contract/
+# form.yaml, metro-tcn texts); the step compares the SUT's declared text of the identifier, as the ATP's DMI
+# does (steps/atp.py): the SUT's own words are never assumed. And the MVB data classes (sut/codecs/mvb.py).
 METRO_MODES = {"正常": "normal", "正常模式": "normal", "无主控司机室": "no cab", "列车网络故障": "train network failure",
-               "紧急运行": "emergency operation", "紧急运行模式": "emergency operation", "上电": "power-up"}
+               "紧急运行": "emergency operation", "紧急运行模式": "emergency operation"}
 METRO_DATA_CLASSES = {"过程数据": "process data", "消息数据": "message data", "信息数据": "message data",
                       "监视数据": "supervisory data", "监管数据": "supervisory data"}
 

@@ -10,6 +10,7 @@ from __future__ import annotations
 import re
 
 from sut.reference.crh2.backend import ReferenceTrain
+from tests.wording import reword
 from sut.reference.atp.backend import ReferenceAtp
 from sut.reference.metro.backend import ReferenceMetro
 from sut.reference.metro.ports import DI_KEY, Command
@@ -691,11 +692,7 @@ METRO_TEXTS_ZH = {"<device>: no status data": "<device>：无状态数据",
 
 
 def _in_chinese(text: str) -> str:
-    for english, chinese in METRO_TEXTS_ZH.items():
-        parts = re.split(r"(<\w+>)", english)
-        rx = "".join(f"(?P<{p[1:-1]}>[A-Za-z0-9_.]+)" if p.startswith("<") else re.escape(p) for p in parts)
-        text = re.sub(rx, lambda m: re.sub(r"<(\w+)>", lambda n: m.group(n.group(1)), chinese), text)
-    return text
+    return reword(text, METRO_TEXTS_ZH)
 
 
 class ChineseDisplayMetro(ReferenceMetro):

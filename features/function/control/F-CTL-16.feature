@@ -2,7 +2,9 @@
 Feature: F-CTL-16 Redundant MVB I/O modules: module 1 while its life signal is set, else module 2
   Requirements: RED-07 (primary), TCN-07, TST-04.
   The two I/O modules of a cab car read the same inputs (28 digital, 3 analogue). A wiring fault on one
-  module's master-controller input (AI1) shows which module's inputs drive the train.
+  module's master-controller input shows which module's inputs drive the train; which channel carries the
+  traction demand and the direction switch, and at what scale, is the SUT's declared I/O map (TCN-07 gives
+  the channel counts only).
 
   Background:
     Given a 6-car metro train with its train control and diagnosis system
@@ -12,7 +14,7 @@ Feature: F-CTL-16 Redundant MVB I/O modules: module 1 while its life signal is s
 
   @req:RED-07
   Scenario: F-CTL-16 Module 2 is not used while module 1 lives
-    Given a wiring fault holds input AI1 of "car1.IO2" at 3000
+    Given a wiring fault holds the traction demand input of "car1.IO2" at 30 %
     And the train has been powered up for 1000 ms
     When 500 ms pass
     Then every VVVF applies 60 % traction
@@ -20,7 +22,7 @@ Feature: F-CTL-16 Redundant MVB I/O modules: module 1 while its life signal is s
 
   @req:RED-07
   Scenario: F-CTL-16 Module 1's life signal drops: the inputs of module 2 are used
-    Given a wiring fault holds input AI1 of "car1.IO2" at 3000
+    Given a wiring fault holds the traction demand input of "car1.IO2" at 30 %
     And the train has been powered up for 1000 ms
     When "car1.IO1" fails
     And 500 ms pass
@@ -52,7 +54,7 @@ Feature: F-CTL-16 Redundant MVB I/O modules: module 1 while its life signal is s
 
   @req:TCN-07 @req:RED-07
   Scenario: F-CTL-16 A digital input of module 2 drives the train once module 1's life signal is 0
-    Given a wiring fault holds input DI02 of "car1.IO2" at 0
+    Given a wiring fault holds the forward input of "car1.IO2" at 0
     And the train has been powered up for 1000 ms
     When "car1.IO1" fails
     And 300 ms pass

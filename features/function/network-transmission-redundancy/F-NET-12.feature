@@ -1,7 +1,8 @@
 @item:F-NET-12 @profile:crh2 @req:TST-04
 Feature: F-NET-12 Token formation after power-up
   Requirements: PRO-03 (primary), TST-04.
-  No status data within 500 ms of power-up: every node sends a token initialisation; the token is formed
+  No status data within 500 ms of power-up: the nodes send a token initialisation
+  (a node that hears another's first may stay quiet); the token is formed
   at node number x 20 ms, so the lowest-numbered live node forms it.
 
   Background:
@@ -11,7 +12,7 @@ Feature: F-NET-12 Token formation after power-up
   Scenario: F-NET-12 Node 1 forms the token 20 ms after the initialisation
     Given the train is powered up
     When 1000 ms pass
-    Then every node sends a token initialisation 500 to 510 ms after power-up
+    Then token initialisations are sent 500 to 510 ms after power-up and at no other time
     And the token is formed by "car1.CCU.sys1" 19 to 21 ms after the first token initialisation
 
   @req:PRO-03

@@ -49,4 +49,6 @@ Feature: F-ILK-08 Traction command permission: every condition alone blocks trac
     When the driver removes the key from cab 1
     And 200 ms pass
     Then the "traction" is blocked
-    And "car1.CCU.sys1" puts no commands on the ring from 1 ms on
+    # A command sampled before the key came out may still be on its way to the MDM8 (the TXC's loop, a
+    # product's task): no requirement times the MCR's drop, so the desk-to-device budget of 40 ms is allowed.
+    And "car1.CCU.sys1" puts no commands on the ring from 40 ms on

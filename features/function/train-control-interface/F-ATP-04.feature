@@ -3,8 +3,10 @@ Feature: F-ATP-04 VDX emergency-brake loop: EB1R and EB2R in series, the isolati
   Requirements: VDX-01 (primary), VDX-02, VDX-04, TST-04.
   The ATP opens the train's emergency-brake loop through EB1R (energised = brake, HR output) and EB2R
   (de-energised = brake, FS output) in series; the isolation switch bypasses both. The VDX works on
-  110 V DC from 70 % to 125 % (77-137.5 V). Bound from the relay data (VDX-04): the NO contact of EB2R
-  moves within 6 ms of its coil losing power.
+  110 V DC from 70 % to 125 % (77-137.5 V); the edges are tested moved inside by the supply accuracy the
+  VDX declares (supply_accuracy_pct). Bound from the relay data (VDX-04): the NO contact of EB2R moves within
+  6 ms of its coil losing power. The FS output's voltage no requirement gives: on is not low in VDX-03's
+  sense (6 V or more), off is below 6 V.
 
   Background:
     Given a CTCS3-300T ATP with its VDX emergency-brake interface
@@ -17,7 +19,7 @@ Feature: F-ATP-04 VDX emergency-brake loop: EB1R and EB2R in series, the isolati
     Then the emergency-brake loop is closed
     And relay EB2R is energised
     And relay EB1R is de-energised
-    And the FS output reads 110 V within 11 V
+    And the FS output reads at least 6 V
 
   @req:VDX-01 @req:VDX-04
   Scenario: F-ATP-04 Braking: the loop opens within 6 ms through both relays
@@ -28,7 +30,7 @@ Feature: F-ATP-04 VDX emergency-brake loop: EB1R and EB2R in series, the isolati
     Then the emergency-brake loop opens within 6 ms of the FS output going off
     And relay EB2R is de-energised
     And relay EB1R is energised
-    And the FS output reads 0 V within 6 V
+    And the FS output reads below 6 V
 
   @req:VDX-01
   Scenario: F-ATP-04 The isolation switch bypasses both relays

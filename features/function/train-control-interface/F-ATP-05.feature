@@ -3,7 +3,9 @@ Feature: F-ATP-05 FS output self-test every 5 s, 3 ms, sampled from the 2nd ms a
   Requirements: VDX-03 (primary), VDX-04, TST-04.
   Every 5 s the VDX removes one of the four excitation sources of the FS output for 3 ms and samples the
   output from the start of the 2nd ms: below 6 V passes; otherwise C019, the FS output stays off (emergency
-  brake) until restart. The relay rides through the 3 ms: the loop stays closed.
+  brake) until restart. The relay rides through the 3 ms: the loop stays closed. To raise C019 the ATP
+  releases 1 ms before a test: the old firmware then runs it 16 ms after the release (VDX-06), on the most
+  charged coil it ever tests: if the old firmware shows C019 at all, wherever in the 2nd ms it samples, it does there.
 
   Background:
     Given a CTCS3-300T ATP with its VDX emergency-brake interface
@@ -25,10 +27,10 @@ Feature: F-ATP-05 FS output self-test every 5 s, 3 ms, sampled from the 2nd ms a
     And the ATP has released the emergency brake
     When 6 s pass
     And the VDX is 1.5 ms into its next FS self-test
-    Then the FS output reads 0 V within 6 V
+    Then the FS output reads below 6 V
     And relay EB2R is energised
     When 5 ms pass
-    Then the FS output reads 137 V within 14 V
+    Then the FS output reads at least 6 V
     And the emergency-brake loop is closed
 
   @req:VDX-03
@@ -37,7 +39,7 @@ Feature: F-ATP-05 FS output self-test every 5 s, 3 ms, sampled from the 2nd ms a
     And the train has been powered up for 1000 ms
     And the ATP has released the emergency brake
     When 11 s pass
-    And the ATP releases the emergency brake 20 ms before the next FS self-test
+    And the ATP releases the emergency brake 1 ms before the next FS self-test
     And 30 s pass
     Then C019 is raised and the emergency-brake loop stays open
     And every FS self-test sampled at 6 V or more raised C019 and none below
@@ -48,7 +50,7 @@ Feature: F-ATP-05 FS output self-test every 5 s, 3 ms, sampled from the 2nd ms a
     And the train has been powered up for 1000 ms
     And the ATP has released the emergency brake
     When 11 s pass
-    And the ATP releases the emergency brake 20 ms before the next FS self-test
+    And the ATP releases the emergency brake 1 ms before the next FS self-test
     And 2 h pass
     Then C019 is raised and the emergency-brake loop stays open
 
@@ -58,7 +60,7 @@ Feature: F-ATP-05 FS output self-test every 5 s, 3 ms, sampled from the 2nd ms a
     And the train has been powered up for 1000 ms
     And the ATP has released the emergency brake
     When 11 s pass
-    And the ATP releases the emergency brake 20 ms before the next FS self-test
+    And the ATP releases the emergency brake 1 ms before the next FS self-test
     And 1000 ms pass
     Then C019 is raised and the emergency-brake loop stays open
     When the train runs for 0.1 h
@@ -70,7 +72,7 @@ Feature: F-ATP-05 FS output self-test every 5 s, 3 ms, sampled from the 2nd ms a
     And the train has been powered up for 1000 ms
     And the ATP has released the emergency brake
     When 11 s pass
-    And the ATP releases the emergency brake 20 ms before the next FS self-test
+    And the ATP releases the emergency brake 1 ms before the next FS self-test
     And 1000 ms pass
     And the VDX is restarted
     And the ATP releases the emergency brake

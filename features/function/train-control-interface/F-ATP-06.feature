@@ -6,23 +6,36 @@ Feature: F-ATP-06 C019: a release just before the FS self-test, by firmware and 
   36 ms or more before, the test passes; 137 V makes it likelier than 120 V. The old firmware postpones a
   test that follows a release by 16 ms, which does not help; the new one by 48 ms, and C019 no longer
   occurs. The sweep below is the test that would have caught C019 before it reached a train; its table
-  is attached to the report.
+  is attached to the report. The article's window (C019 for every release under 30 ms at 137 V, and at
+  19.795 ms) is its measurement with a sample 1 ms into the test: a VDX sampling later in the 2nd ms (VDX-03
+  allows it) sees the coil further decayed and a narrower window, so that check is informative.
 
   Background:
     Given a CTCS3-300T ATP with its VDX emergency-brake interface
 
   @req:VDX-05 @req:VDX-06 @req:VDX-03
-  Scenario: F-ATP-06 Old firmware: C019 for every release within 30 ms of the test at 137 V, never from 36 ms
+  Scenario: F-ATP-06 Old firmware: C019 after a late release at 137 V, never from 36 ms, likelier at 137 V than at 120 V
     Given the VDX runs the old firmware
     And the train has been powered up for 1000 ms
     And the ATP has released the emergency brake
     When 11 s pass
     And the release is swept from 1 to 40 ms before an FS self-test at 120 and 137 V
-    Then at 137 V C019 is raised for every release under 30 ms before the test
+    Then at 137 V C019 is raised for some release under 30 ms before the test
     And at 137 V no C019 is raised for a release 36 ms or more before the test
     And at 120 V no C019 is raised for a release 36 ms or more before the test
     And C019 comes at 137 V for every offset it comes at 120 V, and for more
     And every FS self-test sampled at 6 V or more raised C019 and none below
+
+  # The article's window, measured with a sample 1 ms in; it holds its 19.795 ms measurement too (a coil released
+  # later is more charged, so C019 at 20 ms means C019 at 19.795 ms).
+  @req:VDX-05 @informative
+  Scenario: F-ATP-06 Old firmware, the article's window: C019 for every release under 30 ms at 137 V
+    Given the VDX runs the old firmware
+    And the train has been powered up for 1000 ms
+    And the ATP has released the emergency brake
+    When 11 s pass
+    And the release is swept from 1 to 30 ms before an FS self-test at 137 V
+    Then at 137 V C019 is raised for every release under 30 ms before the test
 
   @req:VDX-06
   Scenario: F-ATP-06 New firmware: no C019 at any release offset or FS voltage
@@ -47,7 +60,6 @@ Feature: F-ATP-06 C019: a release just before the FS self-test, by firmware and 
 
     Examples:
       | firmware | offset | verdict                                                |
-      | old      | 19.795 | C019 is raised and the emergency-brake loop stays open |
       | old      | 35.75  | no C019 is raised                                      |
       | new      | 19.795 | no C019 is raised                                      |
 

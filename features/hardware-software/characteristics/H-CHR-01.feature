@@ -21,7 +21,7 @@ Feature: H-CHR-01 Board inventory and health at power-up
   Scenario: H-CHR-01 At power-up the nodes form the token within the protocol's times
     Given the train is powered up
     When 1000 ms pass
-    Then every node sends a token initialisation 500 to 510 ms after power-up
+    Then token initialisations are sent 500 to 510 ms after power-up and at no other time
     And the token is formed by "car1.CCU.sys1" 19 to 21 ms after the first token initialisation
 
   @req:TST-02 @req:PRO-02

@@ -87,8 +87,13 @@ class OnboardAtp:
     def power_on(self) -> None:
         self._def_step = 0
         self.kernel.call_later(0, self._def)
-        self.kernel.every(self.cfg.cfsk_period_us, self._compare)
+        self._start_comparisons()
         self.kernel.every(self.cfg.tick_us, self._tick)
+
+    def _start_comparisons(self) -> None:
+        """One CFSK comparison every cfsk_period_us from power-up. A hook for a product whose CFSK task runs on
+        a task tick (tests/freedom_atp.py)."""
+        self.kernel.every(self.cfg.cfsk_period_us, self._compare)
 
     def _def(self) -> None:
         step = self._def_step
@@ -105,7 +110,12 @@ class OnboardAtp:
             self._set_brake("emergency")
             return
         self._def_step += 1
-        self.kernel.call_later(self.cfg.def_step_us, self._def)
+        self.kernel.call_later(self._def_next_us(), self._def)
+
+    def _def_next_us(self) -> int:
+        """How long after this DEF step the next one runs: one step every def_step_us (ATP-08). A hook for a
+        product whose DEF task runs on a task tick (tests/freedom_atp.py)."""
+        return self.cfg.def_step_us
 
     # -- motion ------------------------------------------------------------------------------------------
     def _tick(self) -> None:

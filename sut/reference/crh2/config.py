@@ -69,6 +69,10 @@ class Behaviour:
     protection_self_reset_us: int | None = None   # ILK-06 a main circuit that resets itself this long after
                                                   # its fault clears (None: only the driver's reset)
     brake_force_trip_clears_us: int | None = None  # ILK-03 a brake-force trip that clears itself (None: latched)
+    # Freedom variants only (tests/freedom_crh2.py); the reference's values change nothing:
+    record_words: tuple[tuple[str, str], ...] = ()  # a fault record's event words of its own ("failed" -> ...)
+    outputs_logged_last_first: bool = False        # one evaluation's output changes logged in the other order
+    rapid_brake_delay_us: int = 0                  # the rapid-brake outputs logged this much after the rest
 
 
 @dataclass(frozen=True)

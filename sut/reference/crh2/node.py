@@ -106,7 +106,8 @@ class RingNode:
             was, now = bool(last >> i & 1), bool(health >> i & 1)
             if was != now:
                 event = "recovered" if now else "failed"
-                line = f"F|{self.kernel.now // 1000}|{self.name}|{board}|{event}"
+                word = dict(self.train.cfg.behaviour.record_words).get(event, event)
+                line = f"F|{self.kernel.now // 1000}|{self.name}|{board}|{word}"
                 self.emit("fault.record", at=f"{self.name}.CPU3", board=board, event=event)
                 self.queue_record(line.encode())
 

@@ -83,9 +83,11 @@ class Train:
         if car in self.cfg.apu_cars():
             lcu.loop_devices.append(LoopDevice(self, f"car{car}.APU", lcu.cpu3, "30mA", periods["APU"],
                                                "polled"))
-        lcu.loop_devices.append(LoopDevice(self, f"car{car}.SDD", lcu.cpu3, "20mA", 1_000_000, "to-device"))
+        lcu.loop_devices.append(LoopDevice(self, f"car{car}.SDD", lcu.cpu3, "20mA", periods.get("SDD", 1_000_000),
+                                           "to-device"))
         if car in self.cfg.cab_cars():
-            lcu.loop_devices.append(LoopDevice(self, f"car{car}.DD", lcu.cpu3, "20mA", 100_000, "from-device"))
+            lcu.loop_devices.append(LoopDevice(self, f"car{car}.DD", lcu.cpu3, "20mA", periods.get("DD", 100_000),
+                                               "from-device"))
 
     # -- plumbing -------------------------------------------------------------------------------
     def emit(self, source: str, kind: str, /, **fields: Any) -> None:

@@ -321,11 +321,19 @@ class Vehicle:
                 out[contactor] = "open" if cut else "closed"
                 out[gates] = "blocked" if cut else "enabled"
         out["traction"] = "permitted" if self._permitted(eb_loop_open, rapid, doors) else "blocked"
-        for name, value in out.items():
+        hooks = self.train.cfg.behaviour
+        for name, value in (reversed(out.items()) if hooks.outputs_logged_last_first else out.items()):
             if self.outputs.get(name) != value:
                 self.outputs[name] = value
-                if not initial:
+                if initial:
+                    continue
+                if hooks.rapid_brake_delay_us and name in ("rapid-brake valve", "rapid brake"):
+                    self.kernel.call_later(hooks.rapid_brake_delay_us, self._log_change, name, value, speed, pressure)
+                else:
                     self.train.emit(name, "out.change", value=value, speed=speed, pressure=pressure)
+
+    def _log_change(self, name: str, value: str, speed: float, pressure: float) -> None:
+        self.train.emit(name, "out.change", value=value, speed=speed, pressure=pressure)
 
     def _handle_brake(self) -> int:
         ccu = self.train.commanding_ccu()

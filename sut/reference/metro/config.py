@@ -29,6 +29,9 @@ class MetroTiming:
     status_silence_polls: int = 3            # device status polls unanswered before a device is reported
     brake_decel_kmh_per_s: float = 3.6       # 1.0 m/s2 at 100 % service brake
     speed_tick_us: int = 10 * MS
+    # Hooks for what a product may do otherwise (tests/freedom_metro.py); the reference's values do nothing:
+    actuator_latency_us: int = 0             # a VVVF/BECU applies a new effort this long after it is asked
+    task_jitter_us: int = 0                  # every other MVB basic period and WTB cycle starts this late
 
 
 @dataclass(frozen=True)
@@ -48,6 +51,16 @@ class MetroBehaviour:
     emergency_operation_at_speed: bool = False   # TCN-09: hard-wired operation only from standstill
     status_poll_f_code: int = DEVICE_STATUS_F_CODE   # TCN-05/06: device status request (a reserved code is ignored)
     status_polls_one_address: bool = False   # TCN-05: every status request carries the unit's first device address
+    # The I/O map (TCN-07 gives channel counts only; a product wires its own, declared in its IXIT):
+    di_key: int = 1                          # DI01: the cab key
+    di_forward: int = 2                      # DI02: direction switch at forward
+    di_reverse: int = 3                      # DI03: direction switch at reverse
+    ai_traction: int = 1                     # AI1: master controller traction demand
+    ai_brake: int = 2                        # AI2: master controller brake demand
+    ai_full_scale: int = 10_000              # raw count for 100 % demand (0.01 % steps)
+    io_port_f_code: int = 3                  # TCN-05: the I/O module port's F_code (3: 128 bits)
+    standstill_holding_brake: int = 0        # 0.01 %: brake held at standstill while the active cab asks no traction
+    sinks_last_first: bool = False           # a unit refreshes its VVVFs and BECUs in the reverse of their order
 
 
 @dataclass(frozen=True)

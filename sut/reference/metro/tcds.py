@@ -135,6 +135,7 @@ class MetroTrain:
         self.speed_kmh = 0.0
         self.modes = {1: "power-up", 2: "power-up"}
         self.started = False
+        self.pending_effort: dict[str, int] = {}     # device -> effort it is about to apply (actuator latency)
 
     # -- trace ------------------------------------------------------------------------------------
     def emit(self, source: str, kind: str, **fields: Any) -> None:
@@ -170,7 +171,20 @@ class MetroTrain:
             self._apply(unit)
 
     # -- MVB --------------------------------------------------------------------------------------
+    def _late_start(self, period_us: int) -> int:
+        """How late this period's task starts: 0 in the reference; with a task jitter (MetroTiming,
+        tests/freedom_metro.py) every other period starts that late, a pattern that repeats every 2 periods."""
+        jitter = self.cfg.timing.task_jitter_us
+        return jitter if jitter and (self.kernel.now // period_us) % 2 else 0
+
     def _mvb_period(self, unit: int) -> None:
+        late = self._late_start(self.cfg.timing.mvb_basic_period_us)
+        if late:
+            self.kernel.call_later(late, self._mvb_period_now, unit)
+        else:
+            self._mvb_period_now(unit)
+
+    def _mvb_period_now(self, unit: int) -> None:
         seg = self.segments[unit]
         master = self.nodes.get(seg.master) if seg.master else None
         if master is None or not master.masters_mvb:
@@ -185,7 +199,7 @@ class MetroTrain:
         polls.append(("status", seg.devices[k % len(seg.devices)]))
         offset = 0
         for what, target in polls:
-            f_code = {"io": ports.IO_PORT_F_CODE, "cmd": ports.COMMAND_F_CODE,
+            f_code = {"io": self.cfg.behaviour.io_port_f_code, "cmd": ports.COMMAND_F_CODE,
                       "status": self.cfg.behaviour.status_poll_f_code}[what]
             # The whole message is taken at its master frame's instant, which is what an analyser logs.
             self.kernel.call_later(offset, self._mvb_message, unit, master.name, what, target, f_code)
@@ -238,7 +252,8 @@ class MetroTrain:
 
     def _answer(self, seg: MvbSegment, master: ControlUnit, what: str, target: Any) -> tuple[str, bytes | None]:
         if what == "io":
-            return target.name, self._io_port(target).encode()
+            data = self._io_port(target).encode()          # padded to the port's size (F_code), spare bits 0
+            return target.name, data + bytes(slave_size_bits(self.cfg.behaviour.io_port_f_code) // 8 - len(data))
         if what == "cmd":
             cmd = seg.cmd_sent = self._command(seg, master)
             return master.name, cmd.encode() if cmd is not None else None
@@ -250,10 +265,12 @@ class MetroTrain:
         if module.failed:
             di, ai = module.frozen or (0, (0, 0, 0))
             return IoPort(di, ai, 0)
-        desk = self.desk[module.car]
-        di = (desk["key"] << (ports.DI_KEY - 1)) | ((desk["direction"] == "forward") << (ports.DI_FORWARD - 1)) \
-            | ((desk["direction"] == "reverse") << (ports.DI_REVERSE - 1))
-        ai = [desk["traction"] * 100, desk["brake"] * 100, 0]
+        desk, b = self.desk[module.car], self.cfg.behaviour
+        di = (desk["key"] << (b.di_key - 1)) | ((desk["direction"] == "forward") << (b.di_forward - 1)) \
+            | ((desk["direction"] == "reverse") << (b.di_reverse - 1))
+        ai = [0, 0, 0]
+        ai[b.ai_traction - 1] = desk["traction"] * b.ai_full_scale // 100
+        ai[b.ai_brake - 1] = desk["brake"] * b.ai_full_scale // 100
         for name, value in module.forced.items():
             n = int(name[2:])
             if name.startswith("DI"):
@@ -270,7 +287,7 @@ class MetroTrain:
         if what == "io":
             # Of the life signal the master keeps whether it is set (RED-07), not the count: the count wraps
             # with the wire's 16 bits, and a kept value that wraps cannot be carried over a bulk jump.
-            port = IoPort.decode(data)
+            port = IoPort.decode(data[:16])           # the port's first 128 bits; the rest spare
             seg.io_data[target.name] = (IoPort(port.di, port.ai, 1 if port.life else 0), now)
         elif what == "cmd":
             cmd = Command.decode(data)
@@ -318,13 +335,14 @@ class MetroTrain:
     def _command(self, seg: MvbSegment, master: ControlUnit) -> Command | None:
         seg.cmd_seq += 1
         inputs = self._inputs(seg, master) if seg.ios else None
-        if inputs is not None and inputs.input(ports.DI_KEY):
-            if master.kind == "VCU" and not self.cfg.behaviour.vcu_takes_control:
+        b = self.cfg.behaviour
+        if inputs is not None and inputs.input(b.di_key):
+            if master.kind == "VCU" and not b.vcu_takes_control:
                 return None
-            direction = ("forward" if inputs.input(ports.DI_FORWARD)
-                         else "reverse" if inputs.input(ports.DI_REVERSE) else "neutral")
-            traction = min(inputs.ai[ports.AI_TRACTION - 1], FULL)
-            brake = min(inputs.ai[ports.AI_BRAKE - 1], FULL)
+            direction = ("forward" if inputs.input(b.di_forward)
+                         else "reverse" if inputs.input(b.di_reverse) else "neutral")
+            traction = min(inputs.ai[b.ai_traction - 1] * FULL // b.ai_full_scale, FULL)
+            brake = min(inputs.ai[b.ai_brake - 1] * FULL // b.ai_full_scale, FULL)
             return Command("normal", direction, traction, brake, seg.cmd_seq)
         if master.wtb_cmd is not None and self.kernel.now - master.wtb_cmd_t <= self.cfg.timing.gateway_timeout_us:
             relayed: Command = master.wtb_cmd           # the active cab's command, through the gateway
@@ -349,6 +367,14 @@ class MetroTrain:
         module.failed = True
 
     def _apply(self, unit: int) -> None:
+        self._apply_unit(unit)
+        if self.cfg.behaviour.standstill_holding_brake:
+            # The hold follows the active cab's command: every unit at once (idempotent for all else).
+            for other in self.segments:
+                if other != unit:
+                    self._apply_unit(other)
+
+    def _apply_unit(self, unit: int) -> None:
         seg = self.segments[unit]
         cmd = seg.cmd
         failure = seg.stale or cmd is None or cmd.mode != "normal"
@@ -363,7 +389,8 @@ class MetroTrain:
                 if master is not None and master.alive:
                     self._raise(master, "train network failure: braking to a stop")
         active = next((c for c in CAB_CARS if self.desk[c]["key"]), None)
-        for dev in seg.sinks:
+        # The order within one instant is the product's (MetroBehaviour.sinks_last_first, tests/freedom_metro.py).
+        for dev in (seg.sinks[::-1] if self.cfg.behaviour.sinks_last_first else seg.sinks):
             if dev.failed:
                 value = 0
             elif self.emergency_mode:
@@ -383,9 +410,57 @@ class MetroTrain:
                 value = cmd.traction if cmd.direction != "neutral" else 0
             else:
                 value = cmd.brake
-            if value != dev.applied:
-                dev.applied = value
-                self.emit(dev.name, "pd.change", value=value / 100)
+            self._set_effort(dev, self._effort(seg, dev, mode, value))
+
+    def _set_effort(self, dev: Device, value: int) -> None:
+        """`dev` is to apply `value` (0.01 %) from now on, called at every refresh. The reference's devices
+        apply it at once; with an actuator latency (MetroTiming, tests/freedom_metro.py) a device applies it
+        that much later, and drops a change asked back meanwhile."""
+        latency = self.cfg.timing.actuator_latency_us
+        if latency:
+            if value == self.pending_effort.get(dev.name, dev.applied):
+                return
+            if value == dev.applied:
+                self.pending_effort.pop(dev.name, None)
+                return
+            self.pending_effort[dev.name] = value
+            self.kernel.call_later(latency, self._late_effort, dev.name, value)
+            return
+        if value != dev.applied:
+            dev.applied = value
+            self.emit(dev.name, "pd.change", value=value / 100)
+
+    def _late_effort(self, name: str, value: int) -> None:
+        if self.pending_effort.get(name) == value:
+            del self.pending_effort[name]
+            dev = self.devices[name]
+            dev.applied = value
+            self.emit(name, "pd.change", value=value / 100)
+
+    def _effort(self, seg: MvbSegment, dev: Device, mode: str, value: int) -> int:
+        """What `dev` applies, given `value` (0.01 %), the effort the unit's train command (or the hard wires)
+        asks of it in `mode`. The reference applies exactly what is asked; with a standstill holding brake
+        (MetroBehaviour, a product's option: tests/freedom_metro.py) every BECU holds at least that while the
+        train stands in normal mode and the active cab's command asks no traction."""
+        hold = self.cfg.behaviour.standstill_holding_brake
+        if hold and dev.kind == "BECU" and mode == "normal" and not dev.failed and self._holding():
+            return max(value, hold)
+        return value
+
+    def _holding(self) -> bool:
+        """The train stands and the active cab's train command, as its unit's master reads it, asks no
+        traction: a train-wide function of the active cab, so every BECU takes the hold off at the instant that
+        command asks traction."""
+        if self.speed_kmh > 0 or self.emergency_mode:
+            return False
+        active = next((c for c in CAB_CARS if self.desk[c]["key"]), None)
+        if active is None:
+            return False
+        seg = self.segments[1 if active == 1 else 2]
+        cmd = seg.cmd
+        if seg.stale or cmd is None or cmd.mode != "normal":
+            return False
+        return cmd.traction == 0 or cmd.direction == "neutral"
 
     def _speed_tick(self) -> None:
         if self.emergency_switch and not self.emergency_mode and (
@@ -438,6 +513,13 @@ class MetroTrain:
 
     # -- WTB --------------------------------------------------------------------------------------
     def _wtb_cycle(self) -> None:
+        late = self._late_start(self.cfg.timing.wtb_cycle_us)
+        if late:
+            self.kernel.call_later(late, self._wtb_cycle_now)
+        else:
+            self._wtb_cycle_now()
+
+    def _wtb_cycle_now(self) -> None:
         master = self.nodes.get(self.wtb_master) if self.wtb_master else None
         if master is None or not master.on_wtb:
             return
@@ -478,7 +560,7 @@ class MetroTrain:
         if seg.io_used is None:
             return False
         port, _ = seg.io_data[seg.io_used]
-        return port.input(ports.DI_KEY)
+        return port.input(self.cfg.behaviour.di_key)
 
     def _wtb_message(self, master_name: str, polled: str) -> None:
         master = self.nodes[master_name]
