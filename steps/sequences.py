@@ -25,6 +25,7 @@ def pytest_addoption(parser: pytest.Parser) -> None:
         help="random sequences per invariant in the random-sequence scenarios (default: each feature's own)")
 
 
+@given(parsers.parse("步骤库的随机激励序列，每个不变量{examples:d}条，种子{seed:d}"), target_fixture="sequence_budget")
 @given(parsers.parse("random sequences of the step library's stimuli, {examples:d} per invariant from seed {seed:d}"),
        target_fixture="sequence_budget")
 def _(request: pytest.FixtureRequest, examples: int, seed: int) -> tuple[int, int]:
@@ -40,6 +41,7 @@ def _invariant(profile: str, name: str) -> Invariant:
     return found[0]
 
 
+@then(parsers.parse("每条序列的每次激励之后，{name}"))   # the invariant's name is its identifier, as written
 @then(parsers.parse("after every stimulus of every sequence, {name}"))
 def _(sut_class: type[TrainDriver], request: pytest.FixtureRequest, sequence_budget: tuple[int, int],
       name: str) -> None:

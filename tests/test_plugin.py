@@ -98,7 +98,7 @@ def test_unregistered_plain_tag_fails_collection_with_file_and_line(project):
     proc = run_pytest(root, "features")
     assert proc.returncode == 2
     assert (
-        "features/routine/control/R-CTL-01.feature:13: @wip is neither a project tag (tentative, pending, on_request) "
+        "features/routine/control/R-CTL-01.feature:13: @wip is neither a project tag (tentative, informative, pending, on_request) "
         "nor a registered pytest marker"
     ) in proc.stdout
 
