@@ -8,7 +8,7 @@ from hypothesis import strategies as st
 from sut.driver import TrainDriver
 
 from . import domains
-from .stimuli import Action, _names, _names_of
+from .stimuli import Action, _names
 
 
 def _g(value: float) -> str:
@@ -23,7 +23,7 @@ def time_passes() -> st.SearchStrategy[Action]:
 def _crh2(driver: TrainDriver) -> list[st.SearchStrategy[Action]]:
     cab = st.sampled_from(domains.CABS["crh2"])
     nodes = _names(driver, "ring_nodes")
-    boards = [f"{n}.{b}" for n in nodes for b in _names_of(driver, n)]
+    boards = [f"{n}.{b}" for n in nodes for b in _names(driver, "boards", n)]
     spans = list(zip(nodes, nodes[1:] + nodes[:1]))
     # The supplies the contract names: each node (its CPU side), a CCU system's TXC, an LCU's RXC, a cab's desk.
     supplies = [*nodes, *(f"{n}.{b}" for n in nodes for b in ("TXC", "RXC") if f"{n}.{b}" in boards),

@@ -63,9 +63,10 @@ def _values(spec: dict[str, Any]) -> st.SearchStrategy | None:
     return None
 
 
-def _names(driver: TrainDriver, method: str) -> list[str]:
+def _names(driver: TrainDriver, method: str, *args: Any) -> list[str]:
+    """What the SUT names when asked `method(*args)` (its ring nodes, a node's boards), [] if it does not answer."""
     try:
-        return list(getattr(driver, method)())
+        return list(getattr(driver, method)(*args))
     except Exception:                    # a SUT that does not answer it: no such stimuli
         return []
 
@@ -97,7 +98,7 @@ def actions(profile: str, driver: TrainDriver) -> st.SearchStrategy[Action]:
                 options.append(cab.map(lambda c, m=method: Action(m, (c,))))
     options = families.setdefault("faults", [])
     nodes = _names(driver, "ring_nodes") if has("fail") or has("cut_link") else []
-    boards = [f"{n}.{b}" for n in nodes for b in _names_of(driver, n)] if has("fail") else []
+    boards = [f"{n}.{b}" for n in nodes for b in _names(driver, "boards", n)] if has("fail") else []
     for method in ("fail", "repair"):
         if boards and has(method):
             options.append(st.sampled_from(boards).map(lambda b, m=method: Action(m, (b,))))
@@ -118,10 +119,3 @@ def actions(profile: str, driver: TrainDriver) -> st.SearchStrategy[Action]:
     time_passes = st.sampled_from(domains.ADVANCES_US).map(lambda us: Action("advance", (us,)))
     picks = [time_passes] + [st.one_of(family) for family in families.values() if family]
     return st.sampled_from(picks).flatmap(lambda family: family)
-
-
-def _names_of(driver: TrainDriver, node: str) -> list[str]:
-    try:
-        return list(driver.boards(node))
-    except Exception:
-        return []
