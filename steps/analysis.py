@@ -7,6 +7,8 @@ from typing import Iterable
 from sut.driver import TrainDriver
 from sut.trace import Trace, TraceEvent
 
+from steps import budgets
+
 
 @dataclass(frozen=True)
 class Delivery:
@@ -39,16 +41,20 @@ def command_deliveries(trace: Trace, since: int = 0, until: int | None = None) -
     return out
 
 
-def expect_taken(sut: TrainDriver, devices: list[str], t_action: int, bound: float, what: str, **want) -> None:
-    """Every device took a command with the `want` fields (path, traction, direction, ...) within `bound`
-    ms of the action; the failure says what each laggard took last."""
+def expect_taken(sut: TrainDriver, devices: list[str], t_action: int, window: int, what: str, **want) -> None:
+    """Every device took a command with the `want` fields (path, traction, direction, ...) within `window`
+    us of the action (a reaction-time budget: steps/budgets.py); the failure says what each laggard took last."""
     assert devices, "no CI or BCU to check"
-    until = t_action + us(bound)
-    for device in devices:
-        if sut.trace.first(kind="cmd.in", source=device, since=t_action, until=until, **want) is None:
-            last = sut.trace.last(kind="cmd.in", source=device, until=until)
-            seen = f"last took {dict(last.fields)} at {ms(last.t)}" if last else "took no command at all"
-            raise AssertionError(f"{device} did not receive {what} within {bound} ms; it {seen}")
+    until = t_action + window
+
+    def check() -> None:
+        for device in devices:
+            if sut.trace.first(kind="cmd.in", source=device, since=t_action, until=until, **want) is None:
+                last = sut.trace.last(kind="cmd.in", source=device, until=until)
+                seen = f"last took {dict(last.fields)} at {ms(last.t)}" if last else "took no command at all"
+                raise AssertionError(f"{device} did not receive {what} within {ms(window)} of the action; it {seen}")
+
+    budgets.within(sut, t_action, window, check)
 
 
 def expect_period(times: Iterable[int], lo: float, hi: float, what: str, at_least: int = 3) -> None:

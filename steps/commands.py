@@ -7,7 +7,8 @@ from pytest_bdd import parsers, then
 
 from sut.contract.declaration import ProfileDeclaration
 from sut.driver import TrainDriver
-from steps import analysis
+from steps import analysis, budgets
+from steps.budgets import budgeted
 from steps.analysis import ms, us
 
 
@@ -100,8 +101,10 @@ def _(sut: TrainDriver, t_action: int, txc: str, after: float) -> None:
 
 @then(parsers.parse("{after:g} ms起每条命令都带牵引级位{notch:d}和制动级位{step:d}"))
 @then(parsers.parse("from {after:g} ms on every command carries traction notch {notch:d} and brake step {step:d}"))
-def _(sut: TrainDriver, t_action: int, after: float, notch: int, step: int) -> None:
-    sent = sut.trace.select(kind="cmd.tx", since=t_action + us(after))
+@budgeted
+def _(sut: TrainDriver, declaration: ProfileDeclaration, t_action: int, after: float, notch: int, step: int) -> None:
+    window = budgets.window_us(declaration, after)
+    sent = sut.trace.select(kind="cmd.tx", since=t_action + window)
     assert sent, "no command was transmitted"
     wrong = [ev for ev in sent if (ev["traction"], ev["brake"]) != (notch, step)]
     assert not wrong, f"commands with other values: {analysis.describe(wrong)}"
@@ -110,51 +113,68 @@ def _(sut: TrainDriver, t_action: int, after: float, notch: int, step: int) -> N
 # -- at CI and BCU ----------------------------------------------------------------------------------
 @then(parsers.parse("每个CI和BCU在{bound:g} ms内经路径1收到牵引级位{notch:d}"))
 @then(parsers.parse("every CI and BCU receives traction notch {notch:d} over path 1 within {bound:g} ms"))
-def _(sut: TrainDriver, t_action: int, notch: int, bound: float) -> None:
-    analysis.expect_taken(sut, analysis.command_devices(sut), t_action, bound, f"notch {notch} over path 1",
+@budgeted
+def _(sut: TrainDriver, declaration: ProfileDeclaration, t_action: int, notch: int, bound: float) -> None:
+    window = budgets.window_us(declaration, bound)
+    analysis.expect_taken(sut, analysis.command_devices(sut), t_action, window, f"notch {notch} over path 1",
                    path=1, traction=notch)
 
 
 @then(parsers.parse("{car:d}号车的CI和BCU在{bound:g} ms内经路径1收到牵引级位{notch:d}"))
 @then(parsers.parse("the CI and BCU of car {car:d} receive traction notch {notch:d} over path 1 within {bound:g} ms"))
-def _(sut: TrainDriver, t_action: int, car: int, notch: int, bound: float) -> None:
-    analysis.expect_taken(sut, analysis.command_devices(sut, car), t_action, bound, f"notch {notch} over path 1",
+@budgeted
+def _(sut: TrainDriver, declaration: ProfileDeclaration, t_action: int, car: int, notch: int, bound: float) -> None:
+    window = budgets.window_us(declaration, bound)
+    analysis.expect_taken(sut, analysis.command_devices(sut, car), t_action, window, f"notch {notch} over path 1",
                    path=1, traction=notch)
 
 
 @then(parsers.parse("每个BCU在{bound:g} ms内经路径1收到制动级位{step:d}"))
 @then(parsers.parse("every BCU receives brake step {step:d} over path 1 within {bound:g} ms"))
-def _(sut: TrainDriver, t_action: int, step: int, bound: float) -> None:
+@budgeted
+def _(sut: TrainDriver, declaration: ProfileDeclaration, t_action: int, step: int, bound: float) -> None:
+    window = budgets.window_us(declaration, bound)
     bcus = [d for d in analysis.command_devices(sut) if d.endswith(".BCU")]
-    analysis.expect_taken(sut, bcus, t_action, bound, f"brake step {step} over path 1", path=1, brake=step)
+    analysis.expect_taken(sut, bcus, t_action, window, f"brake step {step} over path 1", path=1, brake=step)
 
 
 @then(parsers.parse('每个BCU在{bound:g} ms内经路径{path:d}收到制动级位"{step}"'))
 @then(parsers.parse('every BCU receives brake step "{step}" over path {path:d} within {bound:g} ms'))
-def _(sut: TrainDriver, t_action: int, step: str, path: int, bound: float) -> None:
+@budgeted
+def _(sut: TrainDriver, declaration: ProfileDeclaration, t_action: int, step: str, path: int, bound: float) -> None:
+    window = budgets.window_us(declaration, bound)
     bcus = [d for d in analysis.command_devices(sut) if d.endswith(".BCU")]
-    analysis.expect_taken(sut, bcus, t_action, bound, f"brake step {step} over path {path}", path=path,
+    analysis.expect_taken(sut, bcus, t_action, window, f"brake step {step} over path {path}", path=path,
                    brake_step=step)
 
 
 @then(parsers.parse('每个CI和BCU在{bound:g} ms内经路径{path:d}收到牵引级位"{step}"'))
 @then(parsers.parse('every CI and BCU receives traction step "{step}" over path {path:d} within {bound:g} ms'))
-def _(sut: TrainDriver, t_action: int, step: str, path: int, bound: float) -> None:
-    analysis.expect_taken(sut, analysis.command_devices(sut), t_action, bound, f"traction step {step} over path {path}",
+@budgeted
+def _(sut: TrainDriver, declaration: ProfileDeclaration, t_action: int, step: str, path: int, bound: float) -> None:
+    window = budgets.window_us(declaration, bound)
+    analysis.expect_taken(sut, analysis.command_devices(sut), t_action, window,
+                          f"traction step {step} over path {path}",
                    path=path, traction_step=step)
 
 
 @then(parsers.parse('{car:d}号车的CI和BCU在{bound:g} ms内经路径{path:d}收到牵引级位"{step}"'))
 @then(parsers.parse('the CI and BCU of car {car:d} receive traction step "{step}" over path {path:d} within {bound:g} ms'))
-def _(sut: TrainDriver, t_action: int, car: int, step: str, path: int, bound: float) -> None:
-    analysis.expect_taken(sut, analysis.command_devices(sut, car), t_action, bound,
+@budgeted
+def _(sut: TrainDriver, declaration: ProfileDeclaration,
+      t_action: int, car: int, step: str, path: int, bound: float) -> None:
+    window = budgets.window_us(declaration, bound)
+    analysis.expect_taken(sut, analysis.command_devices(sut, car), t_action, window,
                    f"traction step {step} over path {path}", path=path, traction_step=step)
 
 
 @then(parsers.parse('{car:d}号车的BCU在{bound:g} ms内经路径{path:d}收到制动级位"{step}"'))
 @then(parsers.parse('the BCU of car {car:d} receives brake step "{step}" over path {path:d} within {bound:g} ms'))
-def _(sut: TrainDriver, t_action: int, car: int, step: str, path: int, bound: float) -> None:
-    analysis.expect_taken(sut, [f"car{car}.BCU"], t_action, bound, f"brake step {step} over path {path}", path=path,
+@budgeted
+def _(sut: TrainDriver, declaration: ProfileDeclaration,
+      t_action: int, car: int, step: str, path: int, bound: float) -> None:
+    window = budgets.window_us(declaration, bound)
+    analysis.expect_taken(sut, [f"car{car}.BCU"], t_action, window, f"brake step {step} over path {path}", path=path,
                    brake_step=step)
 
 
@@ -170,15 +190,19 @@ def _only_path_1(sut: TrainDriver, devices: list[str], since: int, notch: int) -
 @then(parsers.parse("{after:g} ms起{car:d}号车以外的每个CI和BCU经路径1收到牵引级位{notch:d}"))
 @then(parsers.parse("from {after:g} ms on every CI and BCU outside car {car:d} receives traction notch {notch:d} "
                     "over path 1"))
-def _(sut: TrainDriver, t_action: int, after: float, car: int, notch: int) -> None:
+@budgeted
+def _(sut: TrainDriver, declaration: ProfileDeclaration, t_action: int, after: float, car: int, notch: int) -> None:
+    window = budgets.window_us(declaration, after)
     others = [d for d in analysis.command_devices(sut) if not d.startswith(f"car{car}.")]
-    _only_path_1(sut, others, t_action + us(after), notch)
+    _only_path_1(sut, others, t_action + window, notch)
 
 
 @then(parsers.parse("{after:g} ms起每个CI和BCU只经路径1收到牵引级位{notch:d}"))
 @then(parsers.parse("from {after:g} ms on every CI and BCU receives traction notch {notch:d} over path 1"))
-def _(sut: TrainDriver, t_action: int, after: float, notch: int) -> None:
-    _only_path_1(sut, analysis.command_devices(sut), t_action + us(after), notch)
+@budgeted
+def _(sut: TrainDriver, declaration: ProfileDeclaration, t_action: int, after: float, notch: int) -> None:
+    window = budgets.window_us(declaration, after)
+    _only_path_1(sut, analysis.command_devices(sut), t_action + window, notch)
 
 
 def _nothing_over(sut: TrainDriver, devices: list[str], since: int, path: int) -> None:
@@ -187,16 +211,20 @@ def _nothing_over(sut: TrainDriver, devices: list[str], since: int, path: int) -
         assert not got, f"{device} received commands over path {path}: {analysis.describe(got)}"
 
 
+# From the action on, but a command the device had before it may still be acted on within the SUT's declared
+# reaction margin (the reference: none).
 @then(parsers.parse("{car:d}号车的{device:w}经路径{path:d}收不到任何命令"))
 @then(parsers.parse("the {device:w} of car {car:d} receives nothing over path {path:d}"))
-def _(sut: TrainDriver, t_action: int, device: str, car: int, path: int) -> None:
-    _nothing_over(sut, [f"car{car}.{device}"], t_action, path)
+@budgeted
+def _(sut: TrainDriver, declaration: ProfileDeclaration, t_action: int, device: str, car: int, path: int) -> None:
+    _nothing_over(sut, [f"car{car}.{device}"], t_action + budgets.margin_us(declaration), path)
 
 
 @then(parsers.parse("{car:d}号车的CI和BCU都收不到经路径{path:d}的命令"))
 @then(parsers.parse("the CI and BCU of car {car:d} receive nothing over path {path:d}"))
-def _(sut: TrainDriver, t_action: int, car: int, path: int) -> None:
-    _nothing_over(sut, analysis.command_devices(sut, car), t_action, path)
+@budgeted
+def _(sut: TrainDriver, declaration: ProfileDeclaration, t_action: int, car: int, path: int) -> None:
+    _nothing_over(sut, analysis.command_devices(sut, car), t_action + budgets.margin_us(declaration), path)
 
 
 @then("经路径2和3传送的命令只含牵引A、B挡和制动A、B挡")
@@ -257,16 +285,19 @@ def _by_car(sut: TrainDriver, paths: list[int | None]) -> dict[int, int | None]:
       converters={"paths": _paths})
 @then(parsers.parse('car by car the CI and BCU receive traction notch {notch:d} or traction step "{step}" by the '
                     "paths {paths} within {bound:g} ms"), converters={"paths": _paths})
-def _(sut: TrainDriver, t_action: int, notch: int, step: str, paths: list, bound: float) -> None:
+@budgeted
+def _(sut: TrainDriver, declaration: ProfileDeclaration,
+      t_action: int, notch: int, step: str, paths: list, bound: float) -> None:
+    window = budgets.window_us(declaration, bound)
     for car, path in _by_car(sut, paths).items():
         devices = analysis.command_devices(sut, car)
         if path == 1:
-            analysis.expect_taken(sut, devices, t_action, bound, f"notch {notch} over path 1", path=1, traction=notch)
+            analysis.expect_taken(sut, devices, t_action, window, f"notch {notch} over path 1", path=1, traction=notch)
         elif path is not None:
-            analysis.expect_taken(sut, devices, t_action, bound, f"traction step {step} over path {path}",
+            analysis.expect_taken(sut, devices, t_action, window, f"traction step {step} over path {path}",
                                   path=path, traction_step=step)
             # Its MDM9 is dead or has no fresh ring command: a path 1 command now would contradict the step.
-            _nothing_over(sut, devices, t_action + us(bound), 1)
+            _nothing_over(sut, devices, t_action + window, 1)
         else:        # the design leaves the car no path: the new command must not reach it by any
             got = [ev for d in devices for ev in sut.trace.select(kind="cmd.in", source=d, since=t_action)
                    if ev["traction"] == notch or ev["traction_step"] == step]

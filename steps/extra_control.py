@@ -9,7 +9,8 @@ from pytest_bdd import parsers, then
 
 from sut.contract.declaration import ProfileDeclaration
 from sut.driver import TrainDriver
-from steps import analysis, messages, zh
+from steps import analysis, budgets, messages, zh
+from steps.budgets import budgeted
 from steps.analysis import ms, us
 # the output-value grammar of vehicle.py: "open no later than" is never read as one longer value
 from steps.vehicle import NUMBER, OUTPUT_VALUE, ZH_OUTPUT_VALUE
@@ -18,9 +19,11 @@ from steps.vehicle import NUMBER, OUTPUT_VALUE, ZH_OUTPUT_VALUE
 @then(parsers.parse("{after:g} ms起每个CI和BCU经路径1只收到牵引级位{notch:d}和制动级位{step:d}"))
 @then(parsers.parse("from {after:g} ms on every CI and BCU receives only traction notch {notch:d} and brake step "
                     "{step:d} over path 1"))
-def _(sut: TrainDriver, t_action: int, after: float, notch: int, step: int) -> None:
+@budgeted
+def _(sut: TrainDriver, declaration: ProfileDeclaration, t_action: int, after: float, notch: int, step: int) -> None:
     """Full resolution (CMD-02): the exact notch and step, not merely the A/B band they fall in."""
-    since = t_action + us(after)
+    window = budgets.window_us(declaration, after)
+    since = t_action + window
     assert sut.now_us > since, f"only {ms(sut.now_us - t_action)} passed, nothing to examine after {after} ms"
     devices = analysis.command_devices(sut)
     assert devices, "no CI or BCU to check"
@@ -33,8 +36,10 @@ def _(sut: TrainDriver, t_action: int, after: float, notch: int, step: int) -> N
 
 @then(parsers.parse('{after:g} ms起没有CI或BCU收到"{direction}"方向指令'), converters={"direction": zh.direction})
 @then(parsers.parse('from {after:g} ms on no CI or BCU receives direction "{direction}"'))
-def _(sut: TrainDriver, t_action: int, after: float, direction: str) -> None:
-    since = t_action + us(after)
+@budgeted
+def _(sut: TrainDriver, declaration: ProfileDeclaration, t_action: int, after: float, direction: str) -> None:
+    window = budgets.window_us(declaration, after)
+    since = t_action + window
     devices = analysis.command_devices(sut)
     assert devices, "no CI or BCU to check"
     for device in devices:

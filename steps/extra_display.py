@@ -11,7 +11,8 @@ from pytest_bdd import parsers, then
 
 from sut.contract.declaration import ProfileDeclaration
 from sut.driver import TrainDriver
-from steps import analysis, messages, zh
+from steps import analysis, budgets, messages, zh
+from steps.budgets import budgeted
 from steps.analysis import ms, same_value, us
 
 
@@ -22,18 +23,25 @@ def _display_changes(sut: TrainDriver, cab: int, name: str, since: int):
 @then(parsers.parse('{cab:d}号司机室监视器上"{name}"在{bound:g} ms内变为"{value}"'),
       converters={"value": zh.core_state})
 @then(parsers.parse('the cab {cab:d} monitor changes "{name}" to "{value}" within {bound:g} ms'))
-def _(sut: TrainDriver, t_action: int, cab: int, name: str, value: str, bound: float) -> None:
+@budgeted
+def _(sut: TrainDriver, declaration: ProfileDeclaration,
+      t_action: int, cab: int, name: str, value: str, bound: float) -> None:
     """A change, not a state: the first value the monitor displays after the action is the wanted one,
     it comes within the bound, and it is still displayed now."""
-    changes = _display_changes(sut, cab, name, t_action)
-    assert changes, f"the cab {cab} monitor did not change {name} after {ms(t_action)}"
-    first = changes[0]
-    assert same_value(first["value"], value), (f"the cab {cab} monitor first displayed {name} as {first['value']!r}, "
-                                          f"not {value!r}: {analysis.describe(changes)}")
-    delay = first.t - t_action
-    assert delay <= us(bound), f"{name} was displayed as {value} after {ms(delay)}, limit {bound} ms"
-    shown = sut.monitor(cab)["display"].get(name)
-    assert same_value(shown, value), f"the cab {cab} monitor now displays {name} as {shown!r}, not {value!r}"
+    window = budgets.window_us(declaration, bound)
+
+    def check() -> None:
+        changes = _display_changes(sut, cab, name, t_action)
+        assert changes, f"the cab {cab} monitor did not change {name} after {ms(t_action)}"
+        first = changes[0]
+        assert same_value(first["value"], value), (f"the cab {cab} monitor first displayed {name} as "
+                                                   f"{first['value']!r}, not {value!r}: {analysis.describe(changes)}")
+        delay = first.t - t_action
+        assert delay <= window, f"{name} was displayed as {value} after {ms(delay)}, limit {ms(window)}"
+        shown = sut.monitor(cab)["display"].get(name)
+        assert same_value(shown, value), f"the cab {cab} monitor now displays {name} as {shown!r}, not {value!r}"
+
+    budgets.within(sut, t_action, window, check)
 
 
 @then(parsers.parse('{cab:d}号司机室监视器上"{name}"从未显示为"{value}"'), converters={"value": zh.core_state})
@@ -48,30 +56,39 @@ def _(sut: TrainDriver, t_action: int, cab: int, name: str, value: str) -> None:
 
 @then(parsers.parse('{after:g} ms起{cab:d}号司机室监视器上"{name}"保持不变'))
 @then(parsers.parse('the cab {cab:d} monitor kept "{name}" unchanged from {after:g} ms on'))
-def _(sut: TrainDriver, t_action: int, cab: int, name: str, after: float) -> None:
+@budgeted
+def _(sut: TrainDriver, declaration: ProfileDeclaration, t_action: int, cab: int, name: str, after: float) -> None:
+    window = budgets.window_us(declaration, after)
     shown = sut.monitor(cab)["display"].get(name)
     assert shown is not None, f"the cab {cab} monitor does not display {name} at all"
-    assert sut.now_us > t_action + us(after), f"no time has passed {after} ms after the action"
-    changes = _display_changes(sut, cab, name, t_action + us(after))
+    assert sut.now_us > t_action + window, f"no time has passed {after} ms after the action"
+    changes = _display_changes(sut, cab, name, t_action + window)
     assert not changes, f"the cab {cab} monitor changed {name}: {analysis.describe(changes)}"
 
 
 @then(parsers.parse('"{name}"变为"{value}"后{cab:d}号司机室监视器在{bound:g} ms内随之显示'),
       converters={"value": zh.core_state})
 @then(parsers.parse('the cab {cab:d} monitor follows "{name}" to "{value}" within {bound:g} ms'))
-def _(sut: TrainDriver, t_action: int, cab: int, name: str, value: str, bound: float) -> None:
+@budgeted
+def _(sut: TrainDriver, declaration: ProfileDeclaration,
+      t_action: int, cab: int, name: str, value: str, bound: float) -> None:
     """The train's output changed after the action, and the monitor displayed the new state within the
     bound of that change (not of the action: the output may change long after it, e.g. inside a ramp)."""
+    window = budgets.window_us(declaration, bound)
     outs = [ev for ev in sut.trace.select(kind="out.change", source=name, since=t_action) if ev["value"] == value]
     assert outs, f"the {name} never became {value} after {ms(t_action)}"
     changed = outs[0].t
-    shown = [ev for ev in _display_changes(sut, cab, name, changed) if same_value(ev["value"], value)]
-    assert shown, f"the {name} became {value} at {ms(changed)}, the cab {cab} monitor never displayed it"
-    delay = shown[0].t - changed
-    assert delay <= us(bound), (f"the {name} became {value} at {ms(changed)}, the cab {cab} monitor displayed "
-                                 f"it {ms(delay)} later, limit {bound} ms")
-    now = sut.monitor(cab)["display"].get(name)
-    assert same_value(now, value), f"the cab {cab} monitor now displays {name} as {now!r}, not {value!r}"
+
+    def check() -> None:
+        shown = [ev for ev in _display_changes(sut, cab, name, changed) if same_value(ev["value"], value)]
+        assert shown, f"the {name} became {value} at {ms(changed)}, the cab {cab} monitor never displayed it"
+        delay = shown[0].t - changed
+        assert delay <= window, (f"the {name} became {value} at {ms(changed)}, the cab {cab} monitor displayed "
+                                 f"it {ms(delay)} later, limit {ms(window)}")
+        now = sut.monitor(cab)["display"].get(name)
+        assert same_value(now, value), f"the cab {cab} monitor now displays {name} as {now!r}, not {value!r}"
+
+    budgets.within(sut, changed, window, check)
 
 
 @then(parsers.parse("{a:d}号与{b:d}号司机室监视器显示的数值一致"))

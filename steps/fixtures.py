@@ -336,6 +336,13 @@ def _write_trace(folder: Path, nodeid: str, driver: TrainDriver) -> None:
 
 
 @pytest.fixture
+def ramps() -> dict[str, float]:
+    """The signed rate (per second) of each vehicle input a When step of this scenario ramps: a band met on a
+    ramp allows the ground the input covers in the SUT's declared reaction margin (steps/budgets.py)."""
+    return {}
+
+
+@pytest.fixture
 def t_action() -> int:
     """Time of the last action, in us: steps that act return it as `t_action`; 0 (power-up) if none did."""
     return 0

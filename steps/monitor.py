@@ -10,7 +10,8 @@ from pytest_bdd import given, parsers, then, when
 
 from sut.contract.declaration import ProfileDeclaration
 from sut.driver import TrainDriver
-from steps import analysis, messages, zh
+from steps import analysis, budgets, messages, zh
+from steps.budgets import budgeted
 from steps.analysis import ms, same_value, us
 
 
@@ -35,14 +36,21 @@ def _(sut: TrainDriver, cab: int, name: str, value: str) -> None:
 @then(parsers.parse('{cab:d}号司机室监视器上"{name}"在{bound:g} ms内显示为"{value}"'),
       converters={"value": zh.core_state})
 @then(parsers.parse('the cab {cab:d} monitor displays "{name}" as "{value}" within {bound:g} ms'))
-def _(sut: TrainDriver, t_action: int, cab: int, name: str, value: str, bound: float) -> None:
-    shown = sut.monitor(cab)["display"].get(name)
-    assert same_value(shown, value), f"the cab {cab} monitor displays {name} as {shown!r}, not {value!r}"
-    changes = [ev for ev in sut.trace.select(kind="display.change", source=f"car{cab}.monitor", since=t_action,
-                                             name=name) if same_value(ev["value"], value)]
-    if changes:
-        delay = changes[0].t - t_action
-        assert delay <= us(bound), f"{name} was displayed as {value} after {ms(delay)}, limit {bound} ms"
+@budgeted
+def _(sut: TrainDriver, declaration: ProfileDeclaration,
+      t_action: int, cab: int, name: str, value: str, bound: float) -> None:
+    window = budgets.window_us(declaration, bound)
+
+    def check() -> None:
+        shown = sut.monitor(cab)["display"].get(name)
+        assert same_value(shown, value), f"the cab {cab} monitor displays {name} as {shown!r}, not {value!r}"
+        changes = [ev for ev in sut.trace.select(kind="display.change", source=f"car{cab}.monitor", since=t_action,
+                                                 name=name) if same_value(ev["value"], value)]
+        if changes:
+            delay = changes[0].t - t_action
+            assert delay <= window, f"{name} was displayed as {value} after {ms(delay)}, limit {ms(window)}"
+
+    budgets.within(sut, t_action, window, check)
 
 
 @then(parsers.parse('{cab:d}号司机室监视器上"{name}"的显示值在{lo:g}至{hi:g}之间'))
@@ -54,11 +62,18 @@ def _(sut: TrainDriver, cab: int, name: str, lo: float, hi: float) -> None:
 
 @then(parsers.parse('{cab:d}号司机室监视器上"{name}"的显示值在{bound:g} ms内进入{lo:g}至{hi:g}之间'))
 @then(parsers.parse('the cab {cab:d} monitor displays "{name}" between {lo:g} and {hi:g} within {bound:g} ms'))
-def _(sut: TrainDriver, t_action: int, cab: int, name: str, lo: float, hi: float, bound: float) -> None:
-    changes = sut.trace.select(kind="display.change", source=f"car{cab}.monitor", since=t_action, name=name)
-    hit = next((ev for ev in changes if lo <= float(ev["value"]) <= hi), None)
-    assert hit is not None, f"{name} was never displayed between {lo:g} and {hi:g}: {analysis.describe(changes)}"
-    assert hit.t - t_action <= us(bound), f"{name} reached the band after {ms(hit.t - t_action)}"
+@budgeted
+def _(sut: TrainDriver, declaration: ProfileDeclaration,
+      t_action: int, cab: int, name: str, lo: float, hi: float, bound: float) -> None:
+    window = budgets.window_us(declaration, bound)
+
+    def check() -> None:
+        changes = sut.trace.select(kind="display.change", source=f"car{cab}.monitor", since=t_action, name=name)
+        hit = next((ev for ev in changes if lo <= float(ev["value"]) <= hi), None)
+        assert hit is not None, f"{name} was never displayed between {lo:g} and {hi:g}: {analysis.describe(changes)}"
+        assert hit.t - t_action <= window, f"{name} reached the band after {ms(hit.t - t_action)}"
+
+    budgets.within(sut, t_action, window, check)
 
 
 @then(parsers.parse("里程在{lo:g}至{hi:g} km之间"))
@@ -107,6 +122,8 @@ def _(sut: TrainDriver, declaration: ProfileDeclaration, master: str, node: str,
 @then(parsers.parse('每个CI在{bound:g} ms内收到"{direction}"方向指令'),
       converters={"direction": zh.direction})
 @then(parsers.parse('every CI receives direction "{direction}" within {bound:g} ms'))
-def _(sut: TrainDriver, t_action: int, direction: str, bound: float) -> None:
+@budgeted
+def _(sut: TrainDriver, declaration: ProfileDeclaration, t_action: int, direction: str, bound: float) -> None:
+    window = budgets.window_us(declaration, bound)
     cis = [d for d in analysis.command_devices(sut) if d.endswith(".CI")]
-    analysis.expect_taken(sut, cis, t_action, bound, f"direction {direction}", direction=direction)
+    analysis.expect_taken(sut, cis, t_action, window, f"direction {direction}", direction=direction)

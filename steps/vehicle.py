@@ -10,7 +10,8 @@ from pytest_bdd import given, parsers, then, when
 
 from sut.contract.declaration import ProfileDeclaration
 from sut.driver import TrainDriver
-from steps import analysis, zh
+from steps import analysis, budgets, zh
+from steps.budgets import budgeted
 from steps.analysis import ms, us
 
 
@@ -38,9 +39,10 @@ def _(sut: TrainDriver, kmh: float) -> int:
 @when(parsers.parse("列车速度以每秒{rate:g} km/h从{a:g} km/h变化到{b:g} km/h"), target_fixture="t_action")
 @when(parsers.parse("the train speed goes from {a:g} km/h to {b:g} km/h at {rate:g} km/h per second"),
       target_fixture="t_action")
-def _(sut: TrainDriver, a: float, b: float, rate: float) -> int:
+def _(sut: TrainDriver, ramps: dict[str, float], a: float, b: float, rate: float) -> int:
     sut.set_input("speed", a)
     sut.ramp_input("speed", b, rate)
+    ramps["speed"] = rate if b >= a else -rate
     return sut.now_us
 
 
@@ -56,9 +58,10 @@ def _(sut: TrainDriver, kpa: float) -> int:
 @when(parsers.parse("总风管压力以每秒{rate:g} kPa从{a:g} kPa变化到{b:g} kPa"), target_fixture="t_action")
 @when(parsers.parse("the main air pipe pressure goes from {a:g} kPa to {b:g} kPa at {rate:g} kPa per second"),
       target_fixture="t_action")
-def _(sut: TrainDriver, a: float, b: float, rate: float) -> int:
+def _(sut: TrainDriver, ramps: dict[str, float], a: float, b: float, rate: float) -> int:
     sut.set_input("main pipe pressure", a)
     sut.ramp_input("main pipe pressure", b, rate)
+    ramps["main pipe pressure"] = rate if b >= a else -rate
     return sut.now_us
 
 
@@ -172,13 +175,19 @@ def _(sut: TrainDriver, output: str, value: str) -> None:
       converters={"bound": float, "value": zh.core_state})
 @then(parsers.re(rf'the "(?P<output>[^"]+)" is {VALUE} within (?P<bound>{NUMBER}) ms'),
       converters={"bound": float})
-def _(sut: TrainDriver, t_action: int, output: str, value: str, bound: float) -> None:
-    got = sut.output(output)
-    assert got == value, f"the {output} is {got} at {ms(sut.now_us)}, expected {value}"
-    change = sut.trace.last(kind="out.change", source=output, until=sut.now_us)
-    if change is not None and change.t >= t_action:
-        delay = change.t - t_action
-        assert delay <= us(bound), f"the {output} became {value} after {ms(delay)}, limit {bound} ms"
+@budgeted
+def _(sut: TrainDriver, declaration: ProfileDeclaration, t_action: int, output: str, value: str, bound: float) -> None:
+    window = budgets.window_us(declaration, bound)
+
+    def check() -> None:
+        got = sut.output(output)
+        assert got == value, f"the {output} is {got} at {ms(sut.now_us)}, expected {value}"
+        change = sut.trace.last(kind="out.change", source=output, until=sut.now_us)
+        if change is not None and change.t >= t_action:
+            delay = change.t - t_action
+            assert delay <= window, f"the {output} became {value} after {ms(delay)}, limit {ms(window)}"
+
+    budgets.within(sut, t_action, window, check)
 
 
 @then(parsers.re(rf'"(?P<output>[^"]+)"保持{ZH_VALUE}'), converters={"value": zh.core_state})
@@ -194,10 +203,13 @@ def _(sut: TrainDriver, t_action: int, output: str, value: str) -> None:
       converters={"lo": float, "hi": float, "value": zh.core_state})
 @then(parsers.re(rf'the "(?P<output>[^"]+)" became {VALUE} while the main air pipe pressure was between '
                  rf'(?P<lo>{NUMBER}) and (?P<hi>{NUMBER}) kPa'), converters={"lo": float, "hi": float})
-def _(sut: TrainDriver, t_action: int, output: str, value: str, lo: float, hi: float) -> None:
+@budgeted
+def _(sut: TrainDriver, declaration: ProfileDeclaration, ramps: dict[str, float], t_action: int, output: str,
+      value: str, lo: float, hi: float) -> None:
     changes = _changes(sut, output, t_action, value)
     assert changes, f"the {output} never became {value} after {ms(t_action)}"
     p = changes[0]["pressure"]
+    lo, hi = budgets.band_on_ramp(declaration, ramps.get("main pipe pressure"), lo, hi)
     assert lo <= p <= hi, f"the {output} became {value} at {p:g} kPa, outside {lo:g}..{hi:g} kPa"
 
 
@@ -205,10 +217,13 @@ def _(sut: TrainDriver, t_action: int, output: str, value: str, lo: float, hi: f
       converters={"lo": float, "hi": float, "value": zh.core_state})
 @then(parsers.re(rf'the "(?P<output>[^"]+)" became {VALUE} while the speed was between (?P<lo>{NUMBER}) and '
                  rf'(?P<hi>{NUMBER}) km/h'), converters={"lo": float, "hi": float})
-def _(sut: TrainDriver, t_action: int, output: str, value: str, lo: float, hi: float) -> None:
+@budgeted
+def _(sut: TrainDriver, declaration: ProfileDeclaration, ramps: dict[str, float], t_action: int, output: str,
+      value: str, lo: float, hi: float) -> None:
     changes = _changes(sut, output, t_action, value)
     assert changes, f"the {output} never became {value} after {ms(t_action)}"
     v = changes[0]["speed"]
+    lo, hi = budgets.band_on_ramp(declaration, ramps.get("speed"), lo, hi)
     assert lo <= v <= hi, f"the {output} became {value} at {v:g} km/h, outside {lo:g}..{hi:g} km/h"
 
 
@@ -235,8 +250,10 @@ def _(sut: TrainDriver, declaration: ProfileDeclaration, t_action: int, a: str, 
 
 @then(parsers.parse("{after:g} ms起没有CI收到高于0级的牵引级位"))
 @then(parsers.parse("no CI receives a traction notch above 0 from {after:g} ms on"))
-def _(sut: TrainDriver, t_action: int, after: float) -> None:
-    takes = [ev for ev in sut.trace.select(kind="cmd.in", source="*.CI", since=t_action + us(after))]
+@budgeted
+def _(sut: TrainDriver, declaration: ProfileDeclaration, t_action: int, after: float) -> None:
+    window = budgets.window_us(declaration, after)
+    takes = [ev for ev in sut.trace.select(kind="cmd.in", source="*.CI", since=t_action + window)]
     assert takes, "no CI received any command"
     odd = [ev for ev in takes if (ev["traction"] or 0) > 0 or ev["traction_step"] in ("A", "B")]
     assert not odd, f"traction reached a CI: {analysis.describe(odd)}"
@@ -244,16 +261,20 @@ def _(sut: TrainDriver, t_action: int, after: float) -> None:
 
 @then(parsers.parse("每个CI在{bound:g} ms内收到牵引级位{notch:d}"))
 @then(parsers.parse("every CI receives traction notch {notch:d} within {bound:g} ms"))
-def _(sut: TrainDriver, t_action: int, notch: int, bound: float) -> None:
+@budgeted
+def _(sut: TrainDriver, declaration: ProfileDeclaration, t_action: int, notch: int, bound: float) -> None:
+    window = budgets.window_us(declaration, bound)
     cis = [d for d in analysis.command_devices(sut) if d.endswith(".CI")]
-    analysis.expect_taken(sut, cis, t_action, bound, f"traction notch {notch}", traction=notch)
+    analysis.expect_taken(sut, cis, t_action, window, f"traction notch {notch}", traction=notch)
 
 
 @then(parsers.parse("{after:g} ms起每个BCU收到制动级位{step:d}"))
 @then(parsers.parse("from {after:g} ms on every BCU receives brake step {step:d}"))
-def _(sut: TrainDriver, t_action: int, after: float, step: int) -> None:
+@budgeted
+def _(sut: TrainDriver, declaration: ProfileDeclaration, t_action: int, after: float, step: int) -> None:
+    window = budgets.window_us(declaration, after)
     for device in [d for d in analysis.command_devices(sut) if d.endswith(".BCU")]:
-        takes = sut.trace.select(kind="cmd.in", source=device, since=t_action + us(after))
+        takes = sut.trace.select(kind="cmd.in", source=device, since=t_action + window)
         assert takes, f"{device} received nothing"
         odd = [ev for ev in takes if ev["brake"] != step]
         assert not odd, f"{device} received other brake steps: {analysis.describe(odd)}"

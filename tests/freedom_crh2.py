@@ -59,3 +59,16 @@ class OwnRecordWordsCrh2(ReferenceTrain):
 
 
 FREEDOM: list[type] = [SlowLoopsCrh2, OwnLoopPeriodsCrh2, OutputsLastFirstCrh2, TaskTickCrh2, OwnRecordWordsCrh2]
+
+
+class SlowReactionsCrh2(ReferenceTrain):
+    """Freedom (declared parameters): a product whose every reaction is slower than the reference's, declared
+    (reaction_margin_ms 40): CI and BCU act on a command 15 ms after it arrives, the vehicle's outputs follow
+    their inputs 25 ms late, the cab monitor shows a change 10 ms late. No requirement bounds these reactions;
+    the features' budgets (docs/decisions.md, "Reaction-time budgets") grow by the declared margin."""
+    BEHAVIOUR = {"command_take_delay_us": 15 * MS, "output_delay_us": 25 * MS, "display_delay_us": 10 * MS}
+    DECLARATION = "tests/declarations/slow-reactions-crh2.yaml"
+    FREEDOM_CLASS = "declared-parameters"
+
+
+FREEDOM.append(SlowReactionsCrh2)

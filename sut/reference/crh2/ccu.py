@@ -202,6 +202,13 @@ class Ccu:
 
     # -- the cab monitor ------------------------------------------------------------------------
     def display_update(self, name: str, value: Any) -> None:
+        delay = self.train.cfg.behaviour.display_delay_us
+        if delay:
+            self.train.kernel.call_later(delay, self._show, name, value)
+        else:
+            self._show(name, value)
+
+    def _show(self, name: str, value: Any) -> None:
         if self.display.get(name) != value:
             self.display[name] = value
             self.train.emit(f"car{self.car}.monitor", "display.change", name=name, value=value)

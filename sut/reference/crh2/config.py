@@ -73,6 +73,9 @@ class Behaviour:
     record_words: tuple[tuple[str, str], ...] = ()  # a fault record's event words of its own ("failed" -> ...)
     outputs_logged_last_first: bool = False        # one evaluation's output changes logged in the other order
     rapid_brake_delay_us: int = 0                  # the rapid-brake outputs logged this much after the rest
+    command_take_delay_us: int = 0                 # CI and BCU act on a command this much after it arrives
+    output_delay_us: int = 0                       # the vehicle's outputs follow its inputs this much later
+    display_delay_us: int = 0                      # the cab monitor shows a change this much later
 
 
 @dataclass(frozen=True)

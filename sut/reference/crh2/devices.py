@@ -30,6 +30,15 @@ class CommandDevice:
 
     def take(self, path: int, *, traction: int | None, brake: int | None, traction_step: str | None,
              brake_step: str | None, seq: int | None, direction: int | None = None) -> None:
+        delay = self.train.cfg.behaviour.command_take_delay_us
+        if delay:
+            self.train.kernel.call_later(delay, self._act, path, traction, brake, traction_step, brake_step, seq,
+                                         direction)
+        else:
+            self._act(path, traction, brake, traction_step, brake_step, seq, direction)
+
+    def _act(self, path: int, traction: int | None, brake: int | None, traction_step: str | None,
+             brake_step: str | None, seq: int | None, direction: int | None) -> None:
         direction_name = None if direction is None else DIRECTIONS[direction]
         self.train.emit(self.name, "cmd.in", path=path, traction=traction, brake=brake,
                         traction_step=traction_step, brake_step=brake_step, seq=seq, direction=direction_name)

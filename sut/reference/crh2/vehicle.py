@@ -121,6 +121,7 @@ class Vehicle:
         self._odo_v = 0.0
         self.inputs: dict[str, Any] = {k: s.initial for k, s in self.inputs_spec.items() if s.initial is not None}
         self.outputs: dict[str, str] = {}
+        self._pending_outputs: dict[str, str] = {}   # changes on their way (Behaviour.output_delay_us)
         self._ramps: dict[str, "Timer"] = {}
         # latched states
         self.pipe_tripped = False
@@ -323,6 +324,11 @@ class Vehicle:
         out["traction"] = "permitted" if self._permitted(eb_loop_open, rapid, doors) else "blocked"
         hooks = self.train.cfg.behaviour
         for name, value in (reversed(out.items()) if hooks.outputs_logged_last_first else out.items()):
+            if hooks.output_delay_us and not initial:
+                if self._pending_outputs.get(name, self.outputs.get(name)) != value:
+                    self._pending_outputs[name] = value
+                    self.kernel.call_later(hooks.output_delay_us, self._set_late, name, value)
+                continue
             if self.outputs.get(name) != value:
                 self.outputs[name] = value
                 if initial:
@@ -331,6 +337,15 @@ class Vehicle:
                     self.kernel.call_later(hooks.rapid_brake_delay_us, self._log_change, name, value, speed, pressure)
                 else:
                     self.train.emit(name, "out.change", value=value, speed=speed, pressure=pressure)
+
+    def _set_late(self, name: str, value: str) -> None:
+        # The change is logged with the speed and pressure of the instant the output really changes.
+        if self._pending_outputs.get(name) == value:
+            del self._pending_outputs[name]
+        if self.outputs.get(name) != value:
+            self.outputs[name] = value
+            inp = self.inputs
+            self.train.emit(name, "out.change", value=value, speed=inp["speed"], pressure=inp["main pipe pressure"])
 
     def _log_change(self, name: str, value: str, speed: float, pressure: float) -> None:
         self.train.emit(name, "out.change", value=value, speed=speed, pressure=pressure)
