@@ -201,3 +201,51 @@ def test_a_scenario_needing_an_undeclared_option_is_not_applicable(tmp_path: Pat
     assert summary.counts["failed"] == 0 and summary.counts["skipped"] == 0, summary.counts
     categories = json.loads((results / "categories.json").read_text(encoding="utf-8"))
     assert any(c["name"].startswith("Not applicable") for c in categories)
+
+
+# The same for what the other profiles declare: a declaration is a claim about the product, and a wrong claim
+# would make the features compute their bounds for another train.
+_LOOPS = {"ACS": "acs_poll_period_ms", "PID": "pid_poll_period_ms", "APU": "apu_poll_period_ms",
+          "SDD": "sdd_send_period_ms", "DD": "dd_report_period_ms"}
+_LOOP_DEFAULTS_US = {"SDD": 1_000_000, "DD": 100_000}      # sut/reference/crh2/train.py, when TIMING names none
+
+
+@pytest.mark.parametrize("cls", [c for c in [ReferenceTrain, *IN_BAND, *FREEDOM] if issubclass(c, ReferenceTrain)],
+                         ids=lambda c: c.__name__)
+def test_a_crh2_declares_the_loop_periods_it_has(cls: type) -> None:
+    from sut.reference.crh2.config import TrainConfig
+
+    declared = of_backend(cls).of("crh2")
+    periods = {**_LOOP_DEFAULTS_US, **dict(TrainConfig().with_timing(**cls.TIMING).timing.current_loop_periods_us)}
+    tolerance = declared.parameter("loop_period_tolerance_pct") / 100
+    for device, name in _LOOPS.items():
+        period = declared.parameter(name)
+        assert abs(periods[device] / 1000 - period) <= period * tolerance, \
+            f"{cls.__name__} declares {name}={period} ms (+-{tolerance:.0%}), polls every {periods[device] / 1000} ms"
+
+
+@pytest.mark.parametrize("cls", [c for c in [ReferenceMetro, *IN_BAND, *FREEDOM] if issubclass(c, ReferenceMetro)],
+                         ids=lambda c: c.__name__)
+def test_a_metro_declares_the_io_map_it_has(cls: type) -> None:
+    from steps.metro import IO_MAP           # what a declaration that names no I/O map stands for
+    from sut.reference.metro.config import MetroConfig
+
+    declared = {**IO_MAP, **of_backend(cls).of("metro-tcn").parameters}
+    wired = MetroConfig().with_behaviour(**cls.BEHAVIOUR).behaviour
+    for name, actual in (("traction_demand_ai", wired.ai_traction), ("brake_demand_ai", wired.ai_brake),
+                         ("forward_di", wired.di_forward), ("demand_full_scale", wired.ai_full_scale)):
+        assert declared[name] == actual, f"{cls.__name__} declares {name}={declared[name]}, is wired {actual}"
+
+
+@pytest.mark.parametrize("cls", [c for c in [ReferenceAtp, *IN_BAND, *FREEDOM]
+                                 if issubclass(c, ReferenceAtp) and "vdx" in c.PROFILES], ids=lambda c: c.__name__)
+def test_a_vdx_measures_its_supply_within_its_declared_accuracy(cls: type) -> None:
+    """VDX-02's range is 70..125 % of 110 V; a VDX that takes other edges measures its supply off by that much."""
+    from sut.reference.atp.config import Vdx
+
+    declared = of_backend(cls).of("vdx").parameters.get("supply_accuracy_pct", 0)   # none declared: exact
+    edges = {"supply_lo": 0.70, "supply_hi": 1.25}
+    for name, edge in edges.items():
+        taken = getattr(Vdx(**cls.VDX), name)
+        assert abs(edge / taken - 1) * 100 <= declared + 1e-9, \
+            f"{cls.__name__} takes {name}={taken:.5f} for {edge}: off by more than its declared {declared} %"
