@@ -5,6 +5,7 @@ from __future__ import annotations
 
 import argparse
 import sys
+from pathlib import Path
 
 from .paths import REPO, Tree
 
@@ -25,7 +26,7 @@ def main(argv: list[str] | None = None) -> int:
         "library and docs/requirements.md must agree.",
     )
     parser.add_argument("--root", default=str(REPO.root), help="repository root (default: %(default)s)")
-    sub = parser.add_subparsers(dest="command", required=True, metavar="{check,trace,new,campaign,assertions}")
+    sub = parser.add_subparsers(dest="command", required=True, metavar="{check,trace,new,campaign,assertions,steps}")
 
     check = sub.add_parser(
         "check",
@@ -73,6 +74,17 @@ def main(argv: list[str] | None = None) -> int:
 
     sub.add_parser("assertions", help="how many Then assertions the features make, by what backs them "
                    "(a requirement or a project decision), per profile: the README's table")
+    steps = sub.add_parser(
+        "steps",
+        help="the step catalogue: every sentence of the step library, its parameters, Chinese twin, what it does",
+        description="Lists the step sentences whose text (English or Chinese), module, driver calls or trace event "
+        "kinds contain every WORD (all of them without WORDS): parameter types and allowed values, the Chinese "
+        "twin, the driver calls it makes and the contract's event kinds it reads, and a line of a feature that "
+        "uses it. --md writes the whole catalogue as Markdown (docs/steps.md).",
+    )
+    steps.add_argument("words", nargs="*", metavar="WORD", help="words every listed step contains (any case)")
+    steps.add_argument("--lang", choices=("en", "zh-CN"), default="en", help="the sentences to show first")
+    steps.add_argument("--md", metavar="FILE", help="write the whole catalogue as Markdown to FILE")
     campaign = sub.add_parser(
         "campaign",
         help="write the fault-campaign features (F-NET-30..34) from the SUT's own fault space",
@@ -87,6 +99,22 @@ def main(argv: list[str] | None = None) -> int:
 
     args = parser.parse_args(argv)
     tree = Tree.at(args.root)
+    if args.command == "steps":
+        from .catalogue import entries, render_markdown, render_text
+
+        found = entries(_step_modules(tree, None), tree.root / "features")
+        if args.md:
+            Path(args.md).write_text(render_markdown(found), encoding="utf-8")
+            print(f"wrote {args.md} ({len(found)} step definitions)")
+            return 0
+        chosen = [e for e in found if e.matches(args.words)
+                  and (args.lang != "zh-CN" or e.chinese)]
+        if not chosen:
+            print(f"no step sentence contains {' '.join(args.words)!r}", file=sys.stderr)
+            return 1
+        print(render_text(chosen, args.lang))
+        print(f"\n{len(chosen)} of {len(found)} step definitions", file=sys.stderr)
+        return 0
     if args.command == "assertions":
         from .assertions import table
 
