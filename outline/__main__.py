@@ -133,7 +133,7 @@ def main(argv: list[str] | None = None) -> int:
         from .new_item import run as new_item
 
         return new_item(tree, args.cls, args.category, args.title, args.req, args.profile)
-    from .trace import run
+    from .render import run
 
     return run(tree, args.results, md=args.md, html=args.html, allure=args.allure)
 

@@ -44,6 +44,9 @@ import uuid
 from dataclasses import asdict, dataclass
 from pathlib import Path
 
+# What a step module is made of lives with the plugin that notes it (one way: mutation -> scenario_inputs).
+from .scenario_inputs import sha as _sha, step_definitions
+
 ROOT = Path(__file__).resolve().parents[1]
 MUTANTS_DIR = ROOT / "mutants"
 EQUIVALENTS = ROOT / "sut" / "reference" / "EQUIVALENT_MUTANTS.txt"
@@ -113,26 +116,6 @@ INPUTS = MUTANTS_DIR / "scenario_inputs.json"         # what each mapped test is
 MAPPED_TESTS = ("features/", "tests/test_bulk.py", "tests/test_kernel.py")
 
 
-def _sha(text: str) -> str:
-    return hashlib.sha256(text.encode("utf-8")).hexdigest()[:16]
-
-
-def step_definitions(path: Path) -> tuple[dict[int, str], str]:
-    """A step module's decorated functions (by the line of their first decorator, which is the function's
-    co_firstlineno) with a digest of each one's source, and a digest of the rest of the module."""
-    text = path.read_text(encoding="utf-8")
-    lines = text.splitlines(keepends=True)
-    found, spans = {}, []
-    for node in ast.parse(text).body:
-        if isinstance(node, (ast.FunctionDef, ast.AsyncFunctionDef)) and node.decorator_list:
-            first = node.decorator_list[0].lineno
-            found[first] = _sha("".join(lines[first - 1:node.end_lineno]))
-            spans.append((first, node.end_lineno or first))
-    # Blank and comment lines are left out of the rest: a step definition added with its comment changes none
-    # of what the module's other tests are made of.
-    rest = [line for i, line in enumerate(lines, start=1) if not any(a <= i <= b for a, b in spans)
-            and line.strip() and not line.lstrip().startswith("#")]
-    return found, _sha("".join(rest))
 
 
 def map_sources(root: Path | None = None) -> dict[str, str]:

@@ -1,15 +1,20 @@
 """The traceability matrix as Markdown and HTML (jinja2 templates in outline/templates/), and as an Allure
-result carrying the HTML page, so the report links it as one entry of its own."""
+result carrying the HTML page, so the report links it as one entry of its own; `run` is `python -m outline
+trace` (the tables on a terminal, or these files)."""
 from __future__ import annotations
 
 import json
+import os
+import sys
 import time
 import uuid
 from pathlib import Path
 
 from jinja2 import Environment, FileSystemLoader, select_autoescape
 
-from .coverage import Coverage, counts
+from .coverage import Coverage, counts, coverage
+from .paths import Tree
+from .trace import build_trace, render_plain, render_rich
 
 TEMPLATES = Path(__file__).parent / "templates"
 
@@ -74,3 +79,24 @@ def write_allure_result(results_dir: str | Path, html: str, rows: list[Coverage]
     path = results_dir / f"{result['uuid']}-result.json"
     path.write_text(json.dumps(result), encoding="utf-8")
     return path
+
+
+def run(tree: Tree, results_dir: str | None, out=sys.stdout, md: str | None = None, html: str | None = None,
+        allure: str | None = None) -> int:
+    trace = build_trace(tree, results_dir)
+    if not (md or html or allure):
+        (render_rich if out.isatty() else render_plain)(trace, out)
+        return 0
+    rows = coverage(trace, trace.requirements, trace.out_of_scope)
+    for path, kind in ((md, "md"), (html, "html")):
+        if path:
+            doc = os.path.relpath(tree.requirements, Path(path).resolve().parent)
+            Path(path).parent.mkdir(parents=True, exist_ok=True)
+            Path(path).write_text(render(kind, rows, trace, trace.requirements, doc, results_dir), encoding="utf-8")
+    if allure:
+        page = render("html", rows, trace, trace.requirements, "requirements.md", results_dir)
+        write_allure_result(allure, page, rows)
+    c = counts(rows)
+    print(f"traceability: {c['full']} full, {c['partly']} partly, {c['none']} none, {c['out of scope']} out of "
+          f"scope" + "".join(f"; {p}" for p in (md, html) if p), file=out)
+    return 0

@@ -8,6 +8,8 @@ in $CRH2_SCENARIO_INPUTS. When some of those files change, only the tests made o
 """
 from __future__ import annotations
 
+import ast
+import hashlib
 import json
 import os
 from pathlib import Path
@@ -20,9 +22,29 @@ from outline import step_index
 OUT = "CRH2_SCENARIO_INPUTS"
 
 
-def inputs_of(session: pytest.Session) -> dict[str, list[str]]:
-    from outline.mutation import step_definitions
+def sha(text: str) -> str:
+    return hashlib.sha256(text.encode("utf-8")).hexdigest()[:16]
 
+
+def step_definitions(path: Path) -> tuple[dict[int, str], str]:
+    """A step module's decorated functions (by the line of their first decorator, which is the function's
+    co_firstlineno) with a digest of each one's source, and a digest of the rest of the module."""
+    text = path.read_text(encoding="utf-8")
+    lines = text.splitlines(keepends=True)
+    found, spans = {}, []
+    for node in ast.parse(text).body:
+        if isinstance(node, (ast.FunctionDef, ast.AsyncFunctionDef)) and node.decorator_list:
+            first = node.decorator_list[0].lineno
+            found[first] = sha("".join(lines[first - 1:node.end_lineno]))
+            spans.append((first, node.end_lineno or first))
+    # Blank and comment lines are left out of the rest: a step definition added with its comment changes none
+    # of what the module's other tests are made of.
+    rest = [line for i, line in enumerate(lines, start=1) if not any(a <= i <= b for a, b in spans)
+            and line.strip() and not line.lstrip().startswith("#")]
+    return found, sha("".join(rest))
+
+
+def inputs_of(session: pytest.Session) -> dict[str, list[str]]:
     root = Path(session.config.rootpath).resolve()
     index = step_index.index_of(session._fixturemanager)
     inputs: dict[str, list[str]] = {}

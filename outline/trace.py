@@ -6,7 +6,6 @@ from the registry. `--results DIR` adds each scenario's last status from an allu
 
 from __future__ import annotations
 
-import sys
 from dataclasses import dataclass, field
 from pathlib import Path
 
@@ -110,29 +109,3 @@ def render_rich(trace: Trace, out) -> None:
         table.add_row(item_id, title, ", ".join(r + (f" (partly: {partly[r]})" if r in partly else "") for r in reqs))
     console.print(table)
     console.print(f"Covered by nothing ({len(trace.uncovered)}): {' '.join(trace.uncovered) or '-'}")
-
-
-def run(tree: Tree, results_dir: str | None, out=sys.stdout, md: str | None = None, html: str | None = None,
-        allure: str | None = None) -> int:
-    trace = build_trace(tree, results_dir)
-    if not (md or html or allure):
-        (render_rich if out.isatty() else render_plain)(trace, out)
-        return 0
-    import os
-
-    from .coverage import counts, coverage
-    from .render import render, write_allure_result
-
-    rows = coverage(trace, trace.requirements, trace.out_of_scope)
-    for path, kind in ((md, "md"), (html, "html")):
-        if path:
-            doc = os.path.relpath(tree.requirements, Path(path).resolve().parent)
-            Path(path).parent.mkdir(parents=True, exist_ok=True)
-            Path(path).write_text(render(kind, rows, trace, trace.requirements, doc, results_dir), encoding="utf-8")
-    if allure:
-        page = render("html", rows, trace, trace.requirements, "requirements.md", results_dir)
-        write_allure_result(allure, page, rows)
-    c = counts(rows)
-    print(f"traceability: {c['full']} full, {c['partly']} partly, {c['none']} none, {c['out of scope']} out of "
-          f"scope" + "".join(f"; {p}" for p in (md, html) if p), file=out)
-    return 0

@@ -1,5 +1,6 @@
-"""One-way layers (issue 14): no module of the SUT package imports another that imports it back, type-only
-imports (under TYPE_CHECKING) included; a CRH2 part never imports the train that assembles it."""
+"""One-way layers (issue 14, issue 32): no module of the project (sut/, steps/, outline/, bench/, tests/)
+imports another that imports it back, relative, function-level and type-only imports (under TYPE_CHECKING)
+included; a CRH2 part never imports the train that assembles it."""
 from __future__ import annotations
 
 import ast
@@ -16,14 +17,21 @@ def _module_name(path: Path) -> str:
     return ".".join(parts)
 
 
-def _imports() -> dict[str, set[str]]:
-    modules = {_module_name(p): p for p in SUT.rglob("*.py")}
+PACKAGES = ("sut", "steps", "outline", "bench", "tests")
+
+
+def _imports(packages: tuple[str, ...] = ("sut",)) -> dict[str, set[str]]:
+    modules = {_module_name(p): p for package in packages for p in (REPO / package).rglob("*.py")}
     graph: dict[str, set[str]] = {}
     for name, path in modules.items():
         deps: set[str] = set()
+        here = name.split(".") if path.name == "__init__.py" else name.split(".")[:-1]
         for node in ast.walk(ast.parse(path.read_text(encoding="utf-8"))):
-            if isinstance(node, ast.ImportFrom) and node.module and node.level == 0:
-                targets = [f"{node.module}.{alias.name}" for alias in node.names] + [node.module]
+            if isinstance(node, ast.ImportFrom):
+                base = node.module or ""
+                if node.level:                # from .x import y, from .. import z
+                    base = ".".join(here[:len(here) - node.level + 1] + ([node.module] if node.module else []))
+                targets = [f"{base}.{alias.name}" for alias in node.names] + [base]
                 deps.update(t for t in targets if t in modules)
             elif isinstance(node, ast.Import):
                 deps.update(alias.name for alias in node.names if alias.name in modules)
@@ -66,6 +74,12 @@ def _cycles(graph: dict[str, set[str]]) -> list[list[str]]:
 def test_no_module_of_the_sut_imports_itself_through_others() -> None:
     graph = _imports()
     assert len(graph) > 30
+    assert _cycles(graph) == []
+
+
+def test_no_module_of_the_project_imports_itself_through_others() -> None:
+    graph = _imports(PACKAGES)
+    assert len(graph) > 150 and "outline.render" in graph and "outline.trace" in graph["outline.render"]
     assert _cycles(graph) == []
 
 

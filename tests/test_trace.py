@@ -52,7 +52,7 @@ def test_rich_tables_render(monkeypatch):
 def test_matrix_as_markdown_html_and_an_allure_entry(tmp_path, data_on_path):
     import json
 
-    from outline.trace import run
+    from outline.render import run
 
     data_on_path("good")
     out = io.StringIO()
