@@ -92,3 +92,19 @@ def test_the_crh2_parts_know_the_train_only_as_its_context() -> None:
 def test_three_trains_at_a_glance() -> None:
     packages = sorted(p.name for p in (SUT / "reference").iterdir() if (p / "__init__.py").exists())
     assert packages == ["atp", "crh2", "metro"]
+
+
+# Who may import whom (docs/architecture.md): the steps reach a SUT only through the driver interface and the
+# contract, never the reference implementation; the reference and the driver know nothing of the suite.
+FORBIDDEN = {
+    "steps": ("sut.reference", "tests", "bench"),
+    "sut": ("steps", "outline", "tests", "bench"),
+}
+
+
+def test_each_layer_imports_only_what_it_may() -> None:
+    graph = _imports(PACKAGES)
+    wrong = [f"{module} imports {dep}" for module, deps in sorted(graph.items()) for dep in sorted(deps)
+             for layer, banned in FORBIDDEN.items() if module.split(".")[0] == layer
+             and any(dep == b or dep.startswith(b + ".") for b in banned)]
+    assert wrong == []
