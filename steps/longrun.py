@@ -17,6 +17,8 @@ from sut.driver import TrainDriver
 from sut.errors import SutError
 from sut.trace import Trace
 from steps.analysis import lcus, ms, record_event, us
+from steps import budgets
+from steps.budgets import budgeted
 
 HOUR_US = 3_600_000_000
 
@@ -184,12 +186,17 @@ def _(sut: TrainDriver, long_run: LongRun, ccu: str) -> None:
 
 @then(parsers.parse("每个LCU的时钟与上电以来的时间相差不超过{bound:g} ms"))
 @then(parsers.parse("the clock of every LCU reads the time since power-up within {bound:g} ms"))
-def _(sut: TrainDriver, long_run: LongRun, bound: float) -> None:
+@budgeted
+def _(sut: TrainDriver, declaration: ProfileDeclaration, long_run: LongRun, bound: float) -> None:
+    """PRO-01 carries the clock correction on the commands: an LCU's clock is as old as the last correction it
+    took, so the bound is a budget of the same kind as a command's way (docs/decisions.md, "Reaction-time
+    budgets"), with the SUT's declared margin."""
     _ = long_run.span_us
     now_ms = sut.now_us / 1000
+    limit = budgets.window_us(declaration, bound) / 1000
     for lcu in lcus(sut):
         clock = sut.counters(lcu)["clock ms"]
-        assert abs(clock - now_ms) <= bound, (
+        assert abs(clock - now_ms) <= limit, (
             f"{lcu} clock reads {clock} ms at {now_ms:.0f} ms since power-up ({(now_ms - clock) / 1000:+.3f} s)")
 
 
