@@ -20,7 +20,9 @@ import tracemalloc
 from pathlib import Path
 
 sys.path.insert(0, str(Path(__file__).resolve().parents[1]))      # the project root: `tests` below
+sys.path.insert(0, str(Path(__file__).resolve().parent))
 
+import _history                                                     # noqa: E402
 from sut.reference import bulk                                      # noqa: E402
 from tests.test_bulk import S, frame_by_frame as exactly, powered   # noqa: E402  as the agreement tests do
 
@@ -70,9 +72,13 @@ def main() -> None:
     ap.add_argument("--hours", type=float, default=72.0)
     ap.add_argument("--fbf-minutes", type=float, default=5.0, help="frame-by-frame stretch to measure")
     ap.add_argument("--agree-minutes", type=float, default=0.0, help="also run this long both ways and compare")
+    _history.add_argument(ap)
     args = ap.parse_args()
 
+    load_before = _history.load()
     wall_h, events_h, trace_h = frame_by_frame(args.fbf_minutes)
+    figures: dict[str, float] = {"fbf_wall_s_per_sim_h": wall_h,
+                                 "fbf_kernel_events_per_sim_h": events_h, "fbf_trace_events_per_sim_h": trace_h}
     print(f"frame by frame   {wall_h:8.1f} s wall per simulated hour -> {wall_h * args.hours / 3600:.2f} h for "
           f"{args.hours:g} h; {events_h:,} kernel events and {trace_h:,} trace events per simulated hour")
     for every in (1.0, 3.0):
@@ -83,9 +89,16 @@ def main() -> None:
               f"skipped {rep.skipped_us / S:,.0f} s in {rep.jumps} jumps of whole {rep.period_us / S:g} s periods; "
               f"trace {r['trace']:,} events; kernel events (counted, skipped included) "
               f"{r['events'] / args.hours:,.0f} per hour")
-    print(f"peak traced memory, bulk {args.hours:g} h sampled every 3 h: {peak_memory(args.hours, 3.0) / 2**20:.0f} MiB")
+        figures |= {f"bulk_sample_{every:g}h_wall_s": r["wall"], f"bulk_sample_{every:g}h_jumps": rep.jumps,
+                    f"bulk_sample_{every:g}h_simulated_s": rep.simulated_us / S}
+    peak = peak_memory(args.hours, 3.0)
+    figures["bulk_sample_3h_peak_traced_mib"] = peak / 2**20
+    print(f"peak traced memory, bulk {args.hours:g} h sampled every 3 h: {peak / 2**20:.0f} MiB")
     if args.agree_minutes:
-        print(f"{args.agree_minutes:g} min both ways: state {'identical' if agree(args.agree_minutes) else 'DIFFERENT'}")
+        same = agree(args.agree_minutes)
+        figures["agree_minutes_identical"] = int(same)
+        print(f"{args.agree_minutes:g} min both ways: state {'identical' if same else 'DIFFERENT'}")
+    _history.record(args, "bulk_bench", figures, load_before=load_before, load_after=_history.load())
 
 
 if __name__ == "__main__":

@@ -20,14 +20,7 @@ Labelled "internal" (reference only, read from `driver.train.kernel.events`, not
 kernel callbacks per simulated second. With --mem-seconds N > 0, peak traced memory (tracemalloc, a
 separate run of N simulated seconds, never the timed one) per composition.
 
-Measured on this machine (2-core VM, Python 3.11.7, 2026-11-23 21:09, defaults: 10 s simulated, best of 3;
-load average 1.0):
-  composition          ring nodes  wall s / sim s  trace events / sim s  kernel events / sim s  peak MB / 5 s
-  8 cars (1 set)       12          0.041           2 892                 5 192                  7.3
-  16 cars (2 sets)     24          0.062           5 300                 9 558                  12.8
-  ratio 16/8           2.00x       1.50x           1.83x                 1.84x                  1.75x
-  -> target 2.2x met: twice the nodes make 1.83x the events, each a little cheaper (0.82x wall per event:
-     the fixed per-cycle work is shared). Power-up to notch 7 after 1 s: 30 ms (8 cars), 46 ms (16 cars).
+With --record the figures go to bench/history.jsonl as one row (docs/performance.md, `make performance`).
 """
 from __future__ import annotations
 
@@ -45,6 +38,7 @@ BENCH = Path(__file__).resolve().parent
 sys.path.insert(0, str(BENCH))
 sys.path.insert(0, str(BENCH.parent))
 
+import _history  # noqa: E402
 from _table import table, text  # noqa: E402
 from sut.backends import open_backend  # noqa: E402
 
@@ -150,6 +144,7 @@ def main(argv: list[str] | None = None) -> int:
     ap.add_argument("--mem-seconds", type=float, default=5.0,
                     help="simulated seconds of the separate tracemalloc run per composition, 0 to skip (default 5)")
     ap.add_argument("--plain", action="store_true", help="plain text output even if rich is installed")
+    _history.add_argument(ap)
     args = ap.parse_args(argv)
     if args.repeat < 1 or args.sim_seconds <= 0:
         ap.error("--repeat must be >= 1 and --sim-seconds > 0")
@@ -209,6 +204,20 @@ def main(argv: list[str] | None = None) -> int:
                 f"{100 * (two.kinds.get(k, 0) - one.kinds.get(k, 0)) / max(two.trace_events - one.trace_events, 1):.0f}%"]
                for k in growth], plain=args.plain)
     text("", plain=args.plain)
+    figures: dict[str, float] = {"ratio_wall_per_sim_s": r,
+                                 "ratio_cpu_per_sim_s": two.cpu_per_sim_s / one.cpu_per_sim_s,
+                                 "ratio_trace_per_sim_s": two.trace_per_sim_s / one.trace_per_sim_s}
+    for res in (one, two):
+        cars = n * res.sets
+        figures |= {f"cars{cars}_ring_nodes": res.nodes, f"cars{cars}_power_up_s": res.setup_wall,
+                    f"cars{cars}_wall_s_per_sim_s": res.wall_per_sim_s,
+                    f"cars{cars}_cpu_s_per_sim_s": res.cpu_per_sim_s,
+                    f"cars{cars}_trace_events_per_sim_s": res.trace_per_sim_s,
+                    f"cars{cars}_kernel_events_per_sim_s": None if res.kernel_events is None
+                    else res.kernel_events / (res.sim_us / S),
+                    f"cars{cars}_peak_traced_mb": res.mem_peak / 1e6 if res.mem_peak else None}
+    _history.record(args, "cars_bench", figures, load_before=load0[0], load_after=load1[0],
+                    selection=None if argv is None else _history.measured_options(argv))
     return 0
 
 

@@ -6,14 +6,9 @@
 Sizes: 12 bytes (a COMMAND payload), 240 (a STATUS payload), 508 (the longest ARCNET packet data).
 The `crc` package without `optimized=True` (bit by bit) is timed too, as a reference point.
 
-Measured on this machine (2-core AMD EPYC VM, Python 3.11.7, crc 8.0.0, other jobs running; best of 5):
-  bytes   crc16_arc (table)   crc optimized=True   crc optimized=False
-     12        1.1 us               60 us                 129 us
-    240         20 us            1 050 us               2 540 us
-    508         41 us            2 050 us               5 900 us
-  -> the table version is ~50x faster than the crc package with optimized=True (~40x..55x over runs) and
-     ~130x faster than its bit-by-bit register; the lead's ~1500 us per 250 bytes matches optimized=True
-     on a loaded machine. Our table costs ~80-90 ns per byte.
+With --record the microseconds per frame of each, by size, go to bench/history.jsonl as one row (the earlier
+ones are there: docs/performance.md, `make performance`); the table version has been ~50x faster than the crc
+package with optimized=True.
 """
 from __future__ import annotations
 
@@ -26,7 +21,9 @@ from typing import Callable
 
 if __package__ in (None, ""):
     sys.path.insert(0, str(Path(__file__).resolve().parent.parent))
+sys.path.insert(0, str(Path(__file__).resolve().parent))
 
+import _history  # noqa: E402
 from sut.codecs.arcnet import crc16_arc  # noqa: E402
 
 
@@ -46,7 +43,9 @@ def main(argv: list[str] | None = None) -> int:
     ap.add_argument("--repeat", type=int, default=5, help="timings per measurement; the best is kept")
     ap.add_argument("--no-bitwise", action="store_true", help="skip the crc package's bit-by-bit register")
     ap.add_argument("--plain", action="store_true", help="plain text output even if rich is installed")
+    _history.add_argument(ap)
     args = ap.parse_args(argv)
+    load_before = _history.load()
 
     try:
         import crc
@@ -62,6 +61,7 @@ def main(argv: list[str] | None = None) -> int:
 
     rng = random.Random(878_1)
     rows = []
+    figures: dict[str, float] = {}       # the history's row: microseconds per frame of each, by size
     for size in args.sizes:
         data = bytes(rng.getrandbits(8) for _ in range(size))
         values = {name: fn(data) for name, fn in impls}
@@ -69,6 +69,8 @@ def main(argv: list[str] | None = None) -> int:
             print(f"MISMATCH on {size} bytes: {values}", file=sys.stderr)
             return 1
         us = [measure(fn, data, args.budget, args.repeat) for _name, fn in impls]
+        figures |= {f"{name.replace(' ', '_')}_us_{size}b": u for (name, _fn), u in zip(impls, us)}
+        figures[f"table_ns_per_byte_{size}b"] = us[0] / size * 1000
         rows.append([str(size), *(f"{u:,.2f}" for u in us), *(f"{u / us[0]:.1f}x" for u in us[1:]),
                      f"{us[0] / size * 1000:.0f}"])
     headers = ["bytes", *(f"{name} us" for name, _ in impls),
@@ -98,6 +100,8 @@ def main(argv: list[str] | None = None) -> int:
         print("  ".join(h.rjust(w) for h, w in zip(headers, widths)))
         for row in rows:
             print("  ".join(c.rjust(w) for c, w in zip(row, widths)))
+    _history.record(args, "crc_bench", figures, load_before=load_before, load_after=_history.load(),
+                    selection=None if argv is None else _history.measured_options(argv))
     return 0
 
 

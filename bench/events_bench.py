@@ -23,6 +23,7 @@ from pathlib import Path
 
 sys.path.insert(0, str(Path(__file__).resolve().parent))
 
+import _history  # noqa: E402
 from _table import table  # noqa: E402
 
 ROOT = Path(__file__).resolve().parents[1]
@@ -53,8 +54,11 @@ def main(argv: list[str] | None = None) -> None:
     parser.add_argument("--top", type=int, default=8, help="kinds listed per profile (default 8)")
     parser.add_argument("--plain", action="store_true", help="plain text tables, no rich")
     parser.add_argument("pytest_args", nargs="*", help="after --: passed to pytest")
+    _history.add_argument(parser)
     args = parser.parse_args(argv)
     rows, total = [], 0
+    load_before = _history.load()
+    figures: dict[str, float] = {}          # the history's row: per profile, its events and its largest kinds
     for profile in args.profile or PROFILES:
         kinds, wall, summary = count(profile, args.pytest_args)
         events = sum(kinds.values())
@@ -62,8 +66,13 @@ def main(argv: list[str] | None = None) -> None:
         largest = sorted(kinds.items(), key=lambda kv: -kv[1])[:args.top]
         rows.append((profile, f"{events / 1e6:.2f} M", f"{wall:.1f} s", summary,
                      ", ".join(f"{name} {n / 1e6:.2f} M" for name, n in largest)))
+        figures |= {f"{profile}.events": events, f"{profile}.wall_s": wall,
+                    **{f"{profile}.kind.{name}": n for name, n in largest}}
     table("Kernel events per profile (one process each)", ("profile", "events", "wall", "pytest", "largest kinds"),
           rows, plain=args.plain, notes=[f"all profiles: {total / 1e6:.2f} M events"])
+    figures["all.events"] = total
+    _history.record(args, "events_bench", figures, load_before=load_before, load_after=_history.load(),
+                    selection=None if argv is None else _history.measured_options(argv))
 
 
 if __name__ == "__main__":

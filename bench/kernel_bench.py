@@ -24,24 +24,10 @@ time (kernel callbacks, trace events, wall time); peak memory is taken in a seco
 Each run also prints, from that run alone, kernel vs SimPy events per second and their ratio, idiom by idiom
 (callbacks: kernel-callback / simpy-callback; processes: kernel-process / simpy-process) and best vs best.
 
-Measured on this machine (2-core AMD EPYC VM, Python 3.11.7, SimPy 4.1.2, 2026-11-23 21:09, defaults:
-60 s simulated, best of 3; load average 1.0, i.e. about one other CPU-bound job on the two cores):
-  variant            events/s   wall s / sim h   speed vs simpy-process
-  simpy-process      802 700    17.5             1.00
-  simpy-callback     781 700    18.0             0.97
-  kernel-callback    848 700    16.5             1.06
-  kernel-process     678 700    20.7             0.85
-  kernel vs SimPy: callbacks 1.09x (kernel faster), processes 0.85x (SimPy faster), best vs best 1.06x.
-  => on this load our Kernel is at par with SimPy: ~1.1x with callbacks (how the model is written), slower
-     with generator processes; the "several times faster" in kernel.py's docstring is not what this machine
-     shows. (An earlier session, at load 2-3, saw the same picture with a wider spread: kernel-callback
-     0.72 .. 1.21x of simpy-process over five runs, kernel-process 0.68 .. 0.95x.)
-  reference model, 60 s virtual (key in cab 1, powered up): 310 844 kernel events, 173 386 trace events
-  (both deterministic), 2.64 s wall -> 158 s (2.6 min) wall per simulated hour, 118 000 kernel events per
-  wall second (the model's callbacks cost ~7x the bare ring workload's); peak traced memory 21.5 MB after
-  20 s -> ~64 MB per simulated minute, almost all of it the trace list (~370 B per trace event), i.e.
-  ~3.9 GB per simulated hour if the trace is kept (long runs use TrainDriver.soak, bench/bulk_bench.py).
-Each run prints its own figures; rerun on a quiet machine before quoting them in docs/decisions.md.
+Each run prints its own figures; --record appends them to bench/history.jsonl, where the earlier ones are
+(docs/performance.md, `make performance`). On this 2-core machine the kernel has been at par with SimPy with
+callbacks (how the model is written) and slower with generator processes; rerun on a quiet machine before
+quoting a figure in docs/decisions.md.
 """
 from __future__ import annotations
 
@@ -57,7 +43,9 @@ from typing import Callable
 
 if __package__ in (None, ""):                       # `python bench/kernel_bench.py` from the repo root
     sys.path.insert(0, str(Path(__file__).resolve().parent.parent))
+sys.path.insert(0, str(Path(__file__).resolve().parent))
 
+import _history  # noqa: E402
 from sut.reference.kernel import Kernel  # noqa: E402
 
 # -- the workload ---------------------------------------------------------------------------------
@@ -460,10 +448,12 @@ def main(argv: list[str] | None = None) -> int:
                     help="simulated seconds of the separate tracemalloc run, 0 to skip (default 20; "
                          "60 gives the per-minute figure directly but costs ~30 s more)")
     ap.add_argument("--plain", action="store_true", help="plain text output even if rich is installed")
+    _history.add_argument(ap)
     args = ap.parse_args(argv)
     if args.repeat < 1 or args.sim_seconds <= 0:
         ap.error("--repeat must be >= 1 and --sim-seconds > 0")
 
+    load_before = _history.load()
     sim_us = int(args.sim_seconds * 1_000_000)
     names = list(dict.fromkeys(args.variants))
     if any(n.startswith("simpy") for n in names):
@@ -478,7 +468,28 @@ def main(argv: list[str] | None = None) -> int:
     if args.ref_seconds > 0:
         ref = bench_reference(int(args.ref_seconds * 1_000_000), int(args.mem_seconds * 1_000_000))
     report(results, ref, sim_us, args.repeat, args.plain)
+    _history.record(args, "kernel_bench", history_figures(results, ref, sim_us), load_before=load_before,
+                    load_after=_history.load(), selection=None if argv is None else _history.measured_options(argv))
     return 0
+
+
+def history_figures(results: list[Result], ref: RefResult | None, sim_us: int) -> dict[str, float]:
+    """The row bench/history.jsonl keeps: each variant's events per second, and the reference model's cost."""
+    figures: dict[str, float] = {f"{r.name}_events_per_s": r.events_per_s() for r in results}
+    by = {r.name: r for r in results}
+    for what, k, sp in (("callbacks", "kernel-callback", "simpy-callback"),
+                        ("processes", "kernel-process", "simpy-process")):
+        if k in by and sp in by:
+            figures[f"kernel_over_simpy_{what}"] = by[k].events_per_s() / by[sp].events_per_s()
+    if ref is not None:
+        figures |= {"ref_sim_s": ref.sim_us / 1e6, "ref_kernel_events": ref.kernel_events,
+                    "ref_trace_events": ref.trace_events, "ref_wall_s": ref.wall,
+                    "ref_wall_s_per_sim_h": ref.wall_per_sim_hour(),
+                    "ref_kernel_events_per_s": ref.kernel_events / ref.wall}
+        if ref.mem_sim_us:
+            figures |= {"ref_mem_sim_s": ref.mem_sim_us / 1e6, "ref_peak_traced_mb": ref.mem_peak / 1e6,
+                        "ref_peak_traced_mb_per_sim_min": ref.peak_per_sim_minute() / 1e6}
+    return figures
 
 
 if __name__ == "__main__":

@@ -23,6 +23,7 @@ BENCH = Path(__file__).resolve().parent
 ROOT = BENCH.parent
 sys.path.insert(0, str(BENCH))
 
+import _history  # noqa: E402
 from _table import table, text  # noqa: E402
 from suite_bench import Run, run_pytest  # noqa: E402  the same runner: wall, CPU from os.wait4, outcomes
 
@@ -36,6 +37,7 @@ def main(argv: list[str] | None = None) -> int:
     ap.add_argument("--profile", default=None, help="train profile(s) to run (default: all)")
     ap.add_argument("--repeat", type=int, default=1, help="pairs of runs; the best of each side is kept")
     ap.add_argument("--plain", action="store_true", help="plain text output even if rich is installed")
+    _history.add_argument(ap)
     args = ap.parse_args(argv)
     select = [f"--item={args.item}"] if args.item else []
     select += [f"--profile={args.profile}"] if args.profile else []
@@ -73,6 +75,15 @@ def main(argv: list[str] | None = None) -> int:
     text(f"remote / in process: wall {wall_ratio:.2f}x, total CPU {remote_cpu / best_local.cpu:.2f}x "
          f"(target <= {TARGET:g}x: {'met' if wall_ratio <= TARGET else 'MISSED'}); "
          f"load {load_before:.2f} -> {load_after:.2f}", plain=args.plain)
+    _history.record(args, "remote_bench",
+                    {"scenarios": best_local.collected, "in_process_wall_s": best_local.wall,
+                     "in_process_cpu_s": best_local.cpu, "remote_wall_s": best_remote.wall,
+                     "remote_client_cpu_s": best_remote.cpu, "remote_server_cpu_s": server_cpu / args.repeat,
+                     "ratio_wall": wall_ratio, "ratio_cpu": remote_cpu / best_local.cpu},
+                    load_before=load_before, load_after=load_after,
+                    selection=[*([f"--item={args.item}"] if args.item else []),
+                               *([f"--profile={args.profile}"] if args.profile else []),
+                               *([f"--repeat={args.repeat}"] if args.repeat > 1 else [])])
     return 0
 
 

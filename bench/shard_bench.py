@@ -22,6 +22,10 @@ from types import SimpleNamespace
 
 from pytest_split.algorithms import Algorithms
 
+sys.path.insert(0, str(Path(__file__).resolve().parent))
+
+import _history  # noqa: E402
+
 ROOT = Path(__file__).resolve().parents[1]
 
 
@@ -46,7 +50,9 @@ def main(argv: list[str] | None = None) -> int:
     parser.add_argument("--shards", default="1,2,4,8,16", help="shard counts to compute (comma-separated)")
     parser.add_argument("--durations", default=str(ROOT / ".test_durations"), help="recorded durations")
     parser.add_argument("--no-run", action="store_true", help="skip the serial and two-worker runs")
+    _history.add_argument(parser)
     args = parser.parse_args(argv)
+    load_before = _history.load()
 
     print(f"Python {sys.version.split()[0]}, {os.cpu_count()} cores, load {' '.join(f'{x:.2f}' for x in os.getloadavg())}"
           f" at start; selection --item {args.item}")
@@ -55,9 +61,11 @@ def main(argv: list[str] | None = None) -> int:
     known = sum(1 for n in nodeids if n in durations)
     print(f"{len(nodeids)} scenarios, {known} with a recorded duration in {Path(args.durations).name}")
     floor, _ = _pytest("-p", "no:xdist", "--item", args.item, "-k", "no_scenario_has_this_name")
+    figures: dict[str, float] = {"scenarios": len(nodeids), "with_duration": known, "start_up_s": floor}
     if not args.no_run:
         serial, _ = _pytest("-p", "no:xdist", f"--item={args.item}")
         two, _ = _pytest("-n", "2", f"--item={args.item}")
+        figures |= {"serial_wall_s": serial, "two_workers_wall_s": two}
         print(f"measured: serial {serial:.1f} s, two workers {two:.1f} s (start-up and collection {floor:.1f} s)")
     items = [SimpleNamespace(nodeid=n) for n in nodeids]
     print(f"{'shards':>6}  {'largest group s':>15}  {'shard wall s':>12}  (least_duration split of the recorded durations)")
@@ -65,7 +73,10 @@ def main(argv: list[str] | None = None) -> int:
         groups = Algorithms.least_duration.value(n, items, durations)
         largest = max(g.duration for g in groups)
         print(f"{n:>6}  {largest:>15.1f}  {largest + floor:>12.1f}")
+        figures[f"shards_{n}_wall_s"] = largest + floor
     print(f"load at end: {' '.join(f'{x:.2f}' for x in os.getloadavg())}")
+    _history.record(args, "shard_bench", figures, load_before=load_before, load_after=_history.load(),
+                    selection=None if argv is None else _history.measured_options(argv))
     return 0
 
 

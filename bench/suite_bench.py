@@ -27,25 +27,9 @@ With --profile-run, a third pass of the conformance run under cProfile, summaris
 charged to their callers), the hottest modules of the project, and the top functions by self and by
 cumulative time.
 
-Measured on this machine (2-core VM, Python 3.11.7, pytest 9.2.0, pytest-bdd 9.0.1, full suite: 528
-scenarios, 5 035 steps, all passed; 535 and 5 122 since issue 15):
-  2026-11-25 17:45, load 1.5 -> 1.2 (metronomes and a 120 ms period, the monitor watch as one driver call,
-    traces out of the GC's way): conformance 59.5 s wall (59.5 s CPU; collection 1.1 s), floor 1.66 s -> 36x;
-    40.4 s (68 %) inside Kernel.run; the rest 19.1 s. Peak RSS 786 MB (a ten-minute scenario's trace).
-  2026-11-25 04:40, load 1.0, side by side with 760111a (issue 14, second session: bulk advance in plain
-    advances of every profile, replayed soak samples, cheaper frames): conformance 58.9 s wall (58.9 s CPU;
-    collection 1.4 s), floor 1.50 s -> 39x; 42.1 s (72 %) inside Kernel.run; the rest 16.8 s. 760111a in the
-    same sitting: 80.4 s, 54x, 65.2 s inside Kernel.run (the machine was slower than the day before).
-  2026-11-24 23:23, load 0.2 -> 0.7 (issue 14: snapshots, step index, hot paths): conformance 65.1 s wall
-    (65.1 s CPU; collection 1.1 s), floor 1.22 s -> 53x (the floor fell too: it shares the step index and
-    no longer loads hypothesis's pytest plugin; against the old floor, 36x). 52.8 s (81 %) inside Kernel.run;
-    the rest, 12.3 s, is 10x the floor. Peak RSS 303 MB (the snapshot cache) vs 58 MB.
-  2026-11-24 21:43, load 0.2 -> 0.8 (before issue 14): conformance 88.2 s, floor 1.80 s -> 49x; 71.8 s inside
-    Kernel.run; peak RSS 210 MB.
-  2026-11-23 (issue 9): 150.4 s vs 2.9 s, 51x; what-if stand-ins for the step index and for no attachments
-    without --alluredir were measured then (both done since).
-  --profile-run: the simulation dominates (sut/ ~75 % of the self time); the 10 slowest scenarios (the 72 h
-    soaks, the rated withstand tests, mileage ramps) are a third of the test phase.
+Its figures are not kept here: with --record the run appends its row to bench/history.jsonl (bench/_history.py),
+and `make performance` shows the latest against issue 33's targets, what the gap is made of, and the history
+plotted (docs/performance.md).
 
 In-process vs remote: bench/remote_bench.py (or --sut tcp://HOST:PORT here, against a running server).
 Options --item, -k, --profile and anything after `--` go to both runs; --sut and --conf-arg to the
@@ -72,6 +56,7 @@ BENCH = Path(__file__).resolve().parent
 ROOT = BENCH.parent
 sys.path.insert(0, str(BENCH))
 
+import _history  # noqa: E402
 from _table import table, text  # noqa: E402
 
 TARGET_FLOOR = 1.5      # issue 9: the conformance run <= 1.5x the floor
@@ -532,6 +517,7 @@ def main(argv: list[str] | None = None) -> int:
     ap.add_argument("--logdir", type=Path, default=None,
                     help="keep the pytest logs (with --durations=10) here (default: a temporary folder)")
     ap.add_argument("--plain", action="store_true", help="plain text output even if rich is installed")
+    _history.add_argument(ap)
     args = ap.parse_args(argv)
     args.pytest_args = rest
     if args.repeat < 1:
@@ -581,7 +567,30 @@ def main(argv: list[str] | None = None) -> int:
         text(f"load at end: {' '.join(f'{x:.2f}' for x in os.getloadavg())} (1/5/15 min)", plain=args.plain)
         if args.json:
             args.json.write_text(json.dumps(result, indent=1, default=str), encoding="utf-8")
+        selection = [*(f"--item={i}" for i in args.item), *(["-k", args.k] if args.k else []),
+                     *(f"--profile={p}" for p in args.profile), *(["--sut", args.sut] if args.sut else []),
+                     *args.conf_arg, *(["--repeat", str(args.repeat)] if args.repeat > 1 else []),
+                     *(["--"] + args.pytest_args if args.pytest_args else [])]
+        _history.record(args, "suite_bench", history_figures(runs), load_before=runs[0].load[0],
+                        load_after=runs[-1].load[1], selection=selection)
     return 0
+
+
+def history_figures(runs: list[Run]) -> dict[str, float]:
+    """The row bench/history.jsonl keeps of a run: what docs/performance.md shows and plots."""
+    conf, floor = runs[0], runs[1]
+    oc = conf.outcomes()
+    kernel = conf.data.get("kernel_run_s")
+    figures = {"scenarios": conf.collected, "passed": oc.get("passed", 0), "failed": oc.get("failed", 0),
+               "skipped": oc.get("skipped", 0), "steps": conf.steps,
+               "conformance_wall_s": conf.wall, "conformance_cpu_s": conf.cpu, "conformance_collect_s": conf.collect_s,
+               "floor_wall_s": floor.wall, "floor_cpu_s": floor.cpu, "floor_collect_s": floor.collect_s,
+               "ratio_wall": conf.wall / floor.wall, "ratio_cpu": conf.cpu / max(floor.cpu, 1e-9),
+               "conformance_rss_mb": conf.maxrss_kb / 1024, "floor_rss_mb": floor.maxrss_kb / 1024}
+    if kernel:
+        figures |= {"kernel_run_s": kernel, "rest_s": conf.wall - kernel,
+                    "rest_over_floor": (conf.wall - kernel) / floor.wall}
+    return figures
 
 
 if __name__ == "__main__":
