@@ -22,10 +22,14 @@ Phases:
    (in_variant_only_branch) and those in other code the switches leave unrun (never_run: an operand they
    decide, a function only a variant calls); how many were passed over is printed and kept.
 3. `mutmut run <sample>`; outline/mutation_plugin.py notes which scenario failed for each mutant.
-4. The table: file:line, the change, killed by which scenario or survived; a kill rate per part
-   (killed + timed out, over everything sampled; "no tests" means no scenario reaches the function, which
-   counts as a survivor). Printed, and written to reports/mutation.md and reports/mutation.json, which
-   `make report` turns into an entry of the Allure report (`--to-allure`).
+4. The table: file:line, the change, killed by which scenario or survived; three kill rates per part
+   (killed + timed out; "no tests" means no scenario reaches the function, which counts as a survivor):
+   of everything drawn (the mutants passed over while drawing count as not killed: they were not run),
+   after the rules (without those a rule passes over, while drawing or since), and after proven
+   equivalents (also without those a mark names that the differential checker confirmed: make
+   equivalence, reports/equivalence.json; a mark without that evidence leaves its mutant a survivor).
+   Printed, and written to reports/mutation.md and reports/mutation.json, which `make report` turns into
+   an entry of the Allure report (`--to-allure`).
 """
 from __future__ import annotations
 
@@ -46,6 +50,8 @@ from pathlib import Path
 
 # What a step module is made of lives with the plugin that notes it (one way: mutation -> scenario_inputs).
 from .scenario_inputs import sha as _sha, step_definitions
+# A mark counts as equivalent in the last rate only with the checker's evidence (reports/equivalence.json).
+from .sequences import equivalence
 
 ROOT = Path(__file__).resolve().parents[1]
 MUTANTS_DIR = ROOT / "mutants"
@@ -53,7 +59,8 @@ EQUIVALENTS = ROOT / "sut" / "reference" / "EQUIVALENT_MUTANTS.txt"
 KILLS = MUTANTS_DIR / "kills.tsv"
 NAME = re.compile(r"^(?P<module>[\w.]+?)\.(?P<function>x[ǁ_].*)__mutmut_(?P<n>\d+)$")
 DETECTED = {"killed", "timeout", "segfault"}
-TARGET = 0.90               # issue 15: sampled kill rate of the references
+TARGET = 0.90               # issue 15, issue 31: the kill rate after proven equivalents, per reference
+RATES = ("of everything drawn", "after the rules", "after proven equivalents")
 # The driver interface's answers to a stimulus the test itself got wrong (an unknown name, a value out of
 # range, a call out of order: sut/errors.py). They are the harness's contract, checked by the project's own
 # tests (tests/test_bad_input.py), not train behaviour the articles specify, and a conforming
@@ -738,11 +745,12 @@ def rule_reason(path: str, line: int, before: str, after: str) -> str | None:
     return never_run_reason(path, line, before, after)
 
 
-def sample(names: list[str], count: int, seed: int, left_out: dict[str, int] | None = None) -> list[Mutant]:
+def sample(names: list[str], count: int, seed: int, left_out: dict[str, int] | None = None,
+           passed: list[tuple[Mutant, str]] | None = None) -> list[Mutant]:
     """`count` mutants, the same share from each part, none of those the module's note lists as passed over
     (marked equivalent, usage errors, self-description, unread events and fields, faulty-variant branches,
     code the switches leave unrun);
-    seeded. `left_out` counts the ones passed over, by reason."""
+    seeded. `left_out` counts the ones passed over, by reason; `passed` gets each of them with its reason."""
     rng = random.Random(seed)
     left_out = {} if left_out is None else left_out
     marked = set(equivalents())
@@ -762,20 +770,28 @@ def sample(names: list[str], count: int, seed: int, left_out: dict[str, int] | N
             if taken == want:
                 break
             mutant = describe(name)
-            function = NAME.match(name)["function"]
-            method = function.rsplit("ǁ", 1)[-1].removeprefix("x_")
-            backend_only = BACKEND_PASSED_OVER.get(method) if mutant.path.endswith("/backend.py") else None
-            if method == SELF_DESCRIPTION or backend_only:
-                reason = backend_only or "self-description"
+            reason = passed_over(mutant, marked)
+            if reason is not None:
                 left_out[reason] = left_out.get(reason, 0) + 1
-            elif is_marked(mutant, marked):
-                left_out["marked equivalent"] = left_out.get("marked equivalent", 0) + 1
-            elif (rule := rule_reason(mutant.path, mutant.line, mutant.before, mutant.after)) is not None:
-                left_out[rule] = left_out.get(rule, 0) + 1
+                if passed is not None:
+                    passed.append((mutant, reason))
             else:
                 chosen.append(mutant)
                 taken += 1
     return chosen
+
+
+def passed_over(mutant: Mutant, marked: set[tuple[str, str, str]]) -> str | None:
+    """Why the draw passes a mutant over (the module's note), or None: a backend's self-description, a mark
+    (EQUIVALENT_MUTANTS.txt), or a rule (rule_reason)."""
+    function = NAME.match(mutant.name)["function"] if NAME.match(mutant.name) else ""
+    method = function.rsplit("ǁ", 1)[-1].removeprefix("x_")
+    backend_only = BACKEND_PASSED_OVER.get(method) if mutant.path.endswith("/backend.py") else None
+    if method == SELF_DESCRIPTION or backend_only:
+        return backend_only or "self-description"
+    if is_marked(mutant, marked):
+        return "marked equivalent"
+    return rule_reason(mutant.path, mutant.line, mutant.before, mutant.after)
 
 
 def _codes() -> dict[str, int | None]:
@@ -868,7 +884,46 @@ def rates(mutants: list[Mutant], reviewed: bool = False,
     return out
 
 
-def table(mutants: list[Mutant], seed: int, left_out: dict[str, int] | None = None) -> str:
+def proven(mutant: Mutant, report: dict) -> bool:
+    """Whether the differential checker confirmed the mark that names the mutant (by file, or by function)."""
+    return any(equivalence.confirmed(report, equivalence.Mark(where, mutant.before, mutant.after, ""))
+               for where in (mutant.path, f"{mutant.path}::{function_of(mutant.name)}"))
+
+
+def three_rates(mutants: list[Mutant], passed: list[tuple[Mutant, str]] | None = None,
+                why: dict[str, str | None] | None = None,
+                report: dict | None = None) -> dict[str, list[tuple[int, int]]]:
+    """Per part and over all, (detected, counted) for each of RATES: of everything drawn (`passed`: the
+    mutants passed over while drawing, with the reason, counted as not killed); without what a rule passes
+    over (while drawing, or a survivor under a rule made since: `why`, explanations()); and also without
+    the mutants of marks the checker confirmed (`report`: reports/equivalence.json). A survivor marked
+    equivalent without that evidence stays a survivor."""
+    why = explanations(mutants) if why is None else why
+    report = equivalence.load_report() if report is None else report
+
+    def kind(mutant: Mutant, reason: str | None) -> str | None:
+        if not reason:
+            return None
+        if reason != "marked equivalent":
+            return "rule"
+        return "proven" if proven(mutant, report) else None
+
+    rows = [(m.part, m.status in DETECTED, kind(m, why.get(m.name))) for m in mutants if m.status != "not checked"]
+    rows += [(m.part, False, kind(m, reason)) for m, reason in passed or []]
+    out: dict[str, list[tuple[int, int]]] = {}
+    for part in sorted({part for part, _, _ in rows}) + ["all"]:
+        mine = [(done, k) for p, done, k in rows if part in ("all", p)]
+        out[part] = [(sum(done for done, _ in kept), len(kept)) for kept in
+                     (mine, [r for r in mine if r[1] != "rule"], [r for r in mine if r[1] is None])]
+    return out
+
+
+def _percent(done: int, total: int) -> str:
+    return f"{done}/{total} = {100 * done / max(total, 1):.1f} %"
+
+
+def table(mutants: list[Mutant], seed: int, left_out: dict[str, int] | None = None,
+          passed: list[tuple[Mutant, str]] | None = None) -> str:
     lines = [f"# Mutation testing of the references ({len(mutants)} mutants, seed {seed})", ""]
     if left_out:
         lines += ["Passed over while drawing: " + ", ".join(f"{n} {why}" for why, n in sorted(left_out.items()))
@@ -877,22 +932,30 @@ def table(mutants: list[Mutant], seed: int, left_out: dict[str, int] | None = No
     if unchecked:
         lines += [f"{unchecked} sampled mutants were not checked (the run was stopped before them); the rates "
                   "are over the checked ones.", ""]
-    lines += ["Raw: over every mutant drawn. Equivalents left out: without the survivors marked equivalent since "
-              "the draw or under a rule made after it (each named below); a survivor that is a real gap counts "
-              "as one even once a new scenario closes it.", "",
-              "| part | kill rate, raw | kill rate, equivalents left out |", "| --- | --- | --- |"]
+    lines += ["Of everything drawn: the mutants passed over while drawing count as not killed (they were not run). "
+              "After the rules: without what a rule passes over, while drawing or a survivor under a rule made "
+              "since (named below). After proven equivalents: also without the mutants of marks the differential "
+              "checker confirmed (make equivalence, reports/equivalence.json); a mark without that evidence "
+              "leaves its mutant a survivor. A survivor that is a real gap counts as one even once a new "
+              "scenario closes it.", "",
+              f"| part | {' | '.join(RATES)} |", "| --- | --- | --- | --- |"]
     why = explanations(mutants)
-    reviewed = rates(mutants, reviewed=True, why=why)
-    for part, (done, total) in rates(mutants).items():
-        kept_done, kept_total = reviewed[part]
-        lines.append(f"| {part} | {done}/{total} = {100 * done / max(total, 1):.1f} % | "
-                     f"{kept_done}/{kept_total} = {100 * kept_done / max(kept_total, 1):.1f} % |")
+    report = equivalence.load_report()
+    for part, values in three_rates(mutants, passed, why, report).items():
+        lines.append(f"| {part} | " + " | ".join(_percent(*v) for v in values) + " |")
     lines += ["", "| file:line | change | result | killed by |", "| --- | --- | --- | --- |"]
     for m in sorted(mutants, key=lambda m: (m.path, m.line, m.name)):
         change = f"`{m.before}` -> `{m.after}`".replace("|", "\\|")
         equivalent = f"equivalent: {why[m.name]}" if why[m.name] else ""
+        if why[m.name] == "marked equivalent" and not proven(m, report):
+            equivalent = "marked equivalent, not confirmed by make equivalence: a survivor"
         lines.append(f"| {m.path}:{m.line} | {change} | {m.status} | {m.killed_by or equivalent} |")
     return "\n".join(lines) + "\n"
+
+
+def _passed_over(data: dict) -> list[tuple[Mutant, str]]:
+    """The mutants a kept run passed over while drawing, with the reason (none in a run before issue 31)."""
+    return [(Mutant(**{k: v for k, v in m.items() if k != "reason"}), m["reason"]) for m in data.get("passed_over", [])]
 
 
 def to_allure(results: Path, kept: Path) -> Path | None:
@@ -902,21 +965,24 @@ def to_allure(results: Path, kept: Path) -> Path | None:
         return None
     data = json.loads(kept.read_text(encoding="utf-8"))
     mutants = [Mutant(**m) for m in data["mutants"]]
-    raw_done, raw_total = rates(mutants)["all"]
-    reviewed = rates(mutants, reviewed=True)
-    done, total = reviewed["all"]
+    passed_over = _passed_over(data)
+    three = three_rates(mutants, passed_over)
+    (drawn_done, drawn_total), (rules_done, rules_total), (done, total) = three["all"]
     attachment = f"{uuid.uuid4()}-attachment.md"
-    (results / attachment).write_text(table(mutants, data["seed"], data.get("left_out")), encoding="utf-8")
+    (results / attachment).write_text(table(mutants, data["seed"], data.get("left_out"), passed_over),
+                                      encoding="utf-8")
     now = int(time.time() * 1000)
-    per_part = ", ".join(f"{part} {d}/{t}" for part, (d, t) in reviewed.items() if part != "all")
-    passed = all(d >= TARGET * t for d, t in reviewed.values())
+    per_part = ", ".join(f"{part} {v[2][0]}/{v[2][1]}" for part, v in three.items() if part != "all")
+    passed = all(v[2][0] >= TARGET * v[2][1] for v in three.values())
     result = {
         "uuid": str(uuid.uuid4()), "historyId": "mutation-testing-of-the-references",
-        "name": f"Mutation testing of the references: {100 * done / max(total, 1):.1f} % killed, equivalents left "
-                f"out ({100 * raw_done / max(raw_total, 1):.1f} % raw; target 90 % per reference)",
+        "name": f"Mutation testing of the references: {100 * done / max(total, 1):.1f} % killed after proven "
+                f"equivalents ({100 * drawn_done / max(drawn_total, 1):.1f} % of everything drawn, "
+                f"{100 * rules_done / max(rules_total, 1):.1f} % after the rules; target 90 % per reference)",
         "fullName": "make mutate", "status": "passed" if passed else "failed",
-        "statusDetails": {"message": f"{done} of {total} sampled mutants rejected, equivalents left out "
-                                     f"({raw_done} of {raw_total} drawn; seed {data['seed']}): {per_part}"},
+        "statusDetails": {"message": f"{done} of {total} mutants rejected after proven equivalents; "
+                                     f"{rules_done} of {rules_total} after the rules; {drawn_done} of "
+                                     f"{drawn_total} of everything drawn (seed {data['seed']}): {per_part}"},
         "stage": "finished", "start": now, "stop": now,
         "labels": [{"name": "epic", "value": "Mutation testing"}, {"name": "suite", "value": "make mutate"},
                    {"name": "tag", "value": "mutation"}],           # outline.summary: not a scenario
@@ -947,7 +1013,7 @@ def main(argv: list[str] | None = None) -> int:
             print(f"mutation: no make mutate run to review ({kept})")
             return 1
         data = json.loads(kept.read_text(encoding="utf-8"))
-        text = table([Mutant(**m) for m in data["mutants"]], data["seed"], data.get("left_out"))
+        text = table([Mutant(**m) for m in data["mutants"]], data["seed"], data.get("left_out"), _passed_over(data))
         (args.out / "mutation.md").write_text(text, encoding="utf-8")
         print(text)
         return 0
@@ -959,17 +1025,20 @@ def main(argv: list[str] | None = None) -> int:
     generate()
     names = all_names()
     left_out: dict[str, int] = {}
-    mutants = sample(names, args.mutants, args.seed, left_out)
+    passed: list[tuple[Mutant, str]] = []
+    mutants = sample(names, args.mutants, args.seed, left_out, passed)
     passed_over = ", ".join(f"{n} {why}" for why, n in sorted(left_out.items())) or "none"
     print(f"mutmut: {len(names)} mutants of the references; testing {len(mutants)} (seed {args.seed}; "
           f"passed over while drawing: {passed_over}) ...", flush=True)
     run(mutants, args.jobs, resume=args.resume)
-    text = table(mutants, args.seed, left_out)
+    text = table(mutants, args.seed, left_out, passed)
     args.out.mkdir(parents=True, exist_ok=True)
     (args.out / "mutation.md").write_text(text, encoding="utf-8")
     (args.out / "mutation.json").write_text(json.dumps(
         {"seed": args.seed, "left_out": left_out, "mutants": [asdict(m) for m in mutants],
-         "rates": {p: list(r) for p, r in rates(mutants).items()}}, indent=1), encoding="utf-8")
+         "passed_over": [dict(asdict(m), reason=reason) for m, reason in passed],
+         "rates": {p: dict(zip(RATES, v)) for p, v in three_rates(mutants, passed).items()}}, indent=1),
+        encoding="utf-8")
     print(text)
     print(f"mutation: {args.out / 'mutation.md'}")
     return 0

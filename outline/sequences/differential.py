@@ -8,6 +8,7 @@ from __future__ import annotations
 
 import argparse
 import sys
+import time
 from dataclasses import dataclass
 from typing import Any, Callable
 
@@ -38,10 +39,12 @@ class Difference:
                 f"shortest sequence found (> marks the last stimulus before the difference):\n{shown}")
 
 
-def _looks(make: Factory, profile: str, sequence: list[Action]):
+def _looks(make: Factory, profile: str, sequence: list[Action], shared: dict[str, Any]):
     driver = make()
     driver.power_on()
-    observer = Observer(profile, driver)
+    # The second SUT is looked at under the first one's names: which names a SUT lists is no behaviour.
+    observer = Observer(profile, driver, shared.get("vehicle"))
+    shared.setdefault("vehicle", observer.vehicle)
     yield observer.look()
     for action in sequence:
         try:
@@ -53,7 +56,9 @@ def _looks(make: Factory, profile: str, sequence: list[Action]):
 
 
 def first_difference(make_a: Factory, make_b: Factory, profile: str, sequence: list[Action]) -> Difference | None:
-    for step, (a, b) in enumerate(zip(_looks(make_a, profile, sequence), _looks(make_b, profile, sequence))):
+    shared: dict[str, Any] = {}
+    for step, (a, b) in enumerate(zip(_looks(make_a, profile, sequence, shared),
+                                      _looks(make_b, profile, sequence, shared))):
         if a != b:
             what = next((k for k in sorted(set(a) | set(b)) if a.get(k) != b.get(k)), "?")
             av, bv = a.get(what), b.get(what)
@@ -69,24 +74,40 @@ def opener(sut: str, profile: str) -> Factory:
     return lambda: cls.open(profile)
 
 
+Sequences = Callable[[str, TrainDriver, int], st.SearchStrategy[list[Action]]]
+
+
 def search(make_a: Factory, make_b: Factory, profile: str, *, examples: int = 30, max_actions: int = 8,
-           seed: int = 0) -> Difference | None:
+           seed: int = 0, shrink_s: float | None = None, sequences: Sequences | None = None) -> Difference | None:
     """The shortest difference hypothesis finds in `examples` sequences of up to `max_actions` stimuli, or
-    None. Seeded and without a database: the same arguments give the same answer."""
+    None. Seeded and without a database: the same arguments give the same answer. `shrink_s`: how long the
+    shrinking may run (it tries hundreds of sequences, ~1 s each on the metro), after which the shortest one
+    found so far is the answer; unbounded, the answer does not depend on the machine's speed. `sequences`:
+    another way to draw them from (profile, a powered-up driver, max_actions) than a list of stimuli."""
     probe = make_a()
     probe.power_on()
-    sequences = st.lists(actions(profile, probe), max_size=max_actions)
+    drawn = sequences(profile, probe, max_actions) if sequences is not None else \
+        st.lists(actions(profile, probe), max_size=max_actions)
     found: list[Difference] = []
+    differing: dict[str, Difference] = {}          # by repr of the sequence: hypothesis replays the shortest
+    first_found: list[float] = []
 
     @hypothesis_seed(seed)
     @settings(max_examples=examples, deadline=None, database=None, derandomize=False,
               suppress_health_check=list(HealthCheck), phases=[Phase.generate, Phase.shrink])
-    @given(sequences)
+    @given(drawn)
     def compare(sequence: list[Action]) -> None:
-        difference = first_difference(make_a, make_b, profile, sequence)
+        key = repr(sequence)
+        difference = differing.get(key)
+        if difference is None:
+            if first_found and shrink_s is not None and time.monotonic() - first_found[0] > shrink_s:
+                return          # the shrinking time is spent: only the sequences already seen to differ fail
+            difference = first_difference(make_a, make_b, profile, sequence)
         if difference is not None:
+            first_found[:] = first_found or [time.monotonic()]
+            differing[key] = difference
             found.append(difference)
-            raise AssertionError(str(difference))
+            raise AssertionError(str(difference))       # one place: hypothesis tells failures apart by it
 
     try:
         compare()

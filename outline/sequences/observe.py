@@ -1,9 +1,12 @@
 """What can be seen of a SUT at its driver interface after a stimulus, as plain data two runs can compare:
 every output, reading and lamp the contract names, each cab's monitor, the records, every ring node's
-counters, rated_limits(), and the trace events of the kinds the contract lists since the last look. An
-answer that is an error is seen as its error's class: two SUTs that refuse alike do not differ."""
+counters, rated_limits(), and the trace events of the kinds the contract lists since the last look: their
+time, source and the fields the contract lists for the kind (a field it does not list is the implementer's
+own: no conforming SUT owes it, so two SUTs do not differ by it). An answer that is an error is seen as its
+error's class: two SUTs that refuse alike do not differ."""
 from __future__ import annotations
 
+import fnmatch
 import math
 from typing import Any, Callable
 
@@ -38,11 +41,15 @@ class Observer:
     """Looks at one driver of `profile`; `look()` answers what it shows now and the contract's trace events
     since the previous look."""
 
-    def __init__(self, profile: str, driver: TrainDriver) -> None:
+    def __init__(self, profile: str, driver: TrainDriver, vehicle: dict[str, list[str]] | None = None) -> None:
         self.driver = driver
         contract = load_contract(profile)
         has = set(contract.methods).__contains__
-        vehicle = driver.vehicle_names() if has("output") or has("reading") else {}
+        # `vehicle`: the names to look at, given where two SUTs are compared (the first one's): a SUT listing
+        # its names otherwise (vehicle_names, which no contract lists) must not change what is looked at.
+        if vehicle is None:
+            vehicle = driver.vehicle_names() if has("output") or has("reading") else {}
+        self.vehicle = vehicle
         cars = [f"car{n}" for n in range(1, domains.CARS.get(profile, 0) + 1)]
         self.probes: dict[str, Callable[[], Any]] = {}
         for kind, method in (("outputs", "output"), ("readings", "reading")):
@@ -63,14 +70,22 @@ class Observer:
             self.probes[f"counters {node}"] = lambda n=node: driver.counters(n)
         if has("rated_limits"):
             self.probes["rated_limits"] = driver.rated_limits
-        self.kinds = set(contract.events)
+        self.contract_kinds = contract.events
+        self.fields: dict[str, frozenset[str] | None] = {}     # by kind seen: the fields compared, None: not listed
         self.seen = 0
+
+    def _listed(self, kind: str) -> frozenset[str] | None:
+        if kind not in self.fields:
+            # a kind the contract lists by itself or under a pattern (`loop.*`): the fields of every entry for it
+            entries = [e for name, e in self.contract_kinds.items() if name == kind or fnmatch.fnmatchcase(kind, name)]
+            self.fields[kind] = frozenset(f for e in entries for f in e.fields) if entries else None
+        return self.fields[kind]
 
     def look(self) -> dict[str, Any]:
         shown = {name: _ask(probe) for name, probe in self.probes.items()}
         shown["now us"] = self.driver.now_us
         events = self.driver.trace[self.seen:]
         self.seen += len(events)
-        shown["events"] = [(ev.t, ev.source, ev.kind, _plain(dict(ev.fields)))
-                           for ev in events if ev.kind in self.kinds]
+        shown["events"] = [(ev.t, ev.source, ev.kind, _plain({k: v for k, v in ev.fields.items() if k in listed}))
+                           for ev in events if (listed := self._listed(ev.kind)) is not None]
         return shown

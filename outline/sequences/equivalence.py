@@ -1,0 +1,632 @@
+"""Equivalent mutants only with machine evidence (issue 31): `make equivalence`
+(`python -m outline.sequences.equivalence`).
+
+A mutant left out of `make mutate` as equivalent (a mark in sut/reference/EQUIVALENT_MUTANTS.txt) must be
+one that no implementation's behaviour at the driver interface can tell apart from the reference. Reading
+the code is how the marks were made, and it was wrong often enough (issue 31: 24 of 154 marks changed
+behaviour a test can see). So each mark is built and driven side by side with the reference by the
+differential checker (differential.py: hypothesis stimulus sequences, every observable compared after
+every stimulus) in a fixed budget (BUDGET below): no difference found is a mark confirmed; a difference is
+the mark overturned, recorded with the shortest sequence that shows it, the observable, and both values.
+
+What a mark names: the mutants of mutmut (3.8, the `mutate` extra) that outline/mutation.py leaves out by
+it, found the way mutmut writes them (`create_mutations`, which parses and mutates a file without running
+anything): each is built exactly as mutmut would. Without mutmut, the mark's line is replaced in every
+function where the file says it (or in the function a `path::Class.method` mark names). Each mutant is the
+reference package loaded again under the same names with one module's source changed, beside the
+unchanged reference in the same process (sys.modules swapped while it is imported: a copy's modules only
+see each other).
+
+Which profiles: a train's own modules by the profiles that train serves (crh2 -> crh2; metro -> metro-tcn;
+the ATP rig's onboard.py -> atp and atp-crh2, vdx.py -> vdx and atp-crh2, its backend and config -> all
+three); the shared kernel and bulk by every profile but atp-crh2 (SHARED_PROFILES). A mark stops at its
+first difference.
+
+The evidence, reports/equivalence.json (and a short .md), is keyed by the mark's mutant (path, original
+line, mutated line) and the budget: a mark whose text changed, or a budget changed since, is not yet
+checked (tests/test_equivalence.py fails until it is). By default only such marks run; `--all` runs every
+mark again. The rule-based exclusions of outline/mutation.py are sampled through the same checker by
+outline/sequences/rule_check.py, into the same report.
+"""
+from __future__ import annotations
+
+import argparse
+import datetime
+import difflib
+import hashlib
+import importlib
+import importlib.abc
+import importlib.util
+import json
+import multiprocessing
+import sys
+import time
+from dataclasses import dataclass, field
+from pathlib import Path
+from typing import Any, Callable, Iterator
+
+ROOT = Path(__file__).resolve().parents[2]
+EQUIVALENTS = ROOT / "sut" / "reference" / "EQUIVALENT_MUTANTS.txt"
+OVERTURNED = ROOT / "sut" / "reference" / "OVERTURNED_MUTANTS.txt"
+REPORT = ROOT / "reports" / "equivalence.json"
+PACKAGE = "sut.reference"
+PROFILES = ("crh2", "metro-tcn", "atp", "vdx", "atp-crh2")
+
+# The budget, per profile: a list of (composition, how sequences are drawn, how many), each sequence up to
+# ACTIONS stimuli, each followed by time and watched (_watched, below), and SHRINK_S seconds of shrinking once
+# a difference is found (the shortest sequence found by then is the answer). Two ways to draw: "sentences",
+# the step library's own stimuli as the random-sequence invariants draw them (sentences.py: openings at rest
+# or driving, swarms of a few kinds; for the profiles it has), and "paced", every stimulus the contract lists
+# (stimuli.py; any composition: the names come from the SUT). Measured on this machine (2026-11-26, CPU
+# time per sequence, the reference against itself): crh2 ~0.9 s as sentences, ~0.5 s paced (a coupled train
+# ~0.9 s; every ring node's counters are looked at after every step), metro ~0.5 s as sentences, ~1.1 s
+# paced (its buses poll every few ms, every frame an event), the ATP and VDX rig ~0.01-0.02 s, the fitted
+# ATP ~0.2 s. The crh2 budget also tries a coupled train and the shortest and longest set (configure sizes
+# its range check accepts); the fitted ATP drives an 8-car CRH2 set. A mutant then costs ~15 s of CPU in
+# crh2 or the metro, ~7-14 s in the ATP rig, ~40 s in the shared kernel and bulk: the 207 marks of
+# 2026-11-26, ~60 CPU-minutes, ~30 min on two free cores (`make equivalence`, JOBS=2).
+ACTIONS = 8
+SHRINK_S = 20.0
+SEED = 0
+BUDGET: dict[str, list[tuple[dict[str, int], str, int]]] = {
+    "crh2": [({}, "sentences", 10), ({}, "paced", 6), ({"sets": 2, "cars_per_set": 8}, "paced", 2),
+             ({"cars_per_set": 2}, "paced", 2), ({"cars_per_set": 16}, "paced", 2)],
+    "metro-tcn": [({}, "sentences", 24), ({}, "paced", 2)],
+    "atp": [({}, "sentences", 300), ({}, "paced", 100)],
+    "vdx": [({}, "sentences", 300), ({}, "paced", 100)],
+    "atp-crh2": [({"cars_per_set": 8}, "paced", 16)],
+}
+# The shared kernel and bulk run every train: each profile but the fitted ATP, which is the crh2 train and
+# the ATP rig on one clock.
+SHARED_PROFILES = ("crh2", "metro-tcn", "atp", "vdx")
+
+
+def budget_id() -> str:
+    """What a record was checked in: the budget, the seed and the sequence length. A record of another is
+    not evidence for this one."""
+    return hashlib.sha256(json.dumps([BUDGET, ACTIONS, SEED], sort_keys=True).encode()).hexdigest()[:12]
+
+
+def profiles_of(path: str) -> tuple[str, ...]:
+    parts = Path(path).parts
+    part = parts[2] if len(parts) > 3 else "shared"
+    if part == "crh2":
+        return ("crh2",)
+    if part == "metro":
+        return ("metro-tcn",)
+    if part == "atp":
+        return {"onboard.py": ("atp", "atp-crh2"), "vdx.py": ("vdx", "atp-crh2")}.get(
+            parts[-1], ("atp", "vdx", "atp-crh2"))
+    return SHARED_PROFILES
+
+
+# -- marks -------------------------------------------------------------------------------------------------
+
+@dataclass(frozen=True)
+class Mark:
+    where: str               # path, or path::Class.method
+    before: str
+    after: str
+    reason: str
+
+    @property
+    def path(self) -> str:
+        return self.where.split("::", 1)[0]
+
+    @property
+    def function(self) -> str | None:
+        return self.where.split("::", 1)[1] if "::" in self.where else None
+
+    @property
+    def key(self) -> str:
+        """The mark's mutant, as its text says it: another text is another mark."""
+        return hashlib.sha256(f"{self.where} | {self.before} | {self.after}".encode()).hexdigest()[:16]
+
+    def line(self) -> str:
+        return f"{self.where} | {self.before} | {self.after} | {self.reason}"
+
+
+def read_marks(path: Path | None = None) -> list[Mark]:
+    path = path or EQUIVALENTS
+    marks = []
+    for raw in path.read_text(encoding="utf-8").splitlines() if path.exists() else []:
+        if raw.strip() and not raw.startswith("#"):
+            fields = [f.strip() for f in raw.split(" | ")]
+            if len(fields) < 4:
+                raise ValueError(f"{path}: want 'path | before | after | reason', got {raw!r}")
+            marks.append(Mark(fields[0], fields[1], fields[2], " | ".join(fields[3:])))
+    return marks
+
+
+# -- mutants -----------------------------------------------------------------------------------------------
+
+@dataclass
+class Site:
+    """One mutant: where, what it changes, and how the module's source reads with the change (the original
+    with `text` in place of its characters start..end: thousands of mutants share one original)."""
+    path: str
+    line: int
+    function: str            # as Python names it: Relay.__init__, _one_check_encode
+    before: str
+    after: str
+    original: str = field(repr=False, default="")
+    start: int = 0
+    end: int = 0
+    text: str = field(repr=False, default="")
+    name: str = ""           # mutmut's name, where it came from mutmut
+
+    @property
+    def source(self) -> str:
+        return self.original[:self.start] + self.text + self.original[self.end:]
+
+
+def _functions(tree: Any) -> Iterator[tuple[str, Any]]:
+    """The functions mutmut mutates: each top-level function and each method of a top-level class."""
+    import ast
+    for node in tree.body:
+        if isinstance(node, (ast.FunctionDef, ast.AsyncFunctionDef)):
+            yield node.name, node
+        elif isinstance(node, ast.ClassDef):
+            for child in node.body:
+                if isinstance(child, (ast.FunctionDef, ast.AsyncFunctionDef)):
+                    yield f"{node.name}.{child.name}", child
+
+
+def replaced_sites(mark: Mark, root: Path = ROOT) -> list[Site]:
+    """The mark's mutants by its line replaced: every line inside a function (of the one it names) that
+    reads the original line, with the mutated line in its place."""
+    import ast
+    source = (root / mark.path).read_text(encoding="utf-8")
+    lines = source.splitlines(keepends=True)
+    sites = []
+    for name, node in _functions(ast.parse(source)):
+        if mark.function is not None and name != mark.function:
+            continue
+        for number in range(node.lineno, (node.end_lineno or node.lineno) + 1):
+            text = lines[number - 1]
+            if text.strip() == mark.before:
+                start = sum(map(len, lines[:number - 1])) + len(text) - len(text.lstrip())
+                sites.append(Site(mark.path, number, name, mark.before, mark.after, source, start,
+                                  start + len(text.strip()), mark.after))
+    return sites
+
+
+_MUTMUT: dict[str, list[Site]] = {}
+
+
+def mutmut_sites(path: str, root: Path = ROOT) -> list[Site]:
+    """Every mutant mutmut writes for `path`, named as mutmut names it, each with its module's source."""
+    key = str(root / path)
+    if key in _MUTMUT:
+        return _MUTMUT[key]
+    import libcst as cst
+    from libcst.metadata import MetadataWrapper, WhitespaceInclusivePositionProvider
+    from mutmut.mutation.file_mutation import create_mutations
+
+    source = (root / path).read_text(encoding="utf-8")
+    module, mutations, _classes, _functions_ignored = create_mutations(path, source)
+    owner: dict[int, tuple[str | None, str]] = {}
+    for node in module.body:
+        if isinstance(node, cst.FunctionDef):
+            owner[id(node)] = (None, node.name.value)
+        elif isinstance(node, cst.ClassDef) and isinstance(node.body, cst.IndentedBlock):
+            for child in node.body.body:
+                if isinstance(child, cst.FunctionDef):
+                    owner[id(child)] = (node.name.value, child.name.value)
+    spans = MetadataWrapper(module, unsafe_skip_copy=True).resolve(WhitespaceInclusivePositionProvider)
+    offsets = [0]
+    for text in source.splitlines(keepends=True):
+        offsets.append(offsets[-1] + len(text))
+    module_name = path.removesuffix(".py").replace("/", ".")
+    counts: dict[int, int] = {}
+    sites = []
+    for mutation in mutations:
+        function = mutation.contained_by_top_level_function
+        if function is None or id(function) not in owner:
+            continue                      # mutmut writes no mutant for it
+        counts[id(function)] = counts.get(id(function), 0) + 1
+        klass, name = owner[id(function)]
+        mangled = f"xǁ{klass}ǁ{name}" if klass else f"x_{name}"
+        # The mutated node's code in place of the original's characters (a whole module rendered again per
+        # mutant takes minutes over the references). libcst renders a node without the indentation of its
+        # block, which the lines after its first get back; where that does not give the original text
+        # again, the whole module is rendered.
+        span = spans[mutation.original_node]
+        start = offsets[span.start.line - 1] + span.start.column
+        end = offsets[span.end.line - 1] + span.end.column
+        indent = _block_indent(source[start:end], module.code_for_node(mutation.original_node))
+        if indent is not None:
+            text = _indented(module.code_for_node(mutation.mutated_node), indent)
+        else:
+            start, end, text = 0, len(source), module.deep_replace(mutation.original_node, mutation.mutated_node).code
+        line, before, after = _first_change(source, start, end, text)
+        if line:
+            sites.append(Site(path, line, f"{klass}.{name}" if klass else name, before, after, source, start, end,
+                              text, f"{module_name}.{mangled}__mutmut_{counts[id(function)]}"))
+    _MUTMUT[key] = sites
+    return sites
+
+
+def _block_indent(original: str, rendered: str) -> str | None:
+    """The indentation libcst left out of `rendered` (a node's code) against `original` (its text in the
+    file), or None if indenting its lines after the first does not give the original."""
+    old, new = original.split("\n"), rendered.split("\n")
+    if len(old) != len(new):
+        return None
+    indent = next((o[:len(o) - len(n)] for o, n in zip(old[1:], new[1:]) if n.strip() and o.endswith(n)), "")
+    return indent if _indented(rendered, indent) == original else None
+
+
+def _indented(text: str, indent: str) -> str:
+    first, *rest = text.split("\n")
+    return "\n".join([first] + [indent + line if line else line for line in rest])
+
+
+def _first_change(source: str, start: int, end: int, text: str) -> tuple[int, str, str]:
+    """(line, original, mutated) of the first line the change makes differ, stripped, as `mutmut show`
+    prints them; (0, "", "") if it changes nothing."""
+    first = source.count("\n", 0, start)
+    line_start = source.rfind("\n", 0, start) + 1
+    line_end = source.find("\n", end)
+    line_end = len(source) if line_end < 0 else line_end
+    old = source[line_start:line_end].split("\n")
+    new = (source[line_start:start] + text + source[end:line_end]).split("\n")
+    before = after = None
+    line = 0
+    for hunk in difflib.unified_diff(old, new, lineterm="", n=0):
+        if hunk.startswith("@@") and not line:
+            line = first + int(hunk.split()[1].lstrip("-").split(",")[0]) or first + 1
+        elif hunk.startswith("-") and not hunk.startswith("---") and before is None:
+            before = hunk[1:].strip()
+        elif hunk.startswith("+") and not hunk.startswith("+++") and after is None:
+            after = hunk[1:].strip()
+    return line, before or "", after or ""
+
+
+def have_mutmut() -> bool:
+    return importlib.util.find_spec("mutmut") is not None
+
+
+def sites_of(mark: Mark, root: Path = ROOT, exact: bool | None = None) -> list[Site]:
+    """The mutants a mark leaves out: mutmut's (exact, where mutmut is installed), else its line replaced."""
+    if not (have_mutmut() if exact is None else exact):
+        return replaced_sites(mark, root)
+    return [s for s in mutmut_sites(mark.path, root) if (s.before, s.after) == (mark.before, mark.after)
+            and mark.function in (None, s.function)]
+
+
+# -- a mutant beside the reference ------------------------------------------------------------------------
+
+class _Changed(importlib.abc.MetaPathFinder, importlib.abc.Loader):
+    """Imports one module of the copy from a changed source."""
+
+    def __init__(self, name: str, path: Path, source: str) -> None:
+        self.name, self.path, self.source, self.loaded = name, path, source, False
+
+    def find_spec(self, fullname: str, path: Any = None, target: Any = None) -> Any:
+        if fullname != self.name:
+            return None
+        return importlib.util.spec_from_loader(fullname, self, origin=str(self.path))
+
+    def create_module(self, spec: Any) -> None:
+        return None
+
+    def exec_module(self, module: Any) -> None:
+        module.__file__ = str(self.path)
+        self.loaded = True
+        exec(compile(self.source, str(self.path), "exec"), module.__dict__)
+
+
+def _ours(name: str) -> bool:
+    return name == PACKAGE or name.startswith(PACKAGE + ".")
+
+
+def trains_with(path: str, source: str) -> dict[str, type]:
+    """The reference trains by profile (sut/reference/profiles.py's TRAINS) of a copy of the reference in
+    which `path` reads `source`. The reference already imported stays as it was."""
+    import sut
+    importlib.import_module(f"{PACKAGE}.profiles")            # the reference itself, before the swap
+    saved = {name: sys.modules.pop(name) for name in list(sys.modules) if _ours(name)}
+    attribute = getattr(sut, "reference")
+    finder = _Changed(path.removesuffix(".py").replace("/", "."), ROOT / path, source)
+    sys.meta_path.insert(0, finder)
+    try:
+        trains = dict(importlib.import_module(f"{PACKAGE}.profiles").TRAINS)
+    finally:
+        sys.meta_path.remove(finder)
+        for name in [n for n in sys.modules if _ours(n)]:
+            del sys.modules[name]
+        sys.modules.update(saved)
+        sut.reference = attribute
+    if not finder.loaded:
+        raise ImportError(f"{path} is not part of the reference trains")
+    return trains
+
+
+# Time passing after every stimulus, and watched: drawn as the stimuli are, a sequence leaves most stimuli
+# without time to act (one draw in five is time), and what the driver shows is looked at only after each
+# call, so a mutant that reports a silent device one poll early, picks a relay up 3 ms late or runs a cycle
+# at another phase shows only to a look inside that window. After each stimulus (not time itself) comes a
+# pause (PAUSES_US) or a watch: a few to a few dozen short advances (WATCH_STEPS_US), each looked at.
+PAUSES_US = (1_000, 3_000, 10_000, 50_000, 120_000, 500_000, 2_000_000)
+WATCH_STEPS_US = (1_000, 2_000, 5_000, 16_000)
+WATCH_LOOKS = (4, 40)
+
+
+def _time_after(stimulus: Any) -> Any:
+    """What follows one stimulus: nothing if it is time passing, else a pause or a watch."""
+    from hypothesis import strategies as st
+
+    from .stimuli import Action
+
+    if stimulus.method in ("advance", "advance_ms", "soak"):
+        return st.just([])
+    pause = st.sampled_from(PAUSES_US).map(lambda us: [Action("advance", (us,))])
+    watch = st.tuples(st.sampled_from(WATCH_STEPS_US), st.integers(*WATCH_LOOKS)).map(
+        lambda a: [Action("advance", (a[0],))] * a[1])
+    return st.one_of(pause, watch)
+
+
+def _watched(sequences: Any) -> Any:
+    from hypothesis import strategies as st
+    return sequences.flatmap(lambda seq: st.tuples(*[_time_after(a) for a in seq]).map(
+        lambda after: [x for stimulus, then in zip(seq, after) for x in (stimulus, *then)]))
+
+
+def paced(profile: str, probe: Any, max_actions: int) -> Any:
+    """Up to `max_actions` of every stimulus the contract lists (stimuli.py), each followed by time, watched."""
+    from hypothesis import strategies as st
+
+    from .stimuli import actions
+    return _watched(st.lists(actions(profile, probe), max_size=max_actions))
+
+
+def _sentences(profile: str, probe: Any, max_actions: int) -> Any:
+    """The step library's stimuli (sentences.py, for a profile it has; else paced), each followed by time,
+    watched."""
+    from . import sentences
+    if profile not in sentences.PROFILES:
+        return paced(profile, probe, max_actions)
+    return _watched(sentences.sequences(profile, probe, max_actions))
+
+
+DRAWN = {"sentences": _sentences, "paced": paced}
+
+
+def _factory(cls: type, profile: str, composition: dict[str, int]) -> Callable[[], Any]:
+    def make() -> Any:
+        driver = cls.open(profile)
+        if composition:
+            driver.configure(**composition)
+        return driver
+    return make
+
+
+def _runs(calls: list[str]) -> list[str]:
+    """A watch's many equal advances as one line: `advance(2000) x 30`."""
+    out: list[list] = []
+    for call in calls:
+        if out and out[-1][0] == call:
+            out[-1][1] += 1
+        else:
+            out.append([call, 1])
+    return [call if n == 1 else f"{call} x {n}" for call, n in out]
+
+
+def _short(value: Any, limit: int = 600) -> str:
+    text = repr(value)
+    return text if len(text) <= limit else text[:limit] + " ..."
+
+
+def check_site(site: Site, profiles: tuple[str, ...], budget: dict[str, list[tuple[dict[str, int], str, int]]],
+               *, actions: int = ACTIONS, seed: int = SEED, shrink_s: float | None = SHRINK_S) -> dict[str, Any]:
+    """Drive the reference and the mutant side by side in each profile and composition of the budget: the
+    first difference, or none."""
+    from .differential import search
+    from sut.reference.profiles import TRAINS
+
+    try:
+        mutant = trains_with(site.path, site.source)
+    except Exception as error:                  # noqa: BLE001  (a mutant that does not import: seen at once)
+        return {"verdict": "overturned", "difference": {"profile": None, "observable": "import",
+                                                          "reference": "imports", "mutant": _short(error)}}
+    tried = 0
+    for profile in profiles:
+        for composition, drawn, examples in budget.get(profile, []):
+            try:
+                difference = search(_factory(TRAINS[profile], profile, composition),
+                                    _factory(mutant[profile], profile, composition), profile,
+                                    examples=examples, max_actions=actions, seed=seed, shrink_s=shrink_s,
+                                    sequences=DRAWN[drawn])
+            except Exception as error:          # noqa: BLE001  (an error outside the driver calls: read it)
+                return {"verdict": "error", "sequences": tried + examples, "difference": {
+                    "profile": profile, "composition": composition, "drawn": drawn,
+                    "observable": "an error of the driver",
+                    "reference": "none", "mutant": _short(error)}}
+            tried += examples
+            if difference is not None:
+                return {"verdict": "overturned", "sequences": tried, "difference": {
+                    "profile": profile, "composition": composition, "drawn": drawn,
+                    "after_stimuli": difference.step,
+                    "observable": difference.what, "reference": _short(difference.a), "mutant": _short(difference.b),
+                    "sequence": _runs(["power_on()"] + [str(a) for a in difference.sequence])}}
+    return {"verdict": "confirmed", "sequences": tried}
+
+
+def check_mark(mark: Mark, *, budget: dict | None = None, exact: bool | None = None,
+               root: Path = ROOT, **options: Any) -> dict[str, Any]:
+    """The record of one mark: confirmed (none of its mutants differs from the reference in the budget) or
+    overturned (the first that does, and how), or that it names no mutant."""
+    started = time.monotonic()
+    record: dict[str, Any] = {"where": mark.where, "before": mark.before, "after": mark.after,
+                              "reason": mark.reason, "budget": budget_id() if budget is None else "custom",
+                              "checked": datetime.date.today().isoformat()}
+    sites = sites_of(mark, root, exact)
+    record["mutants"] = [{"line": s.line, "function": s.function, **({"name": s.name} if s.name else {})}
+                         for s in sites]
+    if not sites:
+        record["verdict"] = "names no mutant"
+    for site in sites:
+        result = check_site(site, profiles_of(site.path), BUDGET if budget is None else budget, **options)
+        record["verdict"] = result["verdict"]
+        record["sequences"] = record.get("sequences", 0) + result.get("sequences", 0)
+        if result["verdict"] != "confirmed":
+            record["difference"] = {"line": site.line, **result["difference"]}
+            break
+    record["seconds"] = round(time.monotonic() - started, 1)
+    return record
+
+
+def confirmed(report: dict[str, Any], mark: Mark) -> bool:
+    """Whether the report holds the evidence for this mark, as it reads now, in the current budget."""
+    record = report.get("marks", {}).get(mark.key)
+    return bool(record) and record.get("verdict") == "confirmed" and record.get("budget") == budget_id()
+
+
+def load_report(path: Path | None = None) -> dict[str, Any]:
+    try:
+        return json.loads((path or REPORT).read_text(encoding="utf-8"))
+    except (OSError, ValueError):
+        return {}
+
+
+# -- running them ------------------------------------------------------------------------------------------
+
+def _mark_job(mark: Mark) -> tuple[str, dict[str, Any]]:
+    try:
+        return mark.key, check_mark(mark)
+    except Exception as error:                  # noqa: BLE001  (one mark's trouble must not end the sweep)
+        return mark.key, {"where": mark.where, "before": mark.before, "after": mark.after, "reason": mark.reason,
+                          "budget": budget_id(), "verdict": "not checked", "error": _short(error)}
+
+
+# -- the marks made honest ---------------------------------------------------------------------------------
+
+def move_overturned(report: dict[str, Any], marks_file: Path | None = None,
+                    overturned: Path | None = None) -> tuple[int, int]:
+    """Take each mark the report overturned out of the marks (one line each, the rest untouched) and note it
+    in OVERTURNED_MUTANTS.txt with what the checker saw: outline/mutation.py no longer leaves its mutants
+    out, so they count as survivors until a scenario kills them. A mark that names no mutant (its line is
+    no longer in the code) goes too. (moved, dropped)."""
+    marks_file, overturned = marks_file or EQUIVALENTS, overturned or OVERTURNED
+    records = report.get("marks", {})
+    kept, moved, dropped = [], [], 0
+    for raw in marks_file.read_text(encoding="utf-8").splitlines(keepends=True):
+        fields = [f.strip() for f in raw.split(" | ")]
+        if raw.strip() and not raw.startswith("#") and len(fields) >= 4:
+            mark = Mark(fields[0], fields[1], fields[2], " | ".join(fields[3:]))
+            verdict = records.get(mark.key, {}).get("verdict")
+            if verdict == "overturned":
+                moved.append((mark, records[mark.key]["difference"]))
+                continue
+            if verdict == "names no mutant":
+                dropped += 1
+                continue
+        kept.append(raw)
+    if not moved and not dropped:
+        return 0, 0
+    marks_file.write_text("".join(kept), encoding="utf-8")
+    header = ("# Marks of EQUIVALENT_MUTANTS.txt that the differential checker overturned (make equivalence,\n"
+              "# reports/equivalence.json): a difference from the reference at the driver interface, so not\n"
+              "# equivalent. outline/mutation.py does not leave them out: they are survivors until a scenario\n"
+              "# kills them. One per line:\n"
+              "#   path | original line | mutated line | profile: observable, reference -> mutant\n")
+    text = overturned.read_text(encoding="utf-8") if overturned.exists() else header
+    for mark, seen in moved:
+        said = f"{seen.get('profile')}: {seen.get('observable')}, {seen.get('reference')} -> {seen.get('mutant')}"
+        text += f"{mark.where} | {mark.before} | {mark.after} | " + " ".join(said.split()) + "\n"
+    overturned.write_text(text, encoding="utf-8")
+    return len(moved), dropped
+
+
+def summary(report: dict[str, Any], marks: list[Mark]) -> str:
+    records = report.get("marks", {})
+    verdicts: dict[str, int] = {}
+    for record in records.values():
+        verdicts[record["verdict"]] = verdicts.get(record["verdict"], 0) + 1
+    lines = ["# Equivalent mutants, checked (make equivalence)", "",
+             f"Budget {budget_id()}: per profile, (composition, how drawn, sequences) {json.dumps(BUDGET)}; up "
+             f"to {ACTIONS} stimuli a sequence, seed {SEED} (outline/sequences/equivalence.py).", "",
+             "Marks checked: " + ", ".join(f"{n} {v}" for v, n in sorted(verdicts.items())) + f"; {len(marks)} "
+             f"marks in sut/reference/EQUIVALENT_MUTANTS.txt now, "
+             f"{sum(confirmed(report, m) for m in marks)} of them confirmed.", ""]
+    overturned = [r for r in records.values() if r["verdict"] == "overturned"]
+    if overturned:
+        lines += ["## Overturned marks", "", "| mark | profile | observable | reference | mutant | sequence |",
+                  "| --- | --- | --- | --- | --- | --- |"]
+        for r in sorted(overturned, key=lambda r: (r["where"], r["before"])):
+            d = r["difference"]
+            cells = [f"{r['where']}:{d.get('line')} `{r['before']}` -> `{r['after']}`", str(d.get("profile")),
+                     str(d.get("observable")), f"`{str(d.get('reference'))[:120]}`", f"`{str(d.get('mutant'))[:120]}`",
+                     "; ".join(d.get("sequence", [])[1:])[:300]]
+            lines.append("| " + " | ".join(c.replace("|", "\\|").replace("\n", " ") for c in cells) + " |")
+        lines.append("")
+    rules = report.get("rules")
+    if rules:
+        lines += [f"## Rule-based exclusions (sample of {rules['asked']} a rule, seed {rules['seed']})", "",
+                  "| rule | mutants it passes over | checked | confirmed | overturned |", "| --- | --- | --- | --- | --- |"]
+        for reason, counts in sorted(rules["per_rule"].items()):
+            lines.append(f"| {reason} | {counts['mutants']} | {counts['checked']} | {counts['confirmed']} | "
+                         f"{counts['overturned']} |")
+        lines.append("")
+        for r in rules["mutants"]:
+            if r["verdict"] == "overturned":
+                d = r["difference"]
+                lines.append(f"- {r['rule']}: {r['path']}:{r['line']} `{r['before']}` -> `{r['after']}`: "
+                             f"{d.get('profile')}, {d.get('observable')}: {str(d.get('reference'))[:100]} -> "
+                             f"{str(d.get('mutant'))[:100]}")
+        lines.append("")
+    return "\n".join(lines)
+
+
+def write_report(report: dict[str, Any], out: Path | None = None) -> None:
+    """The evidence (json) and its summary (.md beside it)."""
+    out = out or REPORT
+    out.parent.mkdir(parents=True, exist_ok=True)
+    out.write_text(json.dumps(report, indent=1, ensure_ascii=False, sort_keys=True) + "\n", encoding="utf-8")
+    out.with_suffix(".md").write_text(summary(report, read_marks()), encoding="utf-8")
+
+
+def main(argv: list[str] | None = None) -> int:
+    parser = argparse.ArgumentParser(prog="python -m outline.sequences.equivalence",
+                                     description=__doc__.split("\n\n")[0])
+    parser.add_argument("--all", action="store_true", help="check every mark again, not only those not yet checked")
+    parser.add_argument("--mark", action="append", default=[], metavar="TEXT",
+                        help="check only the marks whose line contains TEXT (repeatable)")
+    parser.add_argument("--jobs", type=int, default=2)
+    parser.add_argument("--move", action="store_true",
+                        help="move the marks the report overturned to sut/reference/OVERTURNED_MUTANTS.txt")
+    parser.add_argument("--out", type=Path, default=REPORT)
+    args = parser.parse_args(argv)
+    if not have_mutmut():
+        print("equivalence: mutmut is not installed (pip install -e '.[mutate]'): each mark's line is replaced "
+              "instead of building mutmut's own mutants", flush=True)
+    marks = read_marks()
+    report = load_report(args.out)
+    report.setdefault("marks", {})
+    todo = [m for m in marks if all(text in m.line() for text in args.mark)
+            and (args.all or args.mark or report["marks"].get(m.key, {}).get("budget") != budget_id())]
+    print(f"equivalence: {len(todo)} of {len(marks)} marks to check (budget {budget_id()}, {args.jobs} jobs)",
+          flush=True)
+    started = time.monotonic()
+    with multiprocessing.get_context("fork").Pool(args.jobs) as pool:
+        for done, (key, record) in enumerate(pool.imap_unordered(_mark_job, todo), start=1):
+            report["marks"][key] = record
+            write_report(report, args.out)
+            seen = record.get("difference", {})
+            print(f"[{done}/{len(todo)} {time.monotonic() - started:.0f}s] {record['verdict']}: {record['where']} "
+                  f"| {record['before'][:60]} -> {record['after'][:60]}"
+                  + (f"  ({seen.get('profile')}: {seen.get('observable')})" if seen else ""), flush=True)
+    report["budget"] = {"id": budget_id(), "per_profile": BUDGET, "actions": ACTIONS, "seed": SEED,
+                        "shrink_s": SHRINK_S}
+    write_report(report, args.out)
+    if args.move:
+        moved, dropped = move_overturned(report)
+        print(f"equivalence: {moved} overturned marks moved to {OVERTURNED.relative_to(ROOT)}, {dropped} marks that "
+              "name no mutant taken out")
+    print(f"equivalence: {args.out} ({time.monotonic() - started:.0f} s)")
+    return 0
+
+
+if __name__ == "__main__":
+    sys.exit(main())

@@ -1,0 +1,103 @@
+"""Equivalent mutants only with machine evidence (outline/sequences/equivalence.py, issue 31): every mark in
+sut/reference/EQUIVALENT_MUTANTS.txt has the differential checker's confirming record, for the text it has
+now and the current budget, in the committed reports/equivalence.json (make equivalence writes it; this
+reads it and simulates nothing); and the checker itself tells a changed threshold from a change nothing
+can see, on a tiny budget."""
+from __future__ import annotations
+
+import json
+from pathlib import Path
+
+import pytest
+
+from outline.sequences import equivalence
+from outline.sequences.equivalence import Mark, check_mark, confirmed, load_report, read_marks
+
+# The VDX rig's supply band (VDX-02: 70-125 % of 110 V) with its top at 110 % instead: a supply of 125-137 V
+# leaves the reference's loop closed and opens the mutant's.
+THRESHOLD = Mark("sut/reference/atp/vdx.py",
+                 "return self.cfg.supply_lo * self.cfg.nominal_v <= v <= self.cfg.supply_hi * self.cfg.nominal_v",
+                 "return self.cfg.supply_lo * self.cfg.nominal_v <= v <= 1.1 * self.cfg.nominal_v", "a test's own")
+# A mark the checker confirmed: the isolation switch's state starts as None instead of False, and is only
+# ever tested for truth.
+UNSEEN = Mark("sut/reference/atp/vdx.py", "self.isolated = False", "self.isolated = None", "a test's own")
+TINY = {"vdx": [({}, "paced", 300)]}     # ~5 s; the fitted train (atp-crh2) left out
+
+
+def test_every_mark_has_the_checkers_confirming_record_for_its_text_now() -> None:
+    report = load_report()
+    missing = [m.line() for m in read_marks() if not confirmed(report, m)]
+    assert not missing, (f"{len(missing)} marks of sut/reference/EQUIVALENT_MUTANTS.txt have no confirming record "
+                         f"in reports/equivalence.json (budget {equivalence.budget_id()}): run `make equivalence` "
+                         "(only those marks run), and take out a mark it overturns (`--move`). First:\n"
+                         + "\n".join(missing[:10]))
+
+
+def test_an_overturned_mark_is_noted_with_what_the_checker_saw_and_counts_as_a_survivor() -> None:
+    report = load_report()
+    now = {m.key for m in read_marks()}
+    overturned = [r for key, r in report.get("marks", {}).items() if r["verdict"] == "overturned"]
+    assert all(Mark(r["where"], r["before"], r["after"], "").key not in now for r in overturned)
+    for r in overturned:
+        seen = r["difference"]
+        assert seen["observable"] and "reference" in seen and "mutant" in seen, r
+
+
+def test_the_checker_overturns_a_changed_threshold_and_confirms_a_change_nothing_can_see() -> None:
+    changed = check_mark(THRESHOLD, budget=TINY, exact=False, shrink_s=20)
+    assert changed["verdict"] == "overturned", changed
+    seen = changed["difference"]
+    assert seen["profile"] == "vdx" and seen["sequence"][0] == "power_on()"
+    assert any("set_supply_voltage('VDX'" in step for step in seen["sequence"]), seen
+    unseen = check_mark(UNSEEN, budget=TINY, exact=False)
+    assert unseen["verdict"] == "confirmed" and unseen["sequences"] == 300, unseen
+
+
+def test_a_mark_is_built_in_every_function_that_says_its_line_or_only_in_the_one_it_names(tmp_path: Path) -> None:
+    source = tmp_path / "sut" / "reference" / "atp" / "x.py"
+    source.parent.mkdir(parents=True)
+    source.write_text("A = 1\n\nclass Relay:\n    def on(self):\n        x = 1\n\n    def off(self):\n"
+                      "        x = 1\n        return x\n", encoding="utf-8")
+    everywhere = equivalence.replaced_sites(Mark("sut/reference/atp/x.py", "x = 1", "x = 2", "r"), tmp_path)
+    assert [(s.line, s.function) for s in everywhere] == [(5, "Relay.on"), (8, "Relay.off")]
+    assert everywhere[1].source.splitlines()[7] == "        x = 2"
+    assert everywhere[1].source.splitlines()[4] == "        x = 1"
+    named = equivalence.replaced_sites(Mark("sut/reference/atp/x.py::Relay.off", "x = 1", "x = 2", "r"), tmp_path)
+    assert [(s.line, s.function) for s in named] == [(8, "Relay.off")]
+    assert equivalence.replaced_sites(Mark("sut/reference/atp/x.py", "A = 1", "A = 2", "r"), tmp_path) == []
+
+
+def test_a_mark_is_keyed_by_its_text_and_a_record_by_the_budget(monkeypatch: pytest.MonkeyPatch) -> None:
+    mark = Mark("sut/reference/bulk.py", "a = 1", "a = 2", "why")
+    assert mark.key == Mark("sut/reference/bulk.py", "a = 1", "a = 2", "another wording").key
+    assert mark.key != Mark("sut/reference/bulk.py", "a = 1", "a = 3", "why").key
+    report = {"marks": {mark.key: {"verdict": "confirmed", "budget": equivalence.budget_id()}}}
+    assert confirmed(report, mark)
+    monkeypatch.setitem(equivalence.BUDGET, "vdx", [({}, "paced", 1)])
+    assert not confirmed(report, mark)                   # checked in another budget: not evidence for this one
+
+
+def test_overturned_marks_move_out_of_the_marks_and_marks_naming_no_mutant_go(tmp_path: Path) -> None:
+    marks = tmp_path / "EQUIVALENT_MUTANTS.txt"
+    kept, wrong, gone = (Mark("sut/reference/bulk.py", f"a = {n}", f"a = {n + 1}", "why") for n in (1, 2, 3))
+    marks.write_text(f"# header\n{kept.line()}\n{wrong.line()}\n{gone.line()}\n", encoding="utf-8")
+    report = {"marks": {kept.key: {"verdict": "confirmed"}, gone.key: {"verdict": "names no mutant"},
+                        wrong.key: {"verdict": "overturned", "difference": {
+                            "profile": "crh2", "observable": "output traction", "reference": "'on'",
+                            "mutant": "'off'"}}}}
+    overturned = tmp_path / "OVERTURNED_MUTANTS.txt"
+    assert equivalence.move_overturned(report, marks, overturned) == (1, 1)
+    assert marks.read_text(encoding="utf-8") == f"# header\n{kept.line()}\n"
+    assert overturned.read_text(encoding="utf-8").splitlines()[-1] == \
+        "sut/reference/bulk.py | a = 2 | a = 3 | crh2: output traction, 'on' -> 'off'"
+
+
+def test_a_mutant_is_found_in_the_source_as_mutmut_writes_it() -> None:
+    source = "class A:\n    def f(self):\n        return g(1,\n                 2)\n"
+    start = source.index("g(1")
+    end = source.index("2)") + 2
+    rendered = "g(1,\n         2)"                 # libcst's code for the node, without its block's indentation
+    indent = equivalence._block_indent(source[start:end], rendered)
+    assert indent == "        " and equivalence._indented("g(1,\n         3)", indent) == "g(1,\n                 3)"
+    assert equivalence._first_change(source, start, end, "g(1,\n                 3)") == (4, "2)", "3)")
+    assert equivalence._first_change(source, start, end, "h(1,\n                 2)") == (3, "return g(1,", "return h(1,")
