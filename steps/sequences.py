@@ -16,7 +16,7 @@ from outline.sequences.judge import search
 from sut.contract import load as load_contract
 from sut.contract.guard import ContractDriver
 from sut.driver import TrainDriver
-from steps.fixtures import _RECORDER, _profile_for
+from steps.fixtures import _RECORDER, _declared, _profile_for
 
 
 def pytest_addoption(parser: pytest.Parser) -> None:
@@ -49,8 +49,11 @@ def _(sut_class: type[TrainDriver], request: pytest.FixtureRequest, sequence_bud
     invariant = _invariant(profile, name)
     contract, recorder = load_contract(profile), request.config.stash.get(_RECORDER, None)
     examples, seed = sequence_budget
+    # The SUT's declaration, where it has one: the texts and parameters an invariant reads (None otherwise).
+    _, declaration = _declared(request.node, sut_class, request.config)
     violation = search(lambda: sut_class.open(profile), invariant, examples=examples, seed=seed,
-                       guard=lambda driver: ContractDriver(driver, profile, contract, recorder))
+                       guard=lambda driver: ContractDriver(driver, profile, contract, recorder),
+                       declaration=declaration)
     if violation is not None:
         allure.attach(violation.gherkin(), name="the shortest sequence found, as a scenario",
                       attachment_type=allure.attachment_type.TEXT)

@@ -1,10 +1,11 @@
-"""The random-sequence judge (outline/sequences, steps/sequences.py; features F-ILK-10, F-ATP-14): its stimuli are
-the step library's own sentences, so a sequence it prints is a scenario a user can paste; it finds a variant
-that breaks an invariant and shrinks the sequence; the same seed gives the same sequence."""
+"""The random-sequence judge (outline/sequences, steps/sequences.py; features F-ILK-10, F-ATP-14, F-NET-35,
+F-ATP-15): its stimuli are the step library's own sentences, so a sequence it prints is a scenario a user can
+paste; it finds a variant that breaks an invariant and shrinks the sequence; the same seed gives the same
+sequence."""
 from __future__ import annotations
 
 import pytest
-from hypothesis import HealthCheck, given, settings
+from hypothesis import HealthCheck, given, seed as hypothesis_seed, settings
 from hypothesis import strategies as st
 
 from outline.sequences.invariants import INVARIANTS
@@ -13,7 +14,8 @@ from outline.sequences.sentences import OPENINGS, PROFILES, sequences
 from outline.stepdefs import definitions_in_modules, step_problem
 from steps import STEP_MODULES
 from sut.backends import resolve
-from tests.variants import IsolationIgnored, SeparationWithoutRapidBrake
+from sut.contract import declaration as declarations
+from tests.variants import CarrierAfterOneComparison, IsolationIgnored, SeparationWithoutRapidBrake
 
 DEFINITIONS = definitions_in_modules(STEP_MODULES)
 
@@ -57,6 +59,35 @@ def test_the_same_seed_finds_the_same_sequence() -> None:
             for _ in range(2)]
     assert runs[0] is not None and runs[0].gherkin() == runs[1].gherkin()
     assert "the train separates between car" in runs[0].gherkin()
+
+
+def test_an_invariant_reads_the_declared_parameters_and_draws_on_its_focus() -> None:
+    """ATP-03: a CFSK that reports after one comparison is found against the period the SUT declares; the
+    sequences drawn for the invariant draw on the kinds of stimulus it is about."""
+    invariant = _invariant("ATP-03")
+    declaration = declarations.of_backend(CarrierAfterOneComparison).of("atp")
+    violation = search(lambda: CarrierAfterOneComparison.open("atp"), invariant, examples=20,
+                       declaration=declaration)
+    assert violation is not None and "fewer than 3 comparisons 50 ms apart" in violation.what, violation
+    assert search(lambda: resolve("reference").open("atp"), invariant, examples=20, declaration=declaration) is None
+    driver = resolve("reference").open("atp")
+    driver.power_on()
+
+    def switching(focus: tuple[str, ...]) -> int:
+        """How many of 30 sequences drawn with `focus` switch the signal generator after the opening."""
+        found: list[bool] = []
+
+        @hypothesis_seed(0)
+        @settings(max_examples=30, database=None, deadline=None, suppress_health_check=list(HealthCheck))
+        @given(sequences("atp", driver, 12, focus))
+        def drawn(sequence) -> None:
+            found.append(any(a.sentence.startswith("the signal generator switches to")
+                             for a in sequence[len(OPENINGS["atp"][0]):]))
+
+        drawn()
+        return sum(found)
+
+    assert switching(invariant.focus) > 2 * switching(()), (switching(invariant.focus), switching(()))
 
 
 def test_every_invariant_names_requirements_a_feature_verifies() -> None:

@@ -26,3 +26,24 @@ INTEGER_RANGES = {None: (0, 1), "Hz": (1650, 2650)}
 RAW_COUNT = (0, 10_000)
 # ZPW-2000 carriers (Hz): drawn half the time, so a carrier the ATP knows is not left to chance.
 CARRIERS = (1700, 2000, 2300, 2600)
+
+# The metro's buses and its two units of three cars (TCN-02, TCN-04: one MVB per unit, the WTB between them).
+METRO_BUSES = ("WTB", "unit1.MVB", "unit2.MVB")
+METRO_UNIT_CARS = {1: (1, 2, 3), 2: (4, 5, 6)}
+
+
+def car_of(name: str) -> int:
+    """The car a metro name is in (`car4.VVVF` -> 4)."""
+    return int(name.split(".", 1)[0].removeprefix("car"))
+
+
+# The ATP's line on the rig (absolute metres): the track circuits a balise describes (start, end, carrier; down-line
+# carriers, ATP-04), the ends of authority it gives (inside the first circuit, so a train running up to one under
+# the opening's carrier stays consistent, ATP-02), the stop points of precise-positioning balises; the
+# low-frequency codes the signal generator sends.
+ATP_LINE = ((0, 2000, 1700), (2000, 4000, 2300))
+ATP_EOAS = (1200, 1800)
+ATP_STOPS = (800, 1500)
+ATP_CODES = ("L", "L2", "LU", "U")
+# The CFSK's carrier sets (ATP-04; ZPW-2000: the contract's `CFSK carrier set`).
+ATP_CARRIER_SETS = {"down": (1700, 2300), "up": (2000, 2600)}

@@ -22,12 +22,18 @@ class Action:
     method: str
     args: tuple
     sentence: str = field(default="", compare=False)
+    more: tuple = ()          # further (method, args) calls the same sentence makes ("to 60 % traction": two)
+
+    @property
+    def calls(self) -> tuple[tuple[str, tuple], ...]:
+        return ((self.method, self.args), *self.more)
 
     def apply(self, driver: TrainDriver) -> None:
-        getattr(driver, self.method)(*self.args)
+        for method, args in self.calls:
+            getattr(driver, method)(*args)
 
     def __str__(self) -> str:
-        return f"{self.method}({', '.join(map(repr, self.args))})"
+        return "; ".join(f"{method}({', '.join(map(repr, args))})" for method, args in self.calls)
 
 
 def _expand(pattern: str, names: list[str]) -> list[str]:
