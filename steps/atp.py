@@ -199,15 +199,21 @@ def _(sut: TrainDriver, group: str, start: float, length: float) -> None:
 
 @given(parsers.parse('列车已通过应答器组"{group}",其给出{at:g} m处的停车点'))
 @given(parsers.parse('the train has passed balise group "{group}" giving a stop point at {at:g} m'))
-def _(sut: TrainDriver, group: str, at: float) -> None:
-    _balise(sut, group, {"type": "stop point", "at_m": at, "psd": False})
+@when(parsers.parse('列车通过应答器组"{group}",其给出{at:g} m处的停车点'), target_fixture="t_action")
+@when(parsers.parse('the train passes balise group "{group}" giving a stop point at {at:g} m'),
+      target_fixture="t_action")
+def _(sut: TrainDriver, group: str, at: float) -> int:
+    return _balise(sut, group, {"type": "stop point", "at_m": at, "psd": False})
 
 
 @given(parsers.parse('列车已通过应答器组"{group}",其给出{at:g} m处的停车点,站台设有屏蔽门'))
 @given(parsers.parse('the train has passed balise group "{group}" giving a stop point at {at:g} m '
                      'with platform screen doors'))
-def _(sut: TrainDriver, group: str, at: float) -> None:
-    _balise(sut, group, {"type": "stop point", "at_m": at, "psd": True})
+@when(parsers.parse('列车通过应答器组"{group}",其给出{at:g} m处的停车点,站台设有屏蔽门'), target_fixture="t_action")
+@when(parsers.parse('the train passes balise group "{group}" giving a stop point at {at:g} m '
+                    'with platform screen doors'), target_fixture="t_action")
+def _(sut: TrainDriver, group: str, at: float) -> int:
+    return _balise(sut, group, {"type": "stop point", "at_m": at, "psd": True})
 
 
 @given(parsers.parse('列车已通过应答器组"{group}",其链接{at:g} m处的应答器组"{nxt}"'))
@@ -332,9 +338,22 @@ def _(sut: TrainDriver, which: str) -> None:
 @then(parsers.parse("ATP为CFSK记录{fields}"), converters={"fields": zh.atp_record_fields})
 @then(parsers.parse("the ATP records for the CFSK {fields}"))
 def _(sut: TrainDriver, declaration: ProfileDeclaration, fields: str) -> None:
+    _cfsk_record(sut, declaration, fields)
+
+
+@then(parsers.parse("{after:g} ms起ATP为CFSK记录{fields}"), converters={"fields": zh.atp_record_fields})
+@then(parsers.parse("from {after:g} ms on the ATP records for the CFSK {fields}"))
+def _(sut: TrainDriver, declaration: ProfileDeclaration, t_action: int, after: float, fields: str) -> None:
+    """A record of the action itself, not one an earlier action left: a second fault soon after a first one is
+    recorded too (ATP-05 records the CFSK state, not its first change). A stamp may be whole milliseconds (the
+    contract's `records`), so one stamped in the millisecond the window opens in counts."""
+    _cfsk_record(sut, declaration, fields, since_ms=(t_action + us(after)) // 1000)
+
+
+def _cfsk_record(sut: TrainDriver, declaration: ProfileDeclaration, fields: str, since_ms: float | None = None) -> None:
     """ATP-05 lists the fields of a CFSK record, not their wording: the documented shape (contract `records`: a
     stamp, then one whitespace-separated word per field) with each field worded as the SUT declares it (form
-    texts `CFSK`, `code=<code>`, ...), in any order."""
+    texts `CFSK`, `code=<code>`, ...), in any order; with `since_ms`, among the records stamped from then on."""
     marker = declaration.text("CFSK")
     records = [r for r in sut.records("ATP") if marker in r]
     assert records, f"no CFSK record (a line with {marker!r}): {sut.records('ATP')}"
@@ -344,6 +363,10 @@ def _(sut: TrainDriver, declaration: ProfileDeclaration, fields: str) -> None:
         stamp = record.split(" ", 1)[0]
         assert re.fullmatch(r"\d+(\.\d+)?", stamp) and float(stamp) <= sut.now_us / 1000, (
             f"a CFSK record stamped {stamp!r} at {sut.now_us / 1000:.3f} ms: {record}")
+    if since_ms is not None:
+        earlier = records
+        records = [r for r in records if float(r.split(" ", 1)[0]) >= since_ms]
+        assert records, f"no CFSK record stamped from {since_ms} ms on: {earlier}"
     for field in re.split(r",\s*|\s+and\s+", fields):
         key, _, value = field.strip().partition(" ")
         word = _record_word(declaration, key, value.replace(" ", ""))

@@ -343,6 +343,26 @@ def ramps() -> dict[str, float]:
 
 
 @pytest.fixture
+def accuracy(sut_class: type[TrainDriver], request: pytest.FixtureRequest) -> dict[str, float]:
+    """How far the speed and main pipe pressure the SUT's interlocks act on may lie from the train's, by vehicle
+    input: its declared speed_accuracy_kmh and pressure_accuracy_kpa (IXIT; steps/vehicle.py feeds the edges
+    that far clear and widens the bands). 0 (exact) where it declares none, and a scenario that only sets a
+    speed never becomes not applicable for want of a declaration."""
+    _, mine = _declared(request.node, sut_class, request.config)
+    declared = mine.parameters if mine is not None else {}
+    return {"speed": declared.get("speed_accuracy_kmh", 0),
+            "main pipe pressure": declared.get("pressure_accuracy_kpa", 0)}
+
+
+@pytest.fixture
+def edge_shifts() -> dict[str, float]:
+    """By vehicle input, how far a When step of this scenario last fed it from the value written, to keep it
+    clear of an edge by the declared accuracy (steps/vehicle.py): a display of that input is compared with what
+    was fed."""
+    return {}
+
+
+@pytest.fixture
 def t_action() -> int:
     """Time of the last action, in us: steps that act return it as `t_action`; 0 (power-up) if none did."""
     return 0

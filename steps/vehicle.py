@@ -25,23 +25,55 @@ ZH_OUTPUT_VALUE = rf"{zh.CORE_STATE_RE}|{OUTPUT_VALUE}"
 VALUE = rf"(?P<value>{OUTPUT_VALUE})"
 ZH_VALUE = rf"(?P<value>{ZH_OUTPUT_VALUE})"
 
+# The edges where a valve, a relay or the compressor must switch, by the vehicle input it acts on, and the side
+# of each edge its own value lies on (-1: the lower side, +1: the upper): ILK-02's band (tripped by 580 kPa,
+# allowed to trip at 600 and to stay tripped up to it), the hysteresis rule's 640 kPa (released by), the
+# compressor governor's (started by 770, never at 780; stopped from 870 and by 880); ILK-05's press-seal valve
+# (never at 30 km/h, by 32) and door-open relay (by 4 km/h, never at 5). A train measures its speed and pressure
+# itself, so a switching point off by its declared accuracy conforms (docs/decisions.md, "Measurement accuracy at
+# the interlocks' edges"): a stimulus written at an edge or nearer it than that is fed that far clear of it on
+# its own side, and each band grows by that much on both sides.
+EDGES: dict[str, dict[float, int]] = {
+    "main pipe pressure": {580: -1, 600: -1, 640: +1, 770: -1, 780: +1, 870: +1, 880: +1},
+    "speed": {4: -1, 5: +1, 30: -1, 32: +1},
+}
+
+
+def clear_of_edges(name: str, value: float, accuracy: dict[str, float], shifts: dict[str, float]) -> float:
+    """The value to feed for a `value` written for vehicle input `name`: the SUT's declared accuracy clear of
+    every edge (the form's ranges keep the edges at least twice that apart); what it moved is noted in `shifts`."""
+    margin = accuracy.get(name, 0)
+    fed = value
+    for edge, side in EDGES.get(name, {}).items():
+        if margin and abs(value - edge) < margin:
+            fed = edge + (side if value == edge else (1 if value > edge else -1)) * margin
+    shifts[name] = fed - value
+    return fed
+
+
+def band(name: str, lo: float, hi: float, accuracy: dict[str, float]) -> tuple[float, float]:
+    """A band the SUT must switch in, wider by the accuracy it declares for the input it acts on."""
+    margin = accuracy.get(name, 0)
+    return lo - margin, hi + margin
+
 
 # -- inputs -----------------------------------------------------------------------------------------
 @given(parsers.parse("列车以{kmh:g} km/h运行"))
 @given(parsers.parse("the train runs at {kmh:g} km/h"))
 @when(parsers.parse("列车速度变为{kmh:g} km/h"), target_fixture="t_action")
 @when(parsers.parse("the train speed changes to {kmh:g} km/h"), target_fixture="t_action")
-def _(sut: TrainDriver, kmh: float) -> int:
-    sut.set_input("speed", kmh)
+def _(sut: TrainDriver, accuracy: dict[str, float], edge_shifts: dict[str, float], kmh: float) -> int:
+    sut.set_input("speed", clear_of_edges("speed", kmh, accuracy, edge_shifts))
     return sut.now_us
 
 
 @when(parsers.parse("列车速度以每秒{rate:g} km/h从{a:g} km/h变化到{b:g} km/h"), target_fixture="t_action")
 @when(parsers.parse("the train speed goes from {a:g} km/h to {b:g} km/h at {rate:g} km/h per second"),
       target_fixture="t_action")
-def _(sut: TrainDriver, ramps: dict[str, float], a: float, b: float, rate: float) -> int:
-    sut.set_input("speed", a)
-    sut.ramp_input("speed", b, rate)
+def _(sut: TrainDriver, ramps: dict[str, float], accuracy: dict[str, float], edge_shifts: dict[str, float],
+      a: float, b: float, rate: float) -> int:
+    sut.set_input("speed", clear_of_edges("speed", a, accuracy, edge_shifts))
+    sut.ramp_input("speed", clear_of_edges("speed", b, accuracy, edge_shifts), rate)
     ramps["speed"] = rate if b >= a else -rate
     return sut.now_us
 
@@ -50,17 +82,18 @@ def _(sut: TrainDriver, ramps: dict[str, float], a: float, b: float, rate: float
 @given(parsers.parse("the main air pipe pressure is {kpa:g} kPa"))
 @when(parsers.parse("总风管压力变为{kpa:g} kPa"), target_fixture="t_action")
 @when(parsers.parse("the main air pipe pressure changes to {kpa:g} kPa"), target_fixture="t_action")
-def _(sut: TrainDriver, kpa: float) -> int:
-    sut.set_input("main pipe pressure", kpa)
+def _(sut: TrainDriver, accuracy: dict[str, float], edge_shifts: dict[str, float], kpa: float) -> int:
+    sut.set_input("main pipe pressure", clear_of_edges("main pipe pressure", kpa, accuracy, edge_shifts))
     return sut.now_us
 
 
 @when(parsers.parse("总风管压力以每秒{rate:g} kPa从{a:g} kPa变化到{b:g} kPa"), target_fixture="t_action")
 @when(parsers.parse("the main air pipe pressure goes from {a:g} kPa to {b:g} kPa at {rate:g} kPa per second"),
       target_fixture="t_action")
-def _(sut: TrainDriver, ramps: dict[str, float], a: float, b: float, rate: float) -> int:
-    sut.set_input("main pipe pressure", a)
-    sut.ramp_input("main pipe pressure", b, rate)
+def _(sut: TrainDriver, ramps: dict[str, float], accuracy: dict[str, float], edge_shifts: dict[str, float],
+      a: float, b: float, rate: float) -> int:
+    sut.set_input("main pipe pressure", clear_of_edges("main pipe pressure", a, accuracy, edge_shifts))
+    sut.ramp_input("main pipe pressure", clear_of_edges("main pipe pressure", b, accuracy, edge_shifts), rate)
     ramps["main pipe pressure"] = rate if b >= a else -rate
     return sut.now_us
 
@@ -204,11 +237,12 @@ def _(sut: TrainDriver, t_action: int, output: str, value: str) -> None:
 @then(parsers.re(rf'the "(?P<output>[^"]+)" became {VALUE} while the main air pipe pressure was between '
                  rf'(?P<lo>{NUMBER}) and (?P<hi>{NUMBER}) kPa'), converters={"lo": float, "hi": float})
 @budgeted
-def _(sut: TrainDriver, declaration: ProfileDeclaration, ramps: dict[str, float], t_action: int, output: str,
-      value: str, lo: float, hi: float) -> None:
+def _(sut: TrainDriver, declaration: ProfileDeclaration, ramps: dict[str, float], accuracy: dict[str, float],
+      t_action: int, output: str, value: str, lo: float, hi: float) -> None:
     changes = _changes(sut, output, t_action, value)
     assert changes, f"the {output} never became {value} after {ms(t_action)}"
     p = changes[0]["pressure"]
+    lo, hi = band("main pipe pressure", lo, hi, accuracy)
     lo, hi = budgets.band_on_ramp(declaration, ramps.get("main pipe pressure"), lo, hi)
     assert lo <= p <= hi, f"the {output} became {value} at {p:g} kPa, outside {lo:g}..{hi:g} kPa"
 
@@ -218,11 +252,12 @@ def _(sut: TrainDriver, declaration: ProfileDeclaration, ramps: dict[str, float]
 @then(parsers.re(rf'the "(?P<output>[^"]+)" became {VALUE} while the speed was between (?P<lo>{NUMBER}) and '
                  rf'(?P<hi>{NUMBER}) km/h'), converters={"lo": float, "hi": float})
 @budgeted
-def _(sut: TrainDriver, declaration: ProfileDeclaration, ramps: dict[str, float], t_action: int, output: str,
-      value: str, lo: float, hi: float) -> None:
+def _(sut: TrainDriver, declaration: ProfileDeclaration, ramps: dict[str, float], accuracy: dict[str, float],
+      t_action: int, output: str, value: str, lo: float, hi: float) -> None:
     changes = _changes(sut, output, t_action, value)
     assert changes, f"the {output} never became {value} after {ms(t_action)}"
     v = changes[0]["speed"]
+    lo, hi = band("speed", lo, hi, accuracy)
     lo, hi = budgets.band_on_ramp(declaration, ramps.get("speed"), lo, hi)
     assert lo <= v <= hi, f"the {output} became {value} at {v:g} km/h, outside {lo:g}..{hi:g} km/h"
 

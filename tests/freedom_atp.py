@@ -243,5 +243,37 @@ class ModeAnnouncingDmiAtp(ReferenceAtp):
         self.atp = _AnnouncingOnboard(self.kernel, self._cfg.atp, self._emit, on_brake=self._brake_to_train)
 
 
+# -- optional-feature (vdx): the VDX reads the isolation switch and brakes its own outputs while isolated ---------
+class _IsolationReadingVdx(VdxInterface):
+    """An isolated ATP supervises nothing, so its VDX says brake: FS off and HR on while the switch is on (its
+    self-test pauses with the FS output); the switch's contact keeps the loop closed all the while."""
+
+    @property
+    def fs_on(self) -> bool:
+        return super().fs_on and not self.isolated
+
+    @property
+    def hr_on(self) -> bool:
+        return super().hr_on or (self.powered and self.isolated)
+
+    def set_isolation(self, on: bool) -> None:
+        self.isolated = on
+        self._drive()
+
+
+class BrakesWhileIsolatedVdx(ReferenceAtp):
+    """Freedom (optional feature, vdx): the VDX also reads the ATP isolation switch and, while it is on, holds
+    both its outputs at brake (EB2R de-energised, EB1R energised) whatever the ATP commands, and pauses its FS
+    self-test. VDX-01 gives the switch's bypass, not what the relays behind it do; the loop stays closed through
+    the bypass. Nothing is declared; F-ATP-04's release-then-isolate scenario shows the relays drop at the
+    isolation, not at the ATP's later brake."""
+    FREEDOM_CLASS = "optional-feature"
+    EXERCISED_BY = "F-ATP-04"
+
+    def _build(self) -> None:
+        super()._build()
+        self.vdx = _IsolationReadingVdx(self.kernel, self._cfg.vdx, self._emit, on_loop=self._brake_to_train)
+
+
 FREEDOM: list[type] = [TaskTickAtp, LateFsVdx, SupplyToleranceVdx, CfskRecordsInChineseAtp, ReversedInstantAtp,
-                       ReversedInstantVdx, ModeAnnouncingDmiAtp]
+                       ReversedInstantVdx, ModeAnnouncingDmiAtp, BrakesWhileIsolatedVdx]

@@ -72,3 +72,32 @@ class SlowReactionsCrh2(ReferenceTrain):
 
 
 FREEDOM.append(SlowReactionsCrh2)
+
+
+class MeasurementToleranceCrh2(ReferenceTrain):
+    """Freedom (measurement tolerance at range edges): the interlocks and the compressor governor act on a main
+    pipe pressure read 2.5 kPa low and a speed read 0.4 km/h high, inside the accuracies it declares (3 kPa,
+    0.5 km/h). So the press-seal valve energises at 29.6 km/h, the door-open relay acts below 4.6 km/h, the pipe
+    trips below 592.5 kPa and the compressor starts below 782.5 kPa. The features feed each edge the declared
+    accuracy clear of it and widen each band by it; held to the reference's 0, F-ILK-05 (the valve at 30 km/h)
+    and F-CTL-09 (the compressor at 781 kPa) reject it."""
+    BEHAVIOUR = {"pressure_read_kpa": -2.5, "speed_read_kmh": 0.4}
+    DECLARATION = "tests/declarations/measurement-tolerance-crh2.yaml"
+    FREEDOM_CLASS = "range-edge-tolerance"
+
+
+FREEDOM.append(MeasurementToleranceCrh2)
+
+
+class StandstillHoldingBrakeCrh2(ReferenceTrain):
+    """Freedom (optional feature): a CCU that holds brake step 3 (step A on paths 2 and 3) on every BCU while
+    the train stands and the active cab's command carries no traction notch (the controller at 0, or traction
+    not permitted), and takes it off in the command that first carries a notch. No requirement asks for it or
+    forbids it; the cab's brake lamp still shows the driver's handle (docs/decisions.md, "Standstill holding
+    brake (crh2)")."""
+    BEHAVIOUR = {"standstill_holding_brake": 3}
+    FREEDOM_CLASS = "optional-feature"
+    EXERCISED_BY = "F-CTL-01"
+
+
+FREEDOM.append(StandstillHoldingBrakeCrh2)

@@ -249,3 +249,17 @@ def test_a_vdx_measures_its_supply_within_its_declared_accuracy(cls: type) -> No
         taken = getattr(Vdx(**cls.VDX), name)
         assert abs(edge / taken - 1) * 100 <= declared + 1e-9, \
             f"{cls.__name__} takes {name}={taken:.5f} for {edge}: off by more than its declared {declared} %"
+
+
+@pytest.mark.parametrize("cls", [c for c in [ReferenceTrain, *IN_BAND, *FREEDOM] if issubclass(c, ReferenceTrain)],
+                         ids=lambda c: c.__name__)
+def test_a_crh2_reads_pressure_and_speed_within_its_declared_accuracy(cls: type) -> None:
+    """The interlocks act on the pressure and speed the train measures; a CRH2 whose measurement is off by more
+    than it declares would be fed its edges too near (steps/vehicle.py EDGES)."""
+    from sut.reference.crh2.config import Behaviour
+
+    declared = of_backend(cls).of("crh2")
+    reads = Behaviour(**cls.BEHAVIOUR)
+    for name, off in (("pressure_accuracy_kpa", reads.pressure_read_kpa), ("speed_accuracy_kmh", reads.speed_read_kmh)):
+        assert abs(off) <= declared.parameter(name), \
+            f"{cls.__name__} reads {off:+g} off, declares {name}={declared.parameter(name)}"

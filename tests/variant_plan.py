@@ -7,9 +7,9 @@ The plan is a JSON file named by $CRH2_VARIANT_PLAN: {variant class name: {"item
 
 Each process writes, beside the plan, the requirement tags of every scenario it kept
 (`<plan>.<worker>.reqs.json`: {test id: [requirement, ...]}), so that the test can tell which selection a
-rejecting scenario belongs to. A variant's own item runs first; once a scenario of its item and one tagged
-with its requirement have both failed, its remaining scenarios are skipped: the variant is rejected both
-ways, and the rest would only cost time. The workers tell each other (`<plan>.rejected`, a line per
+rejecting scenario belongs to. A variant's own item runs first; once a scenario of each of its items and one
+tagged with each requirement it breaks have failed (tests/variants.py may list a variant more than once), its
+remaining scenarios are skipped: the variant is rejected every way, and the rest would only cost time. The workers tell each other (`<plan>.rejected`, a line per
 rejection), so a worker does not go on running a variant the other one has already rejected.
 """
 from __future__ import annotations
@@ -25,7 +25,7 @@ from steps.fixtures import SUT_CHOOSER
 CAMPAIGN_ITEMS = {campaign.item for campaign in CAMPAIGNS}
 
 _PLAN = pytest.StashKey[dict[str, dict[str, set[str]]]]()
-_REJECTED = pytest.StashKey[dict[str, set[str]]]()      # variant name -> {"item", "req"} already failed
+_REJECTED = pytest.StashKey[dict[str, set[str]]]()      # variant name -> {"item:<ID>", "req:<ID>"} already failed
 
 
 def _variant(item: pytest.Item) -> str | None:
@@ -47,6 +47,18 @@ def _why(item: pytest.Item, wanted: dict[str, set[str]]) -> set[str]:
     """Which selections of the plan keep this scenario: "item", "req", both or none."""
     return ({"item"} if _tags(item, "item") & wanted.get("items", set()) else set()) | \
            ({"req"} if _tags(item, "req") & wanted.get("reqs", set()) else set())
+
+
+def _met(item: pytest.Item, wanted: dict[str, set[str]]) -> set[str]:
+    """Which of the plan's items and requirements a failure of this scenario rejects the variant by
+    ("item:<ID>", "req:<ID>"): a variant listed under two requirements or two items (tests/variants.py may
+    list it once for each) is rejected only once each has failed a scenario."""
+    return ({f"item:{i}" for i in _tags(item, "item") & wanted.get("items", set())}
+            | {f"req:{r}" for r in _tags(item, "req") & wanted.get("reqs", set())})
+
+
+def _needed(wanted: dict[str, set[str]]) -> set[str]:
+    return {f"item:{i}" for i in wanted.get("items", set())} | {f"req:{r}" for r in wanted.get("reqs", set())}
 
 
 def pytest_configure(config: pytest.Config) -> None:
@@ -94,8 +106,9 @@ def _heard(config: pytest.Config) -> dict[str, set[str]]:
 
 @pytest.hookimpl(tryfirst=True)                       # before the fixtures build a train
 def pytest_runtest_setup(item: pytest.Item) -> None:
-    if _heard(item.config).get(_variant(item)) == {"item", "req"}:
-        pytest.skip("this variant already failed a scenario of its item and one tagged with its requirement")
+    name = _variant(item)
+    if _needed(item.config.stash[_PLAN][name]) <= _heard(item.config).get(name, set()):
+        pytest.skip("this variant already failed a scenario of each of its items and requirements")
 
 
 @pytest.hookimpl(wrapper=True)
@@ -103,7 +116,7 @@ def pytest_runtest_makereport(item: pytest.Item, call: pytest.CallInfo):
     report = yield
     if report.failed and report.when == "call":
         name = _variant(item)
-        why = _why(item, item.config.stash[_PLAN][name])
+        why = _met(item, item.config.stash[_PLAN][name])
         item.config.stash[_REJECTED].setdefault(name, set()).update(why)
         with open(_rejections(), "a", encoding="utf-8") as fh:      # one short line: appended whole
             fh.write(f"{name} {' '.join(sorted(why))}\n")

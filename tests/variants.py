@@ -10,10 +10,13 @@ from __future__ import annotations
 import re
 
 from sut.reference.crh2.backend import ReferenceTrain
+from sut.reference.crh2.train import Train
+from sut.reference.crh2.vehicle import Vehicle
 from tests.wording import reword
 from sut.reference.atp.backend import ReferenceAtp
+from sut.reference.atp.onboard import OnboardAtp
 from sut.reference.metro.backend import ReferenceMetro
-from sut.reference.metro.ports import DI_KEY, Command
+from sut.reference.metro.ports import DI_KEY, Command, IoPort
 from sut.reference.metro.tcds import MetroTrain
 from sut.reference.metro.units import ControlUnit
 
@@ -673,6 +676,146 @@ FAULTY += [
 IN_BAND += [BriskMetro]
 
 
+# -- three capabilities held-out faults found missing (issue 31, item 4) ----------------------------------
+class SecondKeyTakesOver(ReferenceTrain):
+    """ILK-07 (docs/decisions.md, "ILK-07"): a key left in cab 8 while cab 1 drives picks cab 8's MCR up the
+    moment cab 1's key comes out, so what was set in cab 8 while it was void (direction, notch 9) commands
+    the train with nobody acting in cab 8. The other items take the first key out with no second key in.
+    Rejected by F-ILK-07's "Taking cab 1's key out while a key waits in cab 8 picks nothing up"."""
+    BEHAVIOUR = {"waiting_key_picks_up": True}
+
+
+class RegenerationHighestFirst(ReferenceTrain):
+    """PRO-05: the token is formed after power-up as PRO-03 says, but formed again after a loss the way
+    ARCNET's own reconfiguration does it, the highest node number first (each node waits (N + 1 - number) x
+    20 ms): the ring's last node forms it 20 ms after the initialisation, not node 1. A token circulates
+    again as soon as with the reference, which is all F-NET-14 asked before. Rejected by F-NET-14's "After a
+    loss node 1 forms the new token 20 ms after the initialisation"."""
+    BEHAVIOUR = {"regeneration_from_the_top": True}
+
+
+class BrakeForceBlindToAtp(ReferenceTrain):
+    """ILK-03: the brake-force supervision counts only the brake handle as a demand, so a car short of brake
+    force under an ATP brake, with the handle at 0, trips nothing (F-ILK-03 braked with the handle only).
+    Rejected by F-ILK-03's "Under an ATP brake with the handle at 0 a car braking at 30 % of its demand
+    trips the emergency brake"."""
+    BEHAVIOUR = {"brake_force_handle_only": True}
+
+
+FAULTY += [
+    (SecondKeyTakesOver, "ILK-07", "F-ILK-07"),
+    (RegenerationHighestFirst, "PRO-05", "F-NET-14"),
+    (BrakeForceBlindToAtp, "ILK-03", "F-ILK-03"),
+]
+
+
+class _ForwardOnlyTraction(Vehicle):
+    """The vehicle of ReverseRefused."""
+    BULK_READABLE = True         # no state of its own: a 72 h soak need not run frame by frame (sut/reference/bulk.py)
+
+    def _permitted(self, emergency: bool, rapid: bool, doors: str) -> bool:
+        ccu = self.train.commanding_ccu()
+        return super()._permitted(emergency, rapid, doors) and (ccu is None or ccu.desk.direction == "forward")
+
+
+class ReverseRefused(ReferenceTrain):
+    """ILK-08 (issue 31, item 4: a held-out fault, described): the direction condition reads "forward", not
+    "forward or reverse", so with the direction switch at reverse traction is blocked and no notch reaches a
+    CI. Before, only F-CTL-11's "In reverse the driver's notch reaches every CI" (tagged CMD-05) drove in
+    reverse: `--req ILK-08` passed it. Rejected by F-ILK-08's "The direction switch at reverse permits
+    traction as forward does"."""
+
+    @property
+    def train(self) -> Train:
+        fresh = self._train is None
+        train = super().train
+        if fresh:
+            train.vehicle.__class__ = _ForwardOnlyTraction
+        return train
+
+
+FAULTY += [(ReverseRefused, "ILK-08", "F-ILK-08")]
+
+
+class _LastKeyedCommand(MetroTrain):
+    """The train of KeyRemovalIgnored: a subclass, so the reference's code is not edited."""
+
+    def __init__(self, cfg) -> None:
+        super().__init__(cfg)
+        self.keyed: dict[int, tuple] = {}     # unit -> the last command its cab's key was in for (mode .. brake)
+
+    def _command(self, seg, master):
+        cmd = super()._command(seg, master)
+        inputs = seg.io_data[seg.io_used][0] if seg.io_used else None
+        if inputs is not None and inputs.input(self.cfg.behaviour.di_key):
+            if cmd is not None:
+                self.keyed[seg.unit] = (cmd.mode, cmd.direction, cmd.traction, cmd.brake)
+            return cmd
+        last = self.keyed.get(seg.unit)
+        return cmd if last is None or cmd is None else Command(*last, cmd.seq)
+
+
+class KeyRemovalIgnored(ReferenceMetro):
+    """TCN-08: a cab whose key is taken out stays the active cab: its CCU keeps sending the train command it
+    computed last, so its unit runs on without a driver's cab (the other unit, told "no cab", brakes). The
+    hand-written items take a key out only in emergency operation (F-NET-25), where the desk acts through hard
+    wires; F-NET-35's "every VVVF and BECU follows the active cab, through a CCU failure" finds it."""
+
+    def __init__(self) -> None:
+        super().__init__()
+        self._train = _LastKeyedCommand(self._train.cfg)
+
+
+FAULTY += [(KeyRemovalIgnored, "TCN-08", "F-NET-35")]
+
+
+class _LateLifeSignal(MetroTrain):
+    """The train of LateLifeSignalCheck: a subclass, so the reference's code is not edited."""
+    LATE_US = 300 * MS
+    BULK_READABLE = True         # its moment comes by a timer, which bulk advance never jumps over
+
+    def __init__(self, cfg) -> None:
+        super().__init__(cfg)
+        self.noticed_dead: set[str] = set()        # modules whose life signal 0 the masters have taken in
+        self.noticing: dict[str, object] = {}      # module -> the timer that takes it in
+
+    def _deliver(self, seg, master, what, target, data) -> None:
+        super()._deliver(seg, master, what, target, data)
+        if what != "io":
+            return
+        name = target.name
+        port, at = seg.io_data[name]
+        if port.life:
+            self.noticed_dead.discard(name)
+            timer = self.noticing.pop(name, None)
+            if timer is not None:
+                timer.cancel()
+        elif name not in self.noticed_dead:
+            # A timer, not a comparison with the time: a bulk advance must not jump over the moment.
+            if name not in self.noticing:
+                self.noticing[name] = self.kernel.call_later(self.LATE_US, self._notice, name)
+            seg.io_data[name] = (IoPort(port.di, port.ai, 1), at)
+
+    def _notice(self, name: str) -> None:
+        self.noticing.pop(name, None)
+        self.noticed_dead.add(name)
+
+
+class LateLifeSignalCheck(ReferenceMetro):
+    """TCN-06 (issue 31, item 4: a held-out fault, described): the I/O modules' ports are process data, of
+    bounded latency, but the masters take in a module's life signal 0 only after it has read 0 for 300 ms, so
+    for 300 ms a dead module 1's frozen inputs drive the train. Before, only F-CTL-16's "Module 1's life signal
+    drops" (tagged RED-07) timed the switch to module 2: `--req TCN-06` passed it. Rejected by F-CTL-16's
+    "Module 1's life signal drops: the inputs of module 2 are used" (now tagged TCN-06 too)."""
+
+    def __init__(self) -> None:
+        super().__init__()
+        self._train = _LateLifeSignal(self._train.cfg)
+
+
+FAULTY += [(LateLifeSignalCheck, "TCN-06", "F-CTL-16")]
+
+
 # A metro display unit that speaks Chinese: its modes, and its event texts on the displays and in the records,
 # by the English text's pattern (<name>: a name it keeps as it is). It declares what it shows for each message
 # the features name (tests/declarations/chinese-display-metro.yaml); the texts no feature names it need not.
@@ -839,6 +982,61 @@ FAULTY += [
     (NarrowSupply, "VDX-02", "F-ATP-04"),
     (IsolationIgnored, "VDX-01", "F-ATP-04"),
 ]
+
+
+class _RecordsOneFaultAWhile(OnboardAtp):
+    """The ATP of CfskFaultsRecordedOnceAWhile."""
+    QUIET_US = 10_000 * MS
+
+    def __init__(self, *args, **kwargs) -> None:
+        super().__init__(*args, **kwargs)
+        self.fault_recorded_at: int | None = None
+
+    def fail_cfsk(self, failed: bool) -> None:
+        last = self.fault_recorded_at
+        quiet = failed and last is not None and self.kernel.now - last < self.QUIET_US
+        kept = list(self.records)
+        super().fail_cfsk(failed)
+        if quiet:
+            self.records[:] = kept                  # the fault information went out, the record did not
+        elif failed:
+            self.fault_recorded_at = self.kernel.now
+
+
+class CfskFaultsRecordedOnceAWhile(ReferenceAtp):
+    """ATP-05: a CFSK fault within 10 s of the last one recorded is not recorded (its fault information still
+    reaches the safety computer and the DMI): two faults close together leave one record. F-ATP-15's "a faulty
+    CFSK is recorded and sends no decoded result" finds it, and F-ATP-07's "Two CFSK faults a second apart are
+    both recorded" (before it, F-ATP-07 failed the CFSK once only)."""
+
+    def _build(self) -> None:
+        super()._build()
+        self.atp = _RecordsOneFaultAWhile(self.kernel, self._cfg.atp, self._emit, on_brake=self._brake_to_train)
+
+
+FAULTY += [(CfskFaultsRecordedOnceAWhile, "ATP-05", "F-ATP-15")]
+
+
+class AtpOnABrakeForceBlindTrain(ReferenceAtp):
+    """ILK-03 in the fitted train (atp-crh2): the ATP is the reference's, the CRH2 set it brakes is
+    BrakeForceBlindToAtp, whose supervision ignores the ATP's maximum service brake. Rejected by F-ATP-13's
+    "The ATP's maximum service brake with the handle at 0: a car short of brake force trips the emergency
+    brake"."""
+    TRAIN = BrakeForceBlindToAtp
+
+
+FAULTY += [(AtpOnABrakeForceBlindTrain, "ILK-03", "F-ATP-13")]
+
+
+# Issue 31, item 4: two close CFSK faults in the hand-written item too, and `--req VDX-06` catching a C019 that
+# clears itself (VDX-06: C019 is recovered by a restart; F-ATP-05's "stays until restart" scenarios carry it).
+FAULTY += [
+    (CfskFaultsRecordedOnceAWhile, "ATP-05", "F-ATP-07"),
+    (C019Clears, "VDX-06", "F-ATP-05"),
+    (C019ClearsAfterTenMinutes, "VDX-06", "F-ATP-05"),
+]
+
+
 class AnotherAtpRig(ReferenceAtp):
     """In band: another installation and CFSK: antenna 4.5 m behind the front, +-8 m odometry, comparisons
     every 40 ms (so a 120 ms decode delay). The features compute their edges from what it declares."""

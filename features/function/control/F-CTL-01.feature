@@ -4,7 +4,9 @@ Feature: F-CTL-01 Traction/brake command transmission at every notch and brake s
   The function-level form of the routine item R-CTL-01: every traction notch (1-10) and every service brake
   step (1-7) set on the desk of the key-inserted cab reaches every CI and BCU over path 1 (MDM9, HDLC over
   fibre) with full resolution, within the project's desk-to-CI bound of 40 ms (docs/decisions.md, "Command paths"),
-  and the commands on the ring keep PRO-01's interval and delay.
+  and the commands on the ring keep PRO-01's interval and delay. The brake steps are set while the train runs:
+  at standstill a product may hold a brake of its own, and the command then carries the higher step
+  (docs/decisions.md, "Standstill holding brake (crh2)").
 
   Background:
     Given an 8-car CRH2 train set
@@ -34,6 +36,7 @@ Feature: F-CTL-01 Traction/brake command transmission at every notch and brake s
 
   @req:CMD-02 @req:CMD-05 @req:TST-04 @req:TST-05
   Scenario Outline: F-CTL-01 Brake step <step> reaches every BCU over path 1 with full resolution
+    Given the train runs at 100 km/h
     When the driver moves the brake handle of cab 1 to step <step>
     And 150 ms pass
     Then every BCU receives brake step <step> over path 1 within 40 ms

@@ -4,12 +4,15 @@ Feature: F-CTL-02 Brake command transmission with a rescue connection
   The function-level form of the routine item R-CTL-02: with two sets coupled (NET-08), the brake handle
   of the rescuing cab 16 commands every BCU of both sets: over the coupled ring (path 1, full resolution,
   40 ms) even when the rescued set's own cab is dead, and over the coupled self-diagnostic line (path 3,
-  A/B steps) when the ring is down. The rescue transition device itself is not modelled.
+  A/B steps) when the ring is down. The rescue transition device itself is not modelled. The coupled train
+  runs: at standstill a product may hold a brake of its own above the handle's step (docs/decisions.md,
+  "Standstill holding brake (crh2)").
 
   Background:
     Given two 8-car CRH2 train sets coupled together
     And the driver has inserted the key in cab 16
     And the train has been powered up for 1000 ms
+    And the train runs at 30 km/h
 
   @req:NET-08 @req:CMD-02 @req:TST-04 @req:TST-05
   Scenario Outline: F-CTL-02 Brake step <step> from the rescuing cab 16 reaches all 16 BCUs over the ring

@@ -1,10 +1,12 @@
 @item:F-CTL-16 @profile:metro-tcn @req:TST-04
 Feature: F-CTL-16 Redundant MVB I/O modules: module 1 while its life signal is set, else module 2
-  Requirements: RED-07 (primary), TCN-07, TST-04.
+  Requirements: RED-07 (primary), TCN-06, TCN-07, TST-04.
   The two I/O modules of a cab car read the same inputs (28 digital, 3 analogue). A wiring fault on one
   module's master-controller input shows which module's inputs drive the train; which channel carries the
   traction demand and the direction switch, and at what scale, is the SUT's declared I/O map (TCN-07 gives
-  the channel counts only).
+  the channel counts only). The life signal travels in the module's port with the inputs, as process data
+  (TCN-06: cyclic, of bounded latency): a master takes in module 1's life signal 0 as fast as any input, so
+  module 2's inputs drive every VVVF within the suite's 100 ms from an input to the drives.
 
   Background:
     Given a 6-car metro train with its train control and diagnosis system
@@ -20,7 +22,7 @@ Feature: F-CTL-16 Redundant MVB I/O modules: module 1 while its life signal is s
     Then every VVVF applies 60 % traction
     And the cab 1 display does not show "inputs from car1.IO2"
 
-  @req:RED-07
+  @req:RED-07 @req:TCN-06
   Scenario: F-CTL-16 Module 1's life signal drops: the inputs of module 2 are used
     Given a wiring fault holds the traction demand input of "car1.IO2" at 30 %
     And the train has been powered up for 1000 ms

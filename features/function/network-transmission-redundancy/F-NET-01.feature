@@ -25,6 +25,9 @@ Feature: F-NET-01 Two-level network, its units and their boards
 
   @req:NET-01
   Scenario: F-NET-01 The self-diagnostic line joins every unit when the ring is gone
+    # The driver's own brake step, not the released one: at standstill a product may hold a brake of its own
+    # (docs/decisions.md, "Standstill holding brake (crh2)"), and step 7 is step B either way.
+    Given the brake handle of cab 1 is at step 7
     When every ring link is cut
     And 300 ms pass
-    Then every BCU receives brake step "-" over path 3 within 100 ms
+    Then every BCU receives brake step "B" over path 3 within 100 ms

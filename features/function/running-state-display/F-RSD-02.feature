@@ -4,7 +4,10 @@ Feature: F-RSD-02 Traction notch, brake step and direction on the cab monitor wi
   The driver's controller sets direction, traction notch and brake step; the commanding CCU broadcasts
   them (PRO-01) and the running state on the monitor is what car 1's LCU received (docs/decisions.md,
   "Display"). A desk change reaches car 1's LCU within one command interval plus the ring delay and is
-  displayed with the next status data: the function test allows 200 ms (10 + 15 + 150, rounded up).
+  displayed with the next status data: the function test allows 200 ms (10 + 15 + 150, rounded up). Notch and
+  brake step are moved while the train runs: at standstill a product may hold a brake of its own, which the
+  monitor shows as the cars' brake step and takes off with the first notch (docs/decisions.md, "Standstill
+  holding brake (crh2)").
 
   Background:
     Given an 8-car CRH2 train set
@@ -14,7 +17,9 @@ Feature: F-RSD-02 Traction notch, brake step and direction on the cab monitor wi
 
   @req:CMD-05 @req:PRO-01 @req:PRO-02 @req:TST-04
   Scenario Outline: F-RSD-02 Traction notch <notch> is displayed within 200 ms
-    When the driver moves the traction notch of cab 1 to <notch>
+    Given the train runs at 100 km/h
+    When 300 ms pass
+    And the driver moves the traction notch of cab 1 to <notch>
     And 200 ms pass
     Then the cab 1 monitor changes "traction notch" to "<notch>" within 200 ms
     And the cab 8 monitor changes "traction notch" to "<notch>" within 200 ms
@@ -28,7 +33,9 @@ Feature: F-RSD-02 Traction notch, brake step and direction on the cab monitor wi
 
   @req:CMD-05 @req:PRO-01 @req:PRO-02 @req:TST-04
   Scenario Outline: F-RSD-02 Brake step <step> is displayed within 200 ms
-    When the driver moves the brake handle of cab 1 to step <step>
+    Given the train runs at 100 km/h
+    When 300 ms pass
+    And the driver moves the brake handle of cab 1 to step <step>
     And 200 ms pass
     Then the cab 1 monitor changes "brake step" to "<step>" within 200 ms
     And the cab 8 monitor changes "brake step" to "<step>" within 200 ms

@@ -2,7 +2,7 @@
 Feature: F-ILK-03 Insufficient brake force applies the emergency and the rapid brake
   Requirements: ILK-03 (primary), TST-04.
   "Insufficient" is the project's definition (docs/decisions.md): a car's brake force below 50 % of the demand
-  for 500 ms while a brake is demanded.
+  for 500 ms while a brake is demanded, by the driver's brake handle or by the ATP.
 
   Background:
     Given an 8-car CRH2 train set
@@ -37,4 +37,14 @@ Feature: F-ILK-03 Insufficient brake force applies the emergency and the rapid b
     And 10 min pass
     Then the "emergency brake" stays applied
     And the "rapid brake" stays commanded
+    And the cab 1 monitor shows "insufficient brake force"
+
+  @req:ILK-03 @tentative
+  Scenario: F-ILK-03 Under an ATP brake with the handle at 0 a car braking at 30 % of its demand trips the emergency brake
+    Given the brake force of car 3 is 30 % of the demand
+    And the brake handle of cab 1 is at step 0
+    When the ATP commands a service brake
+    And 1000 ms pass
+    Then the "emergency brake" is applied within 600 ms
+    And the "rapid brake" is commanded within 600 ms
     And the cab 1 monitor shows "insufficient brake force"

@@ -3,7 +3,8 @@ Feature: F-ILK-08 Traction command permission: every condition alone blocks trac
   Requirements: ILK-08 (primary), ILK-02, ILK-05, TST-04.
   A traction command is produced only if this cab's MCR is up, the direction switch is at forward or
   reverse, no rapid or emergency brake acts, and the side doors are closed or the door-interlock bypass
-  switch is ON. Each scenario breaks one condition and checks that no converter gets traction.
+  switch is ON. Each scenario breaks one condition and checks that no converter gets traction; reverse
+  meets the direction condition as forward does, so a train that drives forward only is refused too.
 
   Background:
     Given an 8-car CRH2 train set
@@ -15,6 +16,16 @@ Feature: F-ILK-08 Traction command permission: every condition alone blocks trac
   @req:ILK-08
   Scenario: F-ILK-08 With every condition met traction reaches the converters
     When 200 ms pass
+    Then the "traction" is permitted
+    And every CI and BCU receives traction notch 5 over path 1 within 40 ms
+
+  @req:ILK-08
+  Scenario: F-ILK-08 The direction switch at reverse permits traction as forward does
+    When the driver moves the traction notch of cab 1 to 0
+    And the driver sets the direction switch of cab 1 to reverse
+    And 200 ms pass
+    And the driver moves the traction notch of cab 1 to 5
+    And 200 ms pass
     Then the "traction" is permitted
     And every CI and BCU receives traction notch 5 over path 1 within 40 ms
 

@@ -39,6 +39,21 @@ Feature: F-ATP-04 VDX emergency-brake loop: EB1R and EB2R in series, the isolati
     Then the emergency-brake loop is closed
     And relay EB1R is energised
 
+  # The bypass, not the relays behind it: whether a VDX keeps driving its outputs after the switch or sets them
+  # to brake at once, VDX-01 does not say; the loop must not open either way.
+  @req:VDX-01
+  Scenario: F-ATP-04 Isolated after a release, the loop stays closed through the ATP's brake
+    Given the ATP has released the emergency brake
+    When 100 ms pass
+    And the ATP isolation switch is turned on
+    And 100 ms pass
+    Then the emergency-brake loop is closed
+    When the ATP applies the emergency brake
+    And 100 ms pass
+    Then the emergency-brake loop stays closed
+    And relay EB2R is de-energised
+    And relay EB1R is energised
+
   @req:VDX-02
   Scenario Outline: F-ATP-04 Inside 70-125 % of 110 V (<volts> V) the brake is released
     Given the FS output is fed with <volts> V

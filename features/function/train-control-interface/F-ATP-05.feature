@@ -1,11 +1,12 @@
 @item:F-ATP-05 @profile:vdx @req:TST-04
 Feature: F-ATP-05 FS output self-test every 5 s, 3 ms, sampled from the 2nd ms against 6 V
-  Requirements: VDX-03 (primary), VDX-04, TST-04.
+  Requirements: VDX-03 (primary), VDX-04, VDX-06, TST-04.
   Every 5 s the VDX removes one of the four excitation sources of the FS output for 3 ms and samples the
   output from the start of the 2nd ms: below 6 V passes; otherwise C019, the FS output stays off (emergency
-  brake) until restart. The relay rides through the 3 ms: the loop stays closed. To raise C019 the ATP
-  releases 1 ms before a test: the old firmware then runs it 16 ms after the release (VDX-06), on the most
-  charged coil it ever tests: if the old firmware shows C019 at all, wherever in the 2nd ms it samples, it does there.
+  brake) until restart: a restart is what recovers from C019 (VDX-06), nothing else. The relay rides
+  through the 3 ms: the loop stays closed. To raise C019 the ATP releases 1 ms before a test: the old
+  firmware then runs it 16 ms after the release (VDX-06), on the most charged coil it ever tests: if the
+  old firmware shows C019 at all, wherever in the 2nd ms it samples, it does there.
 
   Background:
     Given a CTCS3-300T ATP with its VDX emergency-brake interface
@@ -33,7 +34,7 @@ Feature: F-ATP-05 FS output self-test every 5 s, 3 ms, sampled from the 2nd ms a
     Then the FS output reads at least 6 V
     And the emergency-brake loop is closed
 
-  @req:VDX-03
+  @req:VDX-03 @req:VDX-06
   Scenario: F-ATP-05 A self-test that finds the FS output high raises C019, which stays until restart
     Given the VDX runs the old firmware
     And the train has been powered up for 1000 ms
@@ -44,7 +45,7 @@ Feature: F-ATP-05 FS output self-test every 5 s, 3 ms, sampled from the 2nd ms a
     Then C019 is raised and the emergency-brake loop stays open
     And every FS self-test sampled at 6 V or more raised C019 and none below
 
-  @req:VDX-03
+  @req:VDX-03 @req:VDX-06
   Scenario: F-ATP-05 C019 still holds the emergency brake two hours later, without a restart
     Given the VDX runs the old firmware
     And the train has been powered up for 1000 ms
@@ -54,7 +55,7 @@ Feature: F-ATP-05 FS output self-test every 5 s, 3 ms, sampled from the 2nd ms a
     And 2 h pass
     Then C019 is raised and the emergency-brake loop stays open
 
-  @req:VDX-03
+  @req:VDX-03 @req:VDX-06
   Scenario: F-ATP-05 After C019 the emergency-brake loop is still open after a six-minute run
     Given the VDX runs the old firmware
     And the train has been powered up for 1000 ms

@@ -4,7 +4,8 @@ Feature: F-ATP-07 CFSK track-circuit decoding: health, 3-comparison confirmation
   The CFSK board decodes the track circuit for the safety computer: its decoded result while healthy, its
   fault information when not. A new carrier is confirmed only after 3 agreeing comparisons and reported
   with its low-frequency code. Balise up/down-line information switches the carrier set, as the driver can
-  at the DMI. Each report is recorded with code, carrier, amplitude, CFSK state and track-circuit type.
+  at the DMI. Each report is recorded with code, carrier, amplitude, CFSK state and track-circuit type, and
+  so is each fault, however soon after the last one.
 
   Background:
     Given a CTCS-2 200C on-board ATP on the test rig
@@ -35,6 +36,19 @@ Feature: F-ATP-07 CFSK track-circuit decoding: health, 3-comparison confirmation
     Then the safety computer gets the CFSK fault and no decoded result
     And the DMI shows "CFSK fault"
     And the ATP records for the CFSK state fault
+
+  @req:ATP-01 @req:ATP-05
+  Scenario: F-ATP-07 Two CFSK faults a second apart are both recorded
+    Given the signal generator sends 1700 Hz with code L
+    When 1000 ms pass
+    And "CFSK" fails
+    And 500 ms pass
+    And "CFSK" is repaired
+    And 500 ms pass
+    And "CFSK" fails
+    And 500 ms pass
+    Then the safety computer gets the CFSK fault and no decoded result
+    And from 0 ms on the ATP records for the CFSK state fault
 
   @req:ATP-01
   Scenario: F-ATP-07 A repaired CFSK decodes the track circuit again

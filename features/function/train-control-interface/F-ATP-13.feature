@@ -1,10 +1,11 @@
 @item:F-ATP-13 @profile:atp-crh2 @req:TST-04
 Feature: F-ATP-13 The ATP's brake reaches the train: traction suppressed, brake commanded (ILK-08)
-  Requirements: ATP-02 (primary), ATP-11, VDX-01, ILK-08, CMD-02, CMD-05, TST-04.
+  Requirements: ATP-02 (primary), ATP-11, VDX-01, ILK-08, ILK-03, CMD-02, CMD-05, TST-04.
   The ATP fitted to a CRH2 train set: its maximum service brake reaches the train as an ATP brake, which
   suppresses traction and raises the brake command to full service (ILK-08); its emergency brake opens the
   train's emergency-brake loop through the VDX. Without an ATP brake, the driver's own brake handle reaches
-  the train as on a set without ATP.
+  the train as on a set without ATP. The ATP's brake is a brake demand the train's brake-force supervision
+  watches as it watches the handle's (ILK-03).
 
   Background:
     Given a CTCS-2 200C on-board ATP fitted to an 8-car CRH2 train set
@@ -54,3 +55,12 @@ Feature: F-ATP-13 The ATP's brake reaches the train: traction suppressed, brake 
     Then the emergency-brake loop opens within 6 ms of the FS output going off
     And the "emergency brake" is applied
     And every CI receives traction notch 0 within 100 ms
+
+  @req:ILK-03 @tentative
+  Scenario: F-ATP-13 The ATP's maximum service brake with the handle at 0: a car short of brake force trips the emergency brake
+    Given the brake force of car 3 is 30 % of the demand
+    And the brake handle of cab 1 is at step 0
+    When the train passes balise group "6-1-1-1" with an ETCS-99 packet
+    And 1000 ms pass
+    Then the ATP commands max service brake
+    And the "emergency brake" is applied

@@ -55,6 +55,8 @@ class ReferenceAtp(PickledState, TrainDriver):
     DECLARATION = "sut/reference/declaration.yaml"
     VDX: ClassVar[dict[str, Any]] = {}
     ATP: ClassVar[dict[str, Any]] = {}
+    # The CRH2 set the ATP is fitted to (atp-crh2): a faulty variant fits one of the train's own variants.
+    TRAIN: ClassVar[type[ReferenceTrain]] = ReferenceTrain
 
     def __init__(self) -> None:
         super().__init__()
@@ -116,7 +118,7 @@ class ReferenceAtp(PickledState, TrainDriver):
             return
         if self.powered or self._crh2 is not None:
             raise SutError("fit the ATP to a train before anything else is done")
-        crh2 = ReferenceTrain()
+        crh2 = self.TRAIN()
         crh2.configure(sets=1, cars_per_set=cars_per_set)
         self._crh2 = crh2
         self.kernel = crh2.train.kernel          # one clock for the ATP and the train

@@ -156,6 +156,12 @@ class ReferenceTrain(PickledState, TrainDriver):
             self._mark(f"car{cab}.desk", "mcr.down")
         self._mark(f"car{cab}.desk", "desk.key", inserted=False)
         ccu.mcr_changed()
+        if self._cfg.behaviour.waiting_key_picks_up:                       # faulty variants only
+            waiting = next((c for c in self.train.ccus.values() if c.desk.key and not c.desk.mcr), None)
+            if waiting is not None and not any(c.desk.mcr for c in self.train.ccus.values()):
+                waiting.desk.mcr = True
+                self._mark(f"car{waiting.car}.desk", "mcr.up")
+                waiting.mcr_changed()
         self.train.vehicle.desk_changed()
 
     def set_direction(self, cab: int, direction: str) -> None:

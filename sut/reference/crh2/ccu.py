@@ -89,6 +89,11 @@ class CcuSystem(RingNode):
         self.cmd_seq += 1               # unbounded here; the wire carries it modulo 256 (frames.py)
         fields = dict(seq=self.cmd_seq, cab=self.car, system=self.index, **sample.wire_fields(),
                       clock_ms=self._clock_ms())
+        hold = self.train.cfg.behaviour.standstill_holding_brake        # freedom variants only
+        if hold and fields["traction"] == 0 and fields["brake"] < hold and self.train.vehicle.inputs["speed"] == 0:
+            # A holding brake is the CCU's function, not the driver's: the cab lamp still shows the handle,
+            # and the same command that first carries a notch carries the hold off.
+            fields["brake"] = hold
         self.kernel.call_later(self.train.cfg.timing.txc_loop_us, self._mdm8_send, fields)
         self.train.selfdiag.send_command(self.txc.name, fields)
 

@@ -69,6 +69,9 @@ class Behaviour:
     protection_self_reset_us: int | None = None   # ILK-06 a main circuit that resets itself this long after
                                                   # its fault clears (None: only the driver's reset)
     brake_force_trip_clears_us: int | None = None  # ILK-03 a brake-force trip that clears itself (None: latched)
+    waiting_key_picks_up: bool = False    # ILK-07 a cab whose key waited picks up its MCR once the active cab's drops
+    regeneration_from_the_top: bool = False  # PRO-05 a token formed again ranks the nodes from the highest number
+    brake_force_handle_only: bool = False  # ILK-03 the supervision counts only the brake handle as a demand
     # Freedom variants only (tests/freedom_crh2.py); the reference's values change nothing:
     record_words: tuple[tuple[str, str], ...] = ()  # a fault record's event words of its own ("failed" -> ...)
     outputs_logged_last_first: bool = False        # one evaluation's output changes logged in the other order
@@ -76,6 +79,11 @@ class Behaviour:
     command_take_delay_us: int = 0                 # CI and BCU act on a command this much after it arrives
     output_delay_us: int = 0                       # the vehicle's outputs follow its inputs this much later
     display_delay_us: int = 0                      # the cab monitor shows a change this much later
+    pressure_read_kpa: float = 0.0                 # the interlocks and the governor read the main pipe this
+                                                   # much high (negative: low)
+    speed_read_kmh: float = 0.0                    # the door interlocks read the speed this much high
+    standstill_holding_brake: int = 0              # the brake step the commands carry at standstill while
+                                                   # they carry no traction notch (0: none)
 
 
 @dataclass(frozen=True)

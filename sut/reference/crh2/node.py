@@ -174,7 +174,11 @@ class RingNode:
         self._cancel(self._watch)
         self._watch = None
         step = self.train.cfg.timing.formation_step_us
-        self._forming = self.kernel.call_later(self.number * step, self._form)
+        rank = self.number
+        if self.train.cfg.behaviour.regeneration_from_the_top:      # faulty variants only
+            if self.heard or self.ever_held:                        # a token formed again, not the first
+                rank = self.train.ring.size + 1 - self.number
+        self._forming = self.kernel.call_later(rank * step, self._form)
 
     def _form(self) -> None:
         self._forming = None

@@ -185,6 +185,11 @@ class Vehicle:
     def announce(self) -> None:
         """At power-up every output is stated once, so the trace says where each one started."""
         inp = self.inputs
+        # The governor starts from the pressure it measures at power-up: the pressures a rig sets before that (the
+        # catalogue's initial 780 kPa sits on its start point) are no history of a train that was off.
+        p_read = inp["main pipe pressure"] + self.train.cfg.behaviour.pressure_read_kpa
+        self.compressor = p_read < self.cfg.compressor_start_kpa
+        self.outputs["compressor"] = "running" if self.compressor else "stopped"
         for name, value in self.outputs.items():
             self.train.emit(name, "out.change", value=value, speed=inp["speed"], pressure=inp["main pipe pressure"])
 
@@ -254,15 +259,18 @@ class Vehicle:
     # -- the interlock logic --------------------------------------------------------------------
     def _evaluate(self, initial: bool = False) -> None:
         cfg, inp = self.cfg, self.inputs
-        pressure, speed = inp["main pipe pressure"], inp["speed"]
+        pressure, speed = inp["main pipe pressure"], inp["speed"]   # as set: what each out.change carries
+        b = self.train.cfg.behaviour
+        # What the interlocks measure: the pressure and speed as set, but in a freedom variant whose transducers
+        # read off (by no more than the accuracy it declares).
+        p_read, v_read = pressure + b.pressure_read_kpa, speed + b.speed_read_kmh
         # ILK-02 with hysteresis
-        if not self.pipe_tripped and pressure < cfg.pipe_trip_kpa:
+        if not self.pipe_tripped and p_read < cfg.pipe_trip_kpa:
             self.pipe_tripped = True
-        elif self.pipe_tripped and pressure >= cfg.pipe_reset_kpa:
+        elif self.pipe_tripped and p_read >= cfg.pipe_reset_kpa:
             self.pipe_tripped = False
         separated = any(inp[k] == "separated" for k in self._couplers)
         self._supervise_brake_force()
-        b = self.train.cfg.behaviour
         safety_trip = separated or self.pipe_tripped or self.brake_force_low          # ILK-01..03
         rapid = safety_trip if b.separation_trips_rapid else (self.pipe_tripped or self.brake_force_low)
         driver_eb = self._handle_brake() >= 8
@@ -271,11 +279,11 @@ class Vehicle:
         # ILK-05: the doors can open only while the door-open relay acts (below 5 km/h, where the seal is long
         # off); the seal follows the doors as they are now, not as they were: doors left open at standstill
         # and the train set to 40 km/h close and are sealed in the same instant.
-        relay = speed < cfg.door_relay_kmh
+        relay = v_read < cfg.door_relay_kmh
         doors_open = inp["doors"] == "open" and relay
-        if self.seal and (speed < cfg.seal_off_kmh or doors_open):
+        if self.seal and (v_read < cfg.seal_off_kmh or doors_open):
             self.seal = False
-        elif not self.seal and speed > cfg.seal_on_kmh and not doors_open:
+        elif not self.seal and v_read > cfg.seal_on_kmh and not doors_open:
             self.seal = True
         doors = "open" if doors_open and not self.seal else "closed"
         # ILK-06
@@ -287,9 +295,9 @@ class Vehicle:
                     or order(unit_names[u][0]) == "open" or order(unit_names[u][1]) == "down"
                     for u in self.units}
         # compressor governor (docs/decisions.md): start below 780 kPa, stop at 880 kPa
-        if not self.compressor and pressure < cfg.compressor_start_kpa:
+        if not self.compressor and p_read < cfg.compressor_start_kpa:
             self.compressor = True
-        elif self.compressor and pressure >= cfg.compressor_stop_kpa:
+        elif self.compressor and p_read >= cfg.compressor_stop_kpa:
             self.compressor = False
         out = {
             "EB valve": "de-energised" if eb_loop_open else "energised",
@@ -357,6 +365,8 @@ class Vehicle:
     # ILK-03: brake force supervision
     def _supervise_brake_force(self) -> None:
         demand = self._handle_brake() > 0 or self.inputs["ATP brake"] != "none"
+        if self.train.cfg.behaviour.brake_force_handle_only:                          # faulty variants only
+            demand = self._handle_brake() > 0
         inputs, least = self.inputs, self.cfg.brake_force_min_pct
         weak = demand and any(inputs[k] < least for k in self._forces)
         if weak and self._force_timer is None and not self.brake_force_low:
