@@ -39,16 +39,17 @@ SUT_ARG := $(if $(SUT),--sut $(SUT))
 MUTANTS ?= 200
 SEED ?= 1
 MUTATE_STAMP := $(VENV)/.mutate-installed
+BENCH_STAMP := $(VENV)/.bench-installed
 
 SHARDS ?= 4
 SHARD ?= 1
 SHARD_RESULTS := reports/shards
 
-CAMPAIGN_ITEMS := F-NET-30,F-NET-31,F-NET-32,F-NET-33,F-NET-34,F-ILK-10,F-ATP-14
-# Random sequences per invariant in make campaign (the features' own budget, 25-40, in make test/report).
+CAMPAIGN_ITEMS := F-NET-30,F-NET-31,F-NET-32,F-NET-33,F-NET-34,F-ILK-10,F-ATP-14,F-NET-35,F-ATP-15
+# Random sequences per invariant in make campaign (the features' own budget, 10-100, in make test/report).
 SEQUENCES ?= 400
 
-.PHONY: help report test check trace clean distclean mutate shard merge durations campaign
+.PHONY: help report test check trace clean distclean mutate shard merge durations campaign performance req-sweep equivalence
 
 help: ## list the targets
 	@echo "Train network conformance suite: CRH2, metro TCN, ATP (PYTEST_ARGS=... and SUT=... pass through to pytest)"
@@ -80,10 +81,19 @@ test: $(VENV_STAMP) $(NODE_STAMP) $(CHROMIUM) ## the project's own tests, the wh
 mutate: $(VENV_STAMP) $(MUTATE_STAMP) ## mutation testing of the references (MUTANTS=200 SEED=1, RESUME=1 keeps the last run's kills): kill rate per reference, reports/mutation.md
 	$(PY) -m outline.mutation --mutants $(MUTANTS) --seed $(SEED) $(if $(filter auto,$(JOBS)),,--jobs $(JOBS)) $(if $(RESUME),--resume)
 
+# ~30 min on two cores for every mark (the budget: outline/sequences/equivalence.py); a mark already checked in
+# the current budget is not run again unless ALL=1.
+equivalence: $(VENV_STAMP) $(MUTATE_STAMP) ## the differential checker on each mark of sut/reference/EQUIVALENT_MUTANTS.txt not yet checked (ALL=1: every mark) and on PER_RULE=6 mutants of each rule-based exclusion: reports/equivalence.json/.md; an overturned mark moves to OVERTURNED_MUTANTS.txt
+	$(PY) -m outline.sequences.equivalence --move $(if $(ALL),--all) $(if $(filter auto,$(JOBS)),,--jobs $(JOBS))
+	$(PY) -m outline.sequences.rule_check --per-rule $(or $(PER_RULE),6) $(if $(filter auto,$(JOBS)),,--jobs $(JOBS))
+
 # No Allure report: 16,120 rows make one of ~400 MB even with evidence for failures only (3160 rows: 82 MB).
 # A campaign's report: make report PYTEST_ARGS="--item F-NET-32 --evidence failed".
 campaign: $(VENV_STAMP) ## the fault campaigns in full (every single and every double fault, 8 and 16 cars), and the random-sequence invariants with SEQUENCES sequences each: verdicts and each failing row
 	$(PY) -m pytest features $(XDIST) -q -rf --item $(CAMPAIGN_ITEMS) --sequences $(SEQUENCES) $(SUT_ARG) $(PYTEST_ARGS)
+
+req-sweep: $(VENV_STAMP) ## run `pytest features --req <ID>` against every faulty variant, ID the requirement it breaks: each must exit 1 (make test runs a sample)
+	REQ_SWEEP=1 $(PY) -m pytest tests/test_req_selection.py $(XDIST_TESTS) -q -rf $(PYTEST_ARGS)
 
 shard: $(VENV_STAMP) ## one shard of the conformance run (SHARDS=4 SHARD=1, balanced by .test_durations): allure results in reports/shards/<SHARD>
 	@rm -rf $(SHARD_RESULTS)/$(SHARD) && mkdir -p $(SHARD_RESULTS)/$(SHARD)
@@ -100,6 +110,10 @@ merge: $(VENV_STAMP) $(NODE_STAMP) ## one report from every shard's results (rep
 
 durations: $(VENV_STAMP) ## record each scenario's duration in .test_durations (one process), which make shard balances by
 	$(PY) -m pytest features -p no:xdist -q --store-durations --durations-path .test_durations $(SUT_ARG)
+
+# Only draws: the bench scripts measure, each appending its row with --record (docs/performance.md says how).
+performance: $(VENV_STAMP) $(BENCH_STAMP) ## docs/performance.md and docs/performance.svg from the benchmark history, bench/history.jsonl: today's figures against the targets, and the history plotted
+	$(PY) -m bench.report
 
 check: $(VENV_STAMP) ## python -m outline check: registry, features, steps and requirements agree
 	$(PY) -m outline check
@@ -121,6 +135,10 @@ $(VENV_STAMP): pyproject.toml
 
 $(MUTATE_STAMP): pyproject.toml
 	$(PY) -m pip install --quiet -e '.[mutate]'
+	touch $@
+
+$(BENCH_STAMP): pyproject.toml
+	$(PY) -m pip install --quiet -e '.[bench]'
 	touch $@
 
 $(NODE_STAMP): package.json package-lock.json

@@ -93,7 +93,9 @@ def update(record: dict, profile: str) -> Path:
                 entry.setdefault("values", words)
     for name in sorted(seen.get("answers", {})):
         method, key = name.split(": ", 1)
-        raw["answers"].setdefault(method, {}).setdefault(key, "")
+        listed = raw["answers"].setdefault(method, {})
+        if not any(matches(pattern, key) for pattern in listed):     # `display.car*.lighting` lists car1..car8
+            listed[key] = ""
     for kind, got in sorted(seen.get("events", {}).items()):
         if not got.get("steps"):
             continue
