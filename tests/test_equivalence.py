@@ -101,3 +101,12 @@ def test_a_mutant_is_found_in_the_source_as_mutmut_writes_it() -> None:
     assert indent == "        " and equivalence._indented("g(1,\n         3)", indent) == "g(1,\n                 3)"
     assert equivalence._first_change(source, start, end, "g(1,\n                 3)") == (4, "2)", "3)")
     assert equivalence._first_change(source, start, end, "h(1,\n                 2)") == (3, "return g(1,", "return h(1,")
+
+
+def test_a_mutant_that_crashes_where_the_reference_does_not_is_overturned() -> None:
+    # An event without a kind: the checker's look at the trace raises, outside any driver call; the reference
+    # driven alone the same way raises nothing, so the crash is the mutant's, and a user would see it.
+    crash = Mark("sut/reference/atp/vdx.py", 'self._emit("VDX", "fs.on")', 'self._emit("VDX", None)', "a test's own")
+    record = check_mark(crash, budget=TINY, exact=False, shrink_s=5)
+    assert record["verdict"] == "overturned", record
+    assert record["difference"]["observable"] == "an error raised where the reference raises none", record

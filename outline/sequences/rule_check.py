@@ -82,7 +82,7 @@ def main(argv: list[str] | None = None) -> int:
         per_rule[reason] = {"mutants": len(sites), "checked": 0, "confirmed": 0, "overturned": 0}
     for r in results:
         per_rule[r["rule"]]["checked"] += 1
-        per_rule[r["rule"]][r["verdict"]] += 1
+        per_rule[r["rule"]][r["verdict"]] = per_rule[r["rule"]].get(r["verdict"], 0) + 1
     report = equivalence.load_report(args.out)
     report["rules"] = {"per_rule": per_rule, "asked": args.per_rule, "seed": args.seed, "budget": budget_id(),
                        "mutants": sorted(results, key=lambda r: (r["rule"], r["path"], r["line"], r["after"]))}
