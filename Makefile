@@ -61,13 +61,13 @@ report: $(VENV_STAMP) $(NODE_STAMP) ## run every feature, build reports/html/ind
 	@$(PY) -m pytest features $(XDIST) --alluredir $(RESULTS) $(SUT_ARG) $(PYTEST_ARGS); status=$$?; \
 	$(PY) -m outline trace --results $(RESULTS) --md reports/traceability.md --html reports/traceability.html \
 		--allure $(RESULTS) || exit $$?; \
-	$(PY) -m outline.mutation --to-allure $(RESULTS) || exit $$?; \
+	$(PY) -m outline.mutate.mutation --to-allure $(RESULTS) || exit $$?; \
 	npx --no-install allure generate $(RESULTS) --output $(HTML) >/dev/null || exit $$?; \
-	$(PY) -m outline.allure_html $(HTML)/index.html; \
+	$(PY) -m outline.report.allure_html $(HTML)/index.html; \
 	archive=reports/conformance-$$(git rev-parse --short HEAD 2>/dev/null || echo local).html; \
 	rm -f reports/conformance-*.html; ln -f $(HTML)/index.html $$archive 2>/dev/null || cp $(HTML)/index.html $$archive; \
 	echo "report: $(HTML)/index.html (one self-contained file; to archive: $$archive)"; \
-	$(PY) -m outline.summary $(RESULTS); \
+	$(PY) -m outline.report.summary $(RESULTS); \
 	exit $$status
 
 test: $(VENV_STAMP) $(NODE_STAMP) $(CHROMIUM) ## the project's own tests, the whole conformance run, then the contract check (every catalogue entry read by some step); fails if any fails
@@ -79,7 +79,7 @@ test: $(VENV_STAMP) $(NODE_STAMP) $(CHROMIUM) ## the project's own tests, the wh
 	[ $$t -eq 0 ] && [ $$f -eq 0 ] && [ $$c -eq 0 ]
 
 mutate: $(VENV_STAMP) $(MUTATE_STAMP) ## mutation testing of the references (MUTANTS=200 SEED=1, RESUME=1 keeps the last run's kills): kill rate per reference, reports/mutation.md
-	$(PY) -m outline.mutation --mutants $(MUTANTS) --seed $(SEED) $(if $(filter auto,$(JOBS)),,--jobs $(JOBS)) $(if $(RESUME),--resume)
+	$(PY) -m outline.mutate.mutation --mutants $(MUTANTS) --seed $(SEED) $(if $(filter auto,$(JOBS)),,--jobs $(JOBS)) $(if $(RESUME),--resume)
 
 # ~30 min on two cores for every mark (the budget: outline/sequences/equivalence.py); a mark already checked in
 # the current budget is not run again unless ALL=1.
@@ -104,9 +104,9 @@ merge: $(VENV_STAMP) $(NODE_STAMP) ## one report from every shard's results (rep
 	@test -n "$$(ls -d $(SHARD_RESULTS)/*/ 2>/dev/null)" || { echo "no shard results under $(SHARD_RESULTS)/"; exit 1; }
 	@rm -rf $(HTML)
 	npx --no-install allure generate $(SHARD_RESULTS)/*/ --output $(HTML) >/dev/null
-	@$(PY) -m outline.allure_html $(HTML)/index.html
+	@$(PY) -m outline.report.allure_html $(HTML)/index.html
 	@echo "report: $(HTML)/index.html ($$(ls -d $(SHARD_RESULTS)/*/ | wc -l) shards)"
-	@$(PY) -m outline.summary $(SHARD_RESULTS)/*/
+	@$(PY) -m outline.report.summary $(SHARD_RESULTS)/*/
 
 durations: $(VENV_STAMP) ## record each scenario's duration in .test_durations (one process), which make shard balances by
 	$(PY) -m pytest features -p no:xdist -q --store-durations --durations-path .test_durations $(SUT_ARG)

@@ -10,7 +10,7 @@ export default {
         reportName: "Train network conformance: CRH2, metro TCN, ATP",
         // One self-contained index.html: opened from disk (file://) it cannot fetch separate data files.
         singleFile: true,
-        // Tree = test outline: class -> category -> item (labels set by outline/pytest_plugin.py).
+        // Tree = test outline: class -> category -> item (labels set by outline/plugin/pytest_plugin.py).
         groupBy: ["epic", "feature", "story"],
       },
     },

@@ -3,4 +3,4 @@ for every test below the repository root."""
 
 from steps import STEP_MODULES
 
-pytest_plugins = ["outline.pytest_plugin", *STEP_MODULES]
+pytest_plugins = ["outline.plugin.pytest_plugin", *STEP_MODULES]

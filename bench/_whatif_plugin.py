@@ -5,7 +5,7 @@ Loaded only into the benchmark's extra conformance pass (`-p _whatif_plugin`), s
 switch is a stand-in for a fix proposed in the benchmark's findings, not the fix itself:
 
   bddscan     the opposite of a fix now made: pytest-bdd's own per-step scan of every fixture instead of
-              the step index (outline/step_index.py, issue 14), to show what the index saves.
+              the step index (outline/plugin/step_index.py, issue 14), to show what the index saves.
   (Done since, each first measured here: noattach, no report attachments without --alluredir, in
   steps/report.py; steplookup, the step index; nohypothesis, hypothesis's pytest plugin not loaded, in
   pyproject.toml's addopts.)
@@ -21,7 +21,7 @@ KNOWN = {"bddscan"}
 
 
 def _patch_bddscan() -> None:
-    from outline import step_index
+    from outline.plugin import step_index
 
     step_index.install = lambda: None                     # the outline plugin installs it at configure
     step_index._SCENARIO.find_fixturedefs_for_step = step_index.SCAN

@@ -7,7 +7,7 @@ import argparse
 import sys
 from pathlib import Path
 
-from .paths import REPO, Tree
+from outline.tree.paths import REPO, Tree
 
 
 def _step_modules(tree: Tree, given: list[str] | None) -> list[str]:
@@ -90,8 +90,8 @@ def main(argv: list[str] | None = None) -> int:
         help="write the fault-campaign features (F-NET-30..34) from the SUT's own fault space",
         description="Reads the boards, ring spans and supplies (the metro train's units, boards, modules, "
         "devices and bus lines) through the driver and writes each campaign's feature file: one scenario per "
-        "single fault (or pair), its expectation the design's for that kind of fault (outline/campaign.py, "
-        "outline/metro_campaign.py). --check compares with the checked-in files instead (exit 1 if they differ).",
+        "single fault (or pair), its expectation the design's for that kind of fault (outline/campaigns/campaign.py, "
+        "outline/campaigns/metro_campaign.py). --check compares with the checked-in files instead (exit 1 if they differ).",
     )
     campaign.add_argument("--sut", default="reference", help="SUT backend to read the fault space from "
                           "(default: %(default)s)")
@@ -100,7 +100,7 @@ def main(argv: list[str] | None = None) -> int:
     args = parser.parse_args(argv)
     tree = Tree.at(args.root)
     if args.command == "steps":
-        from .catalogue import entries, render_markdown, render_text
+        from outline.tree.catalogue import entries, render_markdown, render_text
 
         found = entries(_step_modules(tree, None), tree.root / "features")
         if args.md:
@@ -116,24 +116,24 @@ def main(argv: list[str] | None = None) -> int:
         print(f"\n{len(chosen)} of {len(found)} step definitions", file=sys.stderr)
         return 0
     if args.command == "assertions":
-        from .assertions import table
+        from outline.tree.assertions import table
 
         print(table(tree.root / "features"))
         return 0
     if args.command == "campaign":
-        from .campaign import run as campaign_run
+        from outline.campaigns.campaign import run as campaign_run
 
         sys.path.insert(0, str(tree.root))
         return campaign_run(tree.root, args.sut, args.check)
     if args.command == "check":
-        from .check import run
+        from outline.tree.check import run
 
         return run(tree, None if args.no_steps else _step_modules(tree, args.step_module))
     if args.command == "new":
-        from .new_item import run as new_item
+        from outline.tree.new_item import run as new_item
 
         return new_item(tree, args.cls, args.category, args.title, args.req, args.profile)
-    from .render import run
+    from outline.tracing.render import run
 
     return run(tree, args.results, md=args.md, html=args.html, allure=args.allure)
 

@@ -20,7 +20,7 @@ from sut.contract import declaration as declarations
 from sut.contract.guard import ContractDriver, Recorder
 from sut.driver import TrainDriver
 from sut.snapshot import SnapshotCache, SnapshotDriver
-from outline import step_index
+from outline.plugin import step_index
 from steps import report
 from steps.diagram import Bound
 from steps import verdicts

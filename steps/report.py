@@ -94,7 +94,7 @@ def _write_environment(driver: TrainDriver, config: pytest.Config) -> None:
     # its lock for each of 528 scenarios was a tenth of what the report costs).
     results_dir = getattr(config.option, "allure_report_dir", None)
     if results_dir:
-        from outline.allure_env import write_environment
+        from outline.report.allure_env import write_environment
 
         described = driver.describe()
         seen = config.stash.setdefault(_WRITTEN, set())

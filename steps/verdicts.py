@@ -4,13 +4,13 @@
 - "informative deviation", for a failed Then of an `@informative` scenario (a check of what no requirement
   states, docs/decisions.md): an xfail whose reason starts with INFORMATIVE, so it never fails conformance
   and the reviewer still sees what the SUT did.
-Both are counted apart from other skips in the summary and the Allure report (outline/summary.py,
+Both are counted apart from other skips in the summary and the Allure report (outline/report/summary.py,
 allure_meta.py)."""
 from __future__ import annotations
 
 import pytest
 
-from outline.summary import INFORMATIVE, NOT_APPLICABLE   # the summary and the Allure categories read the same words
+from outline.report.summary import INFORMATIVE, NOT_APPLICABLE   # the summary and the Allure categories read the same words
 from sut.contract.catalogue import ContractBreach
 
 

@@ -336,7 +336,7 @@ class TrainDriver(abc.ABC):
     def supplies(self) -> list[str]:
         """The power supplies `power_off` can switch off, e.g. 'car3.LCU' (the unit's own) and 'car3.LCU.RXC'
         (a command board's own supply, CMD-01); with the boards and the ring's spans, the single faults a
-        campaign runs through (outline/campaign.py)."""
+        campaign runs through (outline/campaigns/campaign.py)."""
         raise self._unsupported("supplies")
 
     def token_holder(self) -> list[str]:

@@ -40,7 +40,7 @@ def project(tmp_path):
     def make(tree: str = "good", steps: tuple[str, ...] = ("good_steps",), conftest_extra: str = "") -> Path:
         shutil.copytree(DATA / tree, tmp_path, dirs_exist_ok=True)
         shutil.copy(REPO / "features" / "test_outline.py", tmp_path / "features" / "test_outline.py")
-        plugins = ["outline.pytest_plugin", *steps]
+        plugins = ["outline.plugin.pytest_plugin", *steps]
         (tmp_path / "conftest.py").write_text(f"pytest_plugins = {plugins!r}\n{conftest_extra}")
         (tmp_path / "pytest.ini").write_text(PYTEST_INI)
         return tmp_path

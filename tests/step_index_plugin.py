@@ -1,10 +1,10 @@
 """Loaded by tests/test_step_index.py into a collect-only run of the features: every step of every scenario
-looked up both ways, pytest-bdd's scan and the index (outline/step_index.py); prints what it found."""
+looked up both ways, pytest-bdd's scan and the index (outline/plugin/step_index.py); prints what it found."""
 from __future__ import annotations
 
 import pytest
 
-from outline import step_index
+from outline.plugin import step_index
 
 
 @pytest.hookimpl(trylast=True)

@@ -1,6 +1,6 @@
 from pathlib import Path
 
-from outline.allure_env import read_environment, write_environment
+from outline.report.allure_env import read_environment, write_environment
 
 
 def test_none_dir_does_nothing():

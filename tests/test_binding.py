@@ -2,7 +2,7 @@ from pathlib import Path
 
 import pytest
 
-from outline.binding import feature_paths
+from outline.plugin.binding import feature_paths
 
 from tests.helpers import DATA
 

@@ -8,8 +8,8 @@ from pathlib import Path
 import pytest
 
 import steps
-from outline.assertions import KINDS, count
-from outline.stepdefs import definitions_in_modules
+from outline.tree.assertions import KINDS, count
+from outline.plugin.stepdefs import definitions_in_modules
 from steps import budgets
 from sut.backends import resolve
 from sut.contract import declaration as declarations

@@ -1,4 +1,4 @@
-"""The single-fault campaigns (issue 16, outline/campaign.py): generated from the SUT's own fault space, and
+"""The single-fault campaigns (issue 16, outline/campaigns/campaign.py): generated from the SUT's own fault space, and
 kept equal to it."""
 from __future__ import annotations
 
@@ -7,10 +7,11 @@ from pathlib import Path
 
 import pytest
 
-from outline import campaign, metro_campaign
-from outline.campaign import NO_MDM9, OFF_THE_RING, RIDES, TAKES_OVER
-from outline.fault_model import Fault, Records, TrainShape, fault_record
-from outline.campaign_text import example_rows, powered, record_bound, regenerated_record_bound
+from outline.campaigns import campaign
+from outline.campaigns import metro_campaign
+from outline.campaigns.campaign import NO_MDM9, OFF_THE_RING, RIDES, TAKES_OVER
+from outline.campaigns.fault_model import Fault, Records, TrainShape, fault_record
+from outline.campaigns.campaign_text import example_rows, powered, record_bound, regenerated_record_bound
 from tests.variants import DOUBLE_ONLY
 from tests.test_faulty_variants import ROOT
 
@@ -70,7 +71,7 @@ def test_each_fault_gets_the_designs_answer(eight_cars, kind, target, group, car
 
 
 def test_the_single_fault_answers_are_the_fault_models(eight_cars) -> None:
-    """The campaign's groups, read car by car, are what outline/fault_model.py gives for each single fault."""
+    """The campaign's groups, read car by car, are what outline/campaigns/fault_model.py gives for each single fault."""
     shape = TrainShape.of(eight_cars)
     faults, _left_out = campaign.fault_space(eight_cars)
     for fault in faults:
@@ -80,7 +81,7 @@ def test_the_single_fault_answers_are_the_fault_models(eight_cars) -> None:
         assert shape.paths([fault]) == want, fault
 
 
-# -- the fault model (outline/fault_model.py) on double faults, against the articles read by hand -------------
+# -- the fault model (outline/campaigns/fault_model.py) on double faults, against the articles read by hand -------------
 def _paths(shape: TrainShape, *faults: Fault) -> str:
     return "".join("-" if p is None else str(p) for _car, p in sorted(shape.paths(faults).items()))
 
@@ -166,7 +167,7 @@ def test_a_record_after_a_takeover_is_looked_for_at_system_2_within_two_token_ro
     assert "| car1.CCU.sys1.TXC | car1.CCU.sys1 | TXC  |" in outline
 
 
-# -- fault records under two faults (outline/fault_model.py TrainShape.records), read off docs/decisions.md ----------
+# -- fault records under two faults (outline/campaigns/fault_model.py TrainShape.records), read off docs/decisions.md ----------
 def test_the_fault_records_of_a_double_fault_are_read_off_the_decisions(eight_cars) -> None:
     shape = TrainShape.of(eight_cars)
     sys1, sys2 = "car1.CCU.sys1", "car1.CCU.sys2"

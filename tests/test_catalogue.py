@@ -1,4 +1,4 @@
-"""The step catalogue (outline/catalogue.py): what a test engineer reads instead of the step modules."""
+"""The step catalogue (outline/tree/catalogue.py): what a test engineer reads instead of the step modules."""
 from __future__ import annotations
 
 import subprocess
@@ -6,7 +6,7 @@ import sys
 from pathlib import Path
 
 import steps
-from outline.catalogue import entries, render_markdown
+from outline.tree.catalogue import entries, render_markdown
 
 ROOT = Path(__file__).resolve().parents[1]
 

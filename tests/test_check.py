@@ -1,8 +1,8 @@
 from pathlib import Path
 
-from outline.check import check_tree
-from outline.paths import Tree
-from outline.stepdefs import definitions_in_modules
+from outline.tree.check import check_tree
+from outline.tree.paths import Tree
+from outline.plugin.stepdefs import definitions_in_modules
 
 from tests.helpers import DATA
 

@@ -12,7 +12,7 @@ from pathlib import Path
 
 import pytest
 
-from outline.requirements import load_requirements
+from outline.tree.requirements import load_requirements
 from sut.contract import ContractBreach, ContractFileError, ContractGap, load
 from sut.contract.catalogue import HERE, parse
 from sut.contract.guard import ContractDriver
@@ -137,7 +137,7 @@ def test_the_implementers_guide_is_rendered_from_the_catalogue() -> None:
 
 
 def test_the_readme_shows_todays_assertion_count_and_every_freedom_variant() -> None:
-    from outline.assertions import table
+    from outline.tree.assertions import table
     from tests.variants import FREEDOM, FREEDOM_CLASSES
     readme = (ROOT / "README.md").read_text(encoding="utf-8")
     assert table(ROOT / "features") in readme, "README's assertion table is stale: python -m outline assertions"

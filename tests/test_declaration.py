@@ -10,7 +10,7 @@ from pathlib import Path
 
 import pytest
 
-from outline.summary import load_results, summarize
+from outline.report.summary import load_results, summarize
 from sut.contract.declaration import DeclarationError, form, load, of_backend
 from sut.reference.atp.backend import ReferenceAtp
 from sut.reference.crh2.backend import ReferenceTrain

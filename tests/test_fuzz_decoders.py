@@ -25,7 +25,7 @@ import pytest
 from hypothesis import HealthCheck, example, given, settings
 from hypothesis import strategies as st
 
-from outline.stepdefs import context_of
+from outline.plugin.stepdefs import context_of
 from sut.codecs import arcnet, mvb
 from sut.codecs.arcnet import EOT, MAX_DATA, SOH, FrameError, crc16_arc, crc16_x25, decode_itt, decode_pac, encode_pac
 from sut.reference.crh2 import frames

@@ -2,7 +2,7 @@ from pathlib import Path
 
 import pytest
 
-from outline.gherkin import FeatureParseError, parse_feature
+from outline.tree.gherkin import FeatureParseError, parse_feature
 
 from tests.helpers import DATA
 

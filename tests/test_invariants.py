@@ -11,7 +11,7 @@ from hypothesis import strategies as st
 from outline.sequences.invariants import INVARIANTS
 from outline.sequences.judge import OPENING, search
 from outline.sequences.sentences import OPENINGS, PROFILES, sequences
-from outline.stepdefs import definitions_in_modules, step_problem
+from outline.plugin.stepdefs import definitions_in_modules, step_problem
 from steps import STEP_MODULES
 from sut.backends import resolve
 from sut.contract import declaration as declarations

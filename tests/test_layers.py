@@ -79,7 +79,7 @@ def test_no_module_of_the_sut_imports_itself_through_others() -> None:
 
 def test_no_module_of_the_project_imports_itself_through_others() -> None:
     graph = _imports(PACKAGES)
-    assert len(graph) > 150 and "outline.render" in graph and "outline.trace" in graph["outline.render"]
+    assert len(graph) > 150 and "outline.tracing.render" in graph and "outline.tracing.trace" in graph["outline.tracing.render"]
     assert _cycles(graph) == []
 
 
@@ -108,3 +108,15 @@ def test_each_layer_imports_only_what_it_may() -> None:
              for layer, banned in FORBIDDEN.items() if module.split(".")[0] == layer
              and any(dep == b or dep.startswith(b + ".") for b in banned)]
     assert wrong == []
+
+
+def test_outline_is_split_by_concern() -> None:
+    # issue 32: outline/ holds its command line and one subpackage per concern, each saying what it owns.
+    top = REPO / "outline"
+    modules = sorted(p.name for p in top.glob("*.py"))
+    assert modules == ["__init__.py", "__main__.py"], f"outline/ modules outside a subpackage: {modules}"
+    for package in sorted(p for p in top.iterdir() if (p / "__init__.py").exists()):
+        doc = ast.get_docstring(ast.parse((package / "__init__.py").read_text(encoding="utf-8")))
+        assert doc and len(doc.splitlines()) <= 3, f"outline/{package.name}/__init__.py: say what it owns, briefly"
+        assert f"   {package.name}/" in (REPO / "docs" / "architecture.md").read_text(encoding="utf-8"), \
+            f"docs/architecture.md does not place outline/{package.name}/"

@@ -1,13 +1,13 @@
-"""The metro single-fault campaign (F-NET-34, outline/metro_campaign.py): generated from the metro SUT's own
+"""The metro single-fault campaign (F-NET-34, outline/campaigns/metro_campaign.py): generated from the metro SUT's own
 fault space, kept equal to it, and grouped by the design's answers."""
 from __future__ import annotations
 
 import pytest
 
-from outline import metro_campaign as mc
-from outline.metro_campaign import (ACTIVE_LOST, ASIDE, DEAD_BRAKE, DEAD_DRIVE, LINE, MODULE_2, MODULE_IDLE,
+from outline.campaigns import metro_campaign as mc
+from outline.campaigns.metro_campaign import (ACTIVE_LOST, ASIDE, DEAD_BRAKE, DEAD_DRIVE, LINE, MODULE_2, MODULE_IDLE,
                                     OTHER_LOST, STANDBY, Fault)
-from outline.campaign_text import example_rows, powered
+from outline.campaigns.campaign_text import example_rows, powered
 from tests.test_faulty_variants import ROOT
 
 

@@ -1,4 +1,4 @@
-"""make mutate (outline/mutation.py, outline/mutation_plugin.py): where a mutant is, what is equivalent,
+"""make mutate (outline/mutate/mutation.py, outline/mutate/mutation_plugin.py): where a mutant is, what is equivalent,
 the kill rate per reference, and which scenario killed a mutant. The mutmut run itself is `make mutate`
 (minutes), not part of make test; its configuration is checked here."""
 from __future__ import annotations
@@ -13,8 +13,8 @@ from pathlib import Path
 
 import pytest
 
-from outline import mutation
-from outline.mutation import Mutant
+from outline.mutate import mutation
+from outline.mutate.mutation import Mutant
 
 ROOT = Path(__file__).resolve().parents[1]
 
@@ -155,7 +155,7 @@ def test_mutmut_mutates_the_references_and_runs_the_features_with_the_kill_recor
     mutmut = config["tool"]["mutmut"]
     assert mutmut["source_paths"] == ["sut/reference/"]
     assert mutmut["pytest_add_cli_args_test_selection"] == ["features/", "tests/test_bulk.py", "tests/test_kernel.py"]
-    assert "outline.mutation_plugin" in mutmut["pytest_add_cli_args"]
+    assert "outline.mutate.mutation_plugin" in mutmut["pytest_add_cli_args"]
     # snapshots off only while mutmut maps who reaches what (the plugin's pytest_configure), on for each mutant
     assert "--no-snapshots" not in mutmut["pytest_add_cli_args"]
     assert {"steps/", "features/", "outline/", "conftest.py"} <= set(mutmut["also_copy"])
@@ -169,7 +169,7 @@ def test_the_plugin_notes_the_scenario_that_killed_a_mutant(tmp_path: Path) -> N
     kills = tmp_path / "kills.tsv"
     env = dict(os.environ, MUTANT_UNDER_TEST="sut.reference.atp.vdx.xǁRelayǁpower__mutmut_3",
                CRH2_MUTATION_KILLS=str(kills), PYTHONPATH=str(ROOT))
-    subprocess.run([sys.executable, "-m", "pytest", "-q", "-p", "outline.mutation_plugin", "-p", "no:cacheprovider",
+    subprocess.run([sys.executable, "-m", "pytest", "-q", "-p", "outline.mutate.mutation_plugin", "-p", "no:cacheprovider",
                     "test_own.py", "features/test_x.py"], cwd=tmp_path, env=env, capture_output=True, text=True,
                    timeout=120)
     assert kills.read_text(encoding="utf-8") == \
@@ -191,7 +191,7 @@ def test_the_last_run_becomes_one_entry_of_the_allure_report(tmp_path: Path) -> 
 
 
 def test_the_summary_names_the_mutation_entry_and_does_not_count_it_as_a_scenario(tmp_path: Path) -> None:
-    from outline import summary
+    from outline.report import summary
     kept = tmp_path / "mutation.json"
     kept.write_text(json.dumps({"seed": 1, "mutants": [asdict(Mutant("a", "atp", "p.py", 1, "x", "y", "killed"))]}))
     mutation.to_allure(tmp_path, kept)
@@ -234,7 +234,7 @@ def test_a_mutant_inside_a_usage_error_is_passed_over_and_counted(tmp_path: Path
 
 
 def test_a_train_reference_is_judged_by_the_scenarios_alone_the_engine_also_by_its_own_tests() -> None:
-    from outline.mutation_plugin import judges
+    from outline.mutate.mutation_plugin import judges
     ids = ["tests/test_bulk.py::test_both_ways", "features/test_outline.py::test_fnet01_a", "tests/test_kernel.py::test_k",
            "features/test_outline.py::test_filk06_b"]
     assert judges("sut.reference.crh2.ring.xǁRingǁ_start__mutmut_4", ids) == \
@@ -253,7 +253,7 @@ def test_snapshots_are_off_only_while_mutmut_maps_scenarios_to_functions(under_t
     # under that mutant, so the verdicts are those of a run without snapshots.
     from types import SimpleNamespace
 
-    from outline import mutation_plugin
+    from outline.mutate import mutation_plugin
     monkeypatch.setenv("MUTANT_UNDER_TEST", under_test)
     config = SimpleNamespace(option=SimpleNamespace(no_snapshots=False))
     mutation_plugin.pytest_configure(config)
@@ -406,7 +406,7 @@ def test_only_the_tests_made_of_what_changed_are_mapped_again() -> None:
     assert again(steps__analysis_py="h2") == {"a", "b"}                # a helper their step module imports
     assert again(tests__test_bulk_py="t2") == {"c"}
     assert again(steps__fixtures_py="f2") is None                      # no noted test is made of it: all
-    assert again(outline__mutation_plugin_py="p2") is None             # how every test is mapped: all
+    assert again(outline__mutate__mutation_plugin_py="p2") is None             # how every test is mapped: all
 
 
 def test_tests_taken_out_of_mutmuts_map_are_mapped_again_as_new(tmp_path: Path) -> None:
@@ -535,7 +535,7 @@ def test_code_the_switches_leave_unread_and_functions_only_a_variant_calls_are_p
 def test_a_mutants_run_starts_with_the_references_per_process_caches_empty(monkeypatch: pytest.MonkeyPatch) -> None:
     from types import SimpleNamespace
 
-    from outline import mutation_plugin
+    from outline.mutate import mutation_plugin
     from sut.reference import bulk
     from sut.reference.crh2 import frames
     from sut.reference.crh2.backend import ReferenceTrain
@@ -568,7 +568,7 @@ def test_a_mutated_modules_own_tables_of_mutants_are_not_taken_for_caches(tmp_pa
     import importlib.util
     from types import SimpleNamespace
 
-    from outline import mutation_plugin
+    from outline.mutate import mutation_plugin
 
     source = tmp_path / "mutated_shape.py"
     source.write_text(
@@ -598,7 +598,7 @@ def test_a_mutated_modules_own_tables_of_mutants_are_not_taken_for_caches(tmp_pa
 def test_while_mutmut_maps_every_test_starts_with_the_caches_empty(monkeypatch: pytest.MonkeyPatch) -> None:
     """The map is learnt in one process: a cache filled by the first test that reads a class would hide the
     code that fills it from every later test, and a mutant of that code would meet only the first."""
-    from outline import mutation_plugin
+    from outline.mutate import mutation_plugin
     from sut.reference import bulk
 
     monkeypatch.setitem(bulk._CLASSES, int, ())
@@ -614,7 +614,7 @@ def test_each_modules_caches_are_read_from_its_source_once(monkeypatch: pytest.M
     """The map asks before every test, and a mutated module's source is large (6 s for all of them)."""
     import ast
 
-    from outline import mutation_plugin
+    from outline.mutate import mutation_plugin
     import sut.reference.bulk  # noqa: F401
 
     first = mutation_plugin.reference_caches()

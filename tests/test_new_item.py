@@ -9,8 +9,8 @@ from pathlib import Path
 
 import pytest
 
-from outline.new_item import NewItemError, add_item, next_item_id
-from outline.paths import Tree
+from outline.tree.new_item import NewItemError, add_item, next_item_id
+from outline.tree.paths import Tree
 
 ROOT = Path(__file__).resolve().parents[1]
 

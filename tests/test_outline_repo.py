@@ -8,9 +8,9 @@ the registry and the features disagree, e.g. with the skeleton's `items: []` no 
 
 import pytest
 
-from outline.check import check_tree
-from outline.paths import REPO
-from outline.stepdefs import definitions_in_modules
+from outline.tree.check import check_tree
+from outline.tree.paths import REPO
+from outline.plugin.stepdefs import definitions_in_modules
 from steps import STEP_MODULES
 
 pytestmark = pytest.mark.repo
@@ -24,8 +24,8 @@ def test_outline_check_passes_on_the_repository():
 
 def test_every_feature_file_is_bound():
     """features/test_outline.py binds what the registry lists, and nothing the registry does not know."""
-    from outline.binding import feature_paths
-    from outline.registry import load_registry
+    from outline.plugin.binding import feature_paths
+    from outline.tree.registry import load_registry
 
     registry = load_registry(REPO.registry)
     listed = {path for item in registry.items.values() for path in (item.feature, *item.translations)}

@@ -1,4 +1,4 @@
-"""outline.pytest_plugin end to end: throwaway projects bound by the real features/test_outline.py."""
+"""outline.plugin.pytest_plugin end to end: throwaway projects bound by the real features/test_outline.py."""
 
 import json
 

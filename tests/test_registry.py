@@ -2,7 +2,7 @@ from pathlib import Path
 
 import pytest
 
-from outline.registry import RegistryError, load_registry
+from outline.tree.registry import RegistryError, load_registry
 
 from tests.helpers import DATA, REPO
 

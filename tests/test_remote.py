@@ -17,7 +17,7 @@ import pytest
 from hypothesis import HealthCheck, given, settings
 from hypothesis import strategies as st
 
-from outline.allure_meta import CATEGORIES
+from outline.report.allure_meta import CATEGORIES
 from sut.backends import open_backend, resolve
 from sut.driver import TrainDriver
 from sut.errors import NotPoweredUp, OutOfRange, SutUnreachable, UnknownName

@@ -3,7 +3,7 @@
 The report is built here the way `make report` builds it, on a small run (two routine items): pytest with
 --alluredir (the plugin writes categories, executor and environment), `python -m outline trace --allure` (one
 "Traceability matrix" entry), `npx allure generate` with the project's allurerc.mjs (history kept in tmp, not
-in reports/), `python -m outline.allure_html` (drops the analytics tag). Then outline.report_browser opens
+in reports/), `python -m outline.report.allure_html` (drops the analytics tag). Then outline.report.report_browser opens
 index.html from disk (file://, as a reader does) with Playwright driving Debian's Chromium; see that module
 for what counts as an error. One test opens a scenario's page; another breaks copies of the report and checks
 that the same assertions catch each break.
@@ -24,12 +24,12 @@ from pathlib import Path
 
 import pytest
 
-from outline import report_browser
-from outline.allure_meta import REPORT_NAME    # allurerc.mjs names the report the same
+from outline.report import report_browser
+from outline.report.allure_meta import REPORT_NAME    # allurerc.mjs names the report the same
 
 ROOT = Path(__file__).resolve().parents[1]
 ITEMS = "R-CTL-01,R-DIA-01"
-TRACE_SECTION = "Traceability"          # outline/render.py: the matrix entry's tree section
+TRACE_SECTION = "Traceability"          # outline/tracing/render.py: the matrix entry's tree section
 _COUNTED = ("passed", "failed", "skipped", "xfailed", "xpassed")
 
 
@@ -62,7 +62,7 @@ def _build(work: Path) -> dict:
                       f"historyPath: {json.dumps(str(work / 'history.jsonl'))} }};\n", encoding="utf-8")
     _run(["npx", "--no-install", "allure", "generate", str(results), "--config", str(config),
           "--output", str(html)], "allure generate")
-    _run([sys.executable, "-m", "outline.allure_html", str(html / "index.html")], "outline.allure_html")
+    _run([sys.executable, "-m", "outline.report.allure_html", str(html / "index.html")], "outline.report.allure_html")
     return {"ran": ran, "index": str(html / "index.html"), "summary": summary}
 
 
@@ -119,7 +119,7 @@ def _result_id(index: str, name_prefix: str) -> str:
 
 def test_a_scenario_page_shows_what_a_reviewer_signs_off(report: dict) -> None:
     """Issue 17: the item's title, the full text of each requirement verified, the profile, the attachments."""
-    from outline.requirements import load_requirements
+    from outline.tree.requirements import load_requirements
 
     page = report_browser.load(f"{Path(report['index']).as_uri()}#{_result_id(report['index'], 'R-CTL-01')}")
     assert not page.errors, page.errors
@@ -143,7 +143,7 @@ def _missing_data_file(html: str) -> str:
 
 
 def _calling_out(html: str) -> str:
-    # What outline/allure_html.py strips from Allure's page: a script fetched from the network.
+    # What outline/report/allure_html.py strips from Allure's page: a script fetched from the network.
     return html.replace("</head>", '<script async src="https://analytics.invalid/tag.js"></script></head>', 1)
 
 

@@ -1,4 +1,4 @@
-"""The step index (outline/step_index.py) finds exactly what pytest-bdd's own scan finds, in the same order,
+"""The step index (outline/plugin/step_index.py) finds exactly what pytest-bdd's own scan finds, in the same order,
 for every step of every scenario of the real features (English and zh-CN)."""
 from __future__ import annotations
 
@@ -26,7 +26,7 @@ def test_the_index_finds_what_pytest_bdd_finds_for_every_step() -> None:
 def test_a_literal_prefix_is_never_longer_than_what_every_match_starts_with() -> None:
     from pytest_bdd import parsers
 
-    from outline.step_index import literal_chunks, literal_prefix
+    from outline.plugin.step_index import literal_chunks, literal_prefix
 
     assert literal_prefix(parsers.string("the train is powered")) == ("the train is powered", False)
     assert literal_prefix(parsers.parse('the cab {cab:d} monitor shows "{text}"')) == ("the cab ", True)

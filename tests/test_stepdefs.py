@@ -1,4 +1,4 @@
-from outline.stepdefs import definitions_in_modules, matching, step_problem
+from outline.plugin.stepdefs import definitions_in_modules, matching, step_problem
 
 
 def test_finds_pytest_bdd_registered_definitions(data_on_path):

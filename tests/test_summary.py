@@ -1,7 +1,7 @@
 import json
 from pathlib import Path
 
-from outline.summary import format_summary, load_results, main, statuses_by_name, summarize
+from outline.report.summary import format_summary, load_results, main, statuses_by_name, summarize
 
 
 def _result(path: Path, name: str, status: str, reqs=(), history=None, stop=1):

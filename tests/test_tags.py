@@ -1,7 +1,7 @@
 import pytest
 
-from outline import tags
-from outline.pytest_plugin import pytest_bdd_apply_tag
+from outline.tree import tags
+from outline.plugin.pytest_plugin import pytest_bdd_apply_tag
 
 
 def _marks(function):

@@ -2,8 +2,8 @@ import io
 import json
 from pathlib import Path
 
-from outline.paths import Tree
-from outline.trace import build_trace, render_plain, render_rich
+from outline.tree.paths import Tree
+from outline.tracing.trace import build_trace, render_plain, render_rich
 
 from tests.helpers import DATA
 
@@ -52,7 +52,7 @@ def test_rich_tables_render(monkeypatch):
 def test_matrix_as_markdown_html_and_an_allure_entry(tmp_path, data_on_path):
     import json
 
-    from outline.render import run
+    from outline.tracing.render import run
 
     data_on_path("good")
     out = io.StringIO()

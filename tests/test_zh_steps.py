@@ -8,7 +8,7 @@ from collections import defaultdict
 
 import pytest
 
-from outline.stepdefs import StepDef, definitions_in_modules, matching
+from outline.plugin.stepdefs import StepDef, definitions_in_modules, matching
 from steps import STEP_MODULES
 
 CJK = re.compile(r"[\u3000-\u303f\u4e00-\u9fff\uff00-\uffef]")

@@ -19,7 +19,7 @@ import os
 
 import pytest
 
-from outline.campaign import CAMPAIGNS
+from outline.campaigns.campaign import CAMPAIGNS
 from steps.fixtures import SUT_CHOOSER
 
 CAMPAIGN_ITEMS = {campaign.item for campaign in CAMPAIGNS}

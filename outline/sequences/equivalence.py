@@ -9,7 +9,7 @@ differential checker (differential.py: hypothesis stimulus sequences, every obse
 every stimulus) in a fixed budget (BUDGET below): no difference found is a mark confirmed; a difference is
 the mark overturned, recorded with the shortest sequence that shows it, the observable, and both values.
 
-What a mark names: the mutants of mutmut (3.8, the `mutate` extra) that outline/mutation.py leaves out by
+What a mark names: the mutants of mutmut (3.8, the `mutate` extra) that outline/mutate/mutation.py leaves out by
 it, found the way mutmut writes them (`create_mutations`, which parses and mutates a file without running
 anything): each is built exactly as mutmut would. Without mutmut, the mark's line is replaced in every
 function where the file says it (or in the function a `path::Class.method` mark names). Each mutant is the
@@ -25,7 +25,7 @@ first difference.
 The evidence, reports/equivalence.json (and a short .md), is keyed by the mark's mutant (path, original
 line, mutated line) and the budget: a mark whose text changed, or a budget changed since, is not yet
 checked (tests/test_equivalence.py fails until it is). By default only such marks run; `--all` runs every
-mark again. The rule-based exclusions of outline/mutation.py are sampled through the same checker by
+mark again. The rule-based exclusions of outline/mutate/mutation.py are sampled through the same checker by
 outline/sequences/rule_check.py, into the same report.
 """
 from __future__ import annotations
@@ -519,7 +519,7 @@ def _mark_job(mark: Mark) -> tuple[str, dict[str, Any]]:
 def move_overturned(report: dict[str, Any], marks_file: Path | None = None,
                     overturned: Path | None = None) -> tuple[int, int]:
     """Take each mark the report overturned out of the marks (one line each, the rest untouched) and note it
-    in OVERTURNED_MUTANTS.txt with what the checker saw: outline/mutation.py no longer leaves its mutants
+    in OVERTURNED_MUTANTS.txt with what the checker saw: outline/mutate/mutation.py no longer leaves its mutants
     out, so they count as survivors until a scenario kills them. A mark that names no mutant (its line is
     no longer in the code) goes too. (moved, dropped)."""
     marks_file, overturned = marks_file or EQUIVALENTS, overturned or OVERTURNED
@@ -542,7 +542,7 @@ def move_overturned(report: dict[str, Any], marks_file: Path | None = None,
     marks_file.write_text("".join(kept), encoding="utf-8")
     header = ("# Marks of EQUIVALENT_MUTANTS.txt that the differential checker overturned (make equivalence,\n"
               "# reports/equivalence.json): a difference from the reference at the driver interface, so not\n"
-              "# equivalent. outline/mutation.py does not leave them out: they are survivors until a scenario\n"
+              "# equivalent. outline/mutate/mutation.py does not leave them out: they are survivors until a scenario\n"
               "# kills them. One per line:\n"
               "#   path | original line | mutated line | profile: observable, reference -> mutant\n")
     text = overturned.read_text(encoding="utf-8") if overturned.exists() else header

@@ -1,7 +1,7 @@
 """The rule-based exclusions of `make mutate` through the differential checker (issue 31): `make equivalence`
 (`python -m outline.sequences.rule_check --per-rule 6`).
 
-outline/mutation.py passes over, while drawing, the mutants its rules call unobservable (usage errors, a
+outline/mutate/mutation.py passes over, while drawing, the mutants its rules call unobservable (usage errors, a
 backend's self-description and stimulus read-back, unread events and fields, faulty-variant branches, code
 the switches leave unrun). A rule is code, not a mark, and covers thousands of mutants; a seeded sample of
 each rule's mutants (every mutant mutmut writes for the references, found with mutmut's own
@@ -20,7 +20,7 @@ import time
 from pathlib import Path
 from typing import Any
 
-from outline import mutation
+from outline.mutate import mutation
 
 from . import equivalence
 from .equivalence import ROOT, Site, budget_id, check_site, mutmut_sites, profiles_of

@@ -1,6 +1,6 @@
 """What the CRH2 design does under a set of faults: by which path each car's CI and BCU get the driver's command.
 
-The campaigns' expectations (outline/campaign.py, outline/double_campaign.py) come from here, and this is the
+The campaigns' expectations (outline/campaigns/campaign.py, outline/campaigns/double_campaign.py) come from here, and this is the
 articles' design, not the reference's code:
 - the ring (NET-03): a node takes part while its MDM8 lives (its unit's supply on); a span carries frames while
   it is not cut and both its nodes take part; broadcasts go both ways, so a node hears every node it is joined

@@ -11,10 +11,10 @@ from pathlib import Path
 
 from pytest_bdd.parser import render_string
 
-from .check import check_tree
-from .gherkin import Scenario
-from .paths import Tree
-from .summary import WORST_FIRST, load_results, statuses_by_name
+from outline.tree.check import check_tree
+from outline.tree.gherkin import Scenario
+from outline.tree.paths import Tree
+from outline.report.summary import WORST_FIRST, load_results, statuses_by_name
 
 
 @dataclass

@@ -28,4 +28,4 @@ class Tree:
             return path.as_posix()
 
 
-REPO = Tree.at(Path(__file__).resolve().parents[1])
+REPO = Tree.at(Path(__file__).resolve().parents[2])

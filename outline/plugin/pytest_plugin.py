@@ -17,10 +17,10 @@ from pathlib import Path
 import pytest
 from pytest_bdd.scenario import iterparentnodeids
 
-from . import tags as tagvocab
-from . import step_index
-from .registry import Registry, RegistryError, load_registry
-from .stepdefs import StepDef, context_of, step_problem
+from outline.tree import tags as tagvocab
+from outline.plugin import step_index
+from outline.tree.registry import Registry, RegistryError, load_registry
+from outline.plugin.stepdefs import StepDef, context_of, step_problem
 
 MARKERS = (
     "item(id): test-outline item carried by the scenario (from @item:<ID>)",
@@ -62,7 +62,7 @@ def pytest_sessionstart(session: pytest.Session) -> None:
     config = session.config
     results = getattr(config.option, "allure_report_dir", None)
     if results and not hasattr(config, "workerinput"):      # once per run, not per xdist worker
-        from . import allure_meta
+        from outline.report import allure_meta
 
         allure_meta.write(results, Path(config.rootpath), " ".join(["pytest", *config.invocation_params.args]))
 
@@ -267,7 +267,7 @@ _REQ_TEXTS = pytest.StashKey[dict]()
 
 def _requirements(config: pytest.Config) -> dict:
     if _REQ_TEXTS not in config.stash:
-        from .requirements import load_requirements
+        from outline.tree.requirements import load_requirements
 
         path = Path(config.rootpath) / "docs" / "requirements.md"
         config.stash[_REQ_TEXTS] = load_requirements(path) if path.is_file() else {}

@@ -1,4 +1,4 @@
-"""One-line verdict of a run from its allure results: `python -m outline.summary reports/allure-results`.
+"""One-line verdict of a run from its allure results: `python -m outline.report.summary reports/allure-results`.
 
 Reads the `*-result.json` files allure-pytest-bdd writes (one per scenario run), so `make report` can say
 what happened without opening the HTML.
@@ -41,7 +41,7 @@ class Summary:
     touched: set[str] = field(default_factory=set)  # requirement IDs of every scenario that ran
     not_passed: list[tuple[str, str]] = field(default_factory=list)  # (status, scenario name)
     by_profile: dict[str, Counter] = field(default_factory=dict)     # train profile -> status counts
-    mutation: str = ""                   # the name of `make mutate`'s entry (outline/mutation.py), if any
+    mutation: str = ""                   # the name of `make mutate`'s entry (outline/mutate/mutation.py), if any
 
     @property
     def total(self) -> int:
@@ -81,7 +81,7 @@ def summarize(results: list[dict]) -> Summary:
     summary = Summary()
     for result in results:
         if "traceability" in labels(result, "tag"):
-            continue                     # the matrix's own entry (outline.render) is not a scenario
+            continue                     # the matrix's own entry (outline.tracing.render) is not a scenario
         if "mutation" in labels(result, "tag"):
             summary.mutation = result.get("name", "?")       # nor is the last make mutate run
             continue
@@ -126,7 +126,7 @@ def format_summary(summary: Summary) -> str:
 
 
 def main(argv: list[str] | None = None) -> int:
-    parser = argparse.ArgumentParser(prog="python -m outline.summary", description=__doc__.splitlines()[0])
+    parser = argparse.ArgumentParser(prog="python -m outline.report.summary", description=__doc__.splitlines()[0])
     parser.add_argument("results", nargs="*", default=["reports/allure-results"],
                         help="allure results directories (several: the shards of one run)")
     args = parser.parse_args(argv)

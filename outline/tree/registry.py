@@ -12,7 +12,7 @@ from pathlib import Path
 
 import yaml
 
-from .requirements import REQ_ID
+from outline.tree.requirements import REQ_ID
 
 ITEM_ID = re.compile(r"^(?P<cls>[A-Z]+)-(?P<cat>[A-Z]+)-(?P<nn>\d{2})$")
 KEBAB = re.compile(r"^[a-z0-9]+(-[a-z0-9]+)*$")

@@ -1,4 +1,4 @@
-"""The traceability matrix as Markdown and HTML (jinja2 templates in outline/templates/), and as an Allure
+"""The traceability matrix as Markdown and HTML (jinja2 templates in outline/tracing/templates/), and as an Allure
 result carrying the HTML page, so the report links it as one entry of its own; `run` is `python -m outline
 trace` (the tables on a terminal, or these files)."""
 from __future__ import annotations
@@ -12,9 +12,9 @@ from pathlib import Path
 
 from jinja2 import Environment, FileSystemLoader, select_autoescape
 
-from .coverage import Coverage, counts, coverage
-from .paths import Tree
-from .trace import build_trace, render_plain, render_rich
+from outline.tracing.coverage import Coverage, counts, coverage
+from outline.tree.paths import Tree
+from outline.tracing.trace import build_trace, render_plain, render_rich
 
 TEMPLATES = Path(__file__).parent / "templates"
 

@@ -17,8 +17,8 @@ import platform
 import subprocess
 from pathlib import Path
 
-from outline.allure_env import write_environment
-from outline.summary import INFORMATIVE, NOT_APPLICABLE
+from outline.report.allure_env import write_environment
+from outline.report.summary import INFORMATIVE, NOT_APPLICABLE
 
 # The whole suite's title (allurerc.mjs names the report the same: tests/test_report_in_browser.py reads it there).
 REPORT_NAME = "Train network conformance: CRH2, metro TCN, ATP"

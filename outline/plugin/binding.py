@@ -12,9 +12,9 @@ from pathlib import Path
 import pytest
 from pytest_bdd.utils import CONFIG_STACK
 
-from . import tags as tagvocab
-from .check import Problem, feature_files, lint_feature
-from .gherkin import Feature, FeatureParseError, parse_feature
+from outline.tree import tags as tagvocab
+from outline.tree.check import Problem, feature_files, lint_feature
+from outline.tree.gherkin import Feature, FeatureParseError, parse_feature
 
 
 def _registered_markers() -> set[str] | None:

@@ -1,9 +1,9 @@
-"""What each test mutmut maps is made of, for `make mutate`'s map (outline/mutation.py): a scenario is made of
+"""What each test mutmut maps is made of, for `make mutate`'s map (outline/mutate/mutation.py): a scenario is made of
 its feature file, the step modules its steps bind to and each step definition they bind to (named by its
 module and the digest of its source, `steps/x.py@<digest>`), found as pytest-bdd finds them (the step index);
 every test also of its own file (tests/test_bulk.py, tests/test_kernel.py are no scenarios).
 
-Loaded into a collect-only run (`-p outline.scenario_inputs`), it writes {nodeid: [files]} as JSON to the path
+Loaded into a collect-only run (`-p outline.mutate.scenario_inputs`), it writes {nodeid: [files]} as JSON to the path
 in $CRH2_SCENARIO_INPUTS. When some of those files change, only the tests made of them are mapped again.
 """
 from __future__ import annotations
@@ -17,7 +17,7 @@ from pathlib import Path
 import pytest
 from pytest_bdd.steps import step_function_context_registry
 
-from outline import step_index
+from outline.plugin import step_index
 
 OUT = "CRH2_SCENARIO_INPUTS"
 

@@ -1,6 +1,6 @@
 """Open a generated Allure report in headless Chromium and read what a reader would see.
 
-`python -m outline.report_browser reports/html/index.html` prints the report's total, its tree sections and
+`python -m outline.report.report_browser reports/html/index.html` prints the report's total, its tree sections and
 every console error; exit 1 if the page did not render or logged an error. `tests/test_report_in_browser.py`
 uses `load()` on a report it builds.
 
@@ -17,7 +17,7 @@ What counts as an error, all from the page's own session:
 - requests that failed at the network layer ("requestfailed"), unless Chromium itself cancelled them
   (net::ERR_ABORTED: an aborted prefetch or a request dropped by navigation, not a missing resource);
 - any request that leaves the machine (a scheme other than file:, data:, blob:, about:): the report is
-  self-contained, and outline/allure_html.py strips Allure's analytics tag so that it does not call out;
+  self-contained, and outline/report/allure_html.py strips Allure's analytics tag so that it does not call out;
 - error text the report renders in the page instead of logging it ("Failed to fetch <data file>: data not
   found", Allure's message for a data file missing from the report).
 Warnings, console.log/info and Chromium's process noise on stderr (D-Bus, VA-API, sandbox notices of a
@@ -76,7 +76,7 @@ _STATE_JS = r"""(() => {
 _SHOWN_ERROR = re.compile(r"Failed to fetch|data not found")
 
 
-# A report opened from disk loads nothing from elsewhere (and must not call out, see outline/allure_html.py).
+# A report opened from disk loads nothing from elsewhere (and must not call out, see outline/report/allure_html.py).
 _LOCAL_SCHEMES = {"file", "data", "blob", "about"}
 
 

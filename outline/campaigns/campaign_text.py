@@ -1,4 +1,4 @@
-"""What the single- and double-fault campaigns (outline/campaign.py, outline/double_campaign.py) write alike:
+"""What the single- and double-fault campaigns (outline/campaigns/campaign.py, outline/campaigns/double_campaign.py) write alike:
 the command and its bounds, the sentences a fault is told in, the Background, the invariants every scenario
 checks, and an aligned Examples table."""
 from __future__ import annotations

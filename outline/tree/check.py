@@ -10,12 +10,12 @@ from collections.abc import Iterable, Sequence
 from dataclasses import dataclass, field
 from pathlib import Path
 
-from . import tags as tagvocab
-from .gherkin import Feature, FeatureParseError, parse_feature
-from .paths import REPO, Tree
-from .registry import ITEM_ID, Registry, RegistryError, load_registry
-from .requirements import Requirement, load_requirements
-from .stepdefs import StepDef, definitions_in_modules, step_problem
+from outline.tree import tags as tagvocab
+from outline.tree.gherkin import Feature, FeatureParseError, parse_feature
+from outline.tree.paths import REPO, Tree
+from outline.tree.registry import ITEM_ID, Registry, RegistryError, load_registry
+from outline.tree.requirements import Requirement, load_requirements
+from outline.plugin.stepdefs import StepDef, definitions_in_modules, step_problem
 
 
 @dataclass(frozen=True, order=True)
@@ -89,7 +89,7 @@ def lint_feature(feature: Feature, rel: str) -> tuple[list[Problem], list[Proble
 
 # A feature tagged @on_request is a generated campaign of thousands of rows written from a few sentences: its
 # first rows per outline are checked here; every row is checked where it runs (the collection-time step check
-# of outline/pytest_plugin.py, file:line as here). All of them took `outline check` from 1 s to 20 s.
+# of outline/plugin/pytest_plugin.py, file:line as here). All of them took `outline check` from 1 s to 20 s.
 ON_REQUEST_ROWS = 64
 
 

@@ -1,4 +1,4 @@
-"""pytest plugin for `make mutate` (outline/mutation.py): what may judge a mutant, and what killed it.
+"""pytest plugin for `make mutate` (outline/mutate/mutation.py): what may judge a mutant, and what killed it.
 
 mutmut runs the tests that reach a mutant's function in a forked child with MUTANT_UNDER_TEST naming
 the mutant, and stops at the first failure (-x); it keeps only the exit code.

@@ -9,9 +9,9 @@ import sys
 from dataclasses import dataclass
 from pathlib import Path
 
-from .paths import Tree
-from .registry import load_registry
-from .requirements import REQ_ID, load_requirements
+from outline.tree.paths import Tree
+from outline.tree.registry import load_registry
+from outline.tree.requirements import REQ_ID, load_requirements
 
 # The opening of a scenario of each train profile, in sentences of the step library.
 PROFILE_BACKGROUND = {

@@ -18,9 +18,9 @@ from collections.abc import Iterable
 from dataclasses import dataclass, field
 from pathlib import Path
 
-from .gherkin import parse_feature
-from .stepdefs import StepDef, definitions_in_modules
-from .step_index import literal_prefix
+from outline.tree.gherkin import parse_feature
+from outline.plugin.stepdefs import StepDef, definitions_in_modules
+from outline.plugin.step_index import literal_prefix
 
 _CJK = re.compile(r"[\u3400-\u9fff]")
 _PARSE_FIELD = re.compile(r"\{(?P<name>\w+)(?::(?P<format>[^}]*))?\}")

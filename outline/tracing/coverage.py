@@ -10,7 +10,7 @@ from __future__ import annotations
 
 from dataclasses import dataclass
 
-from .trace import Trace
+from outline.tracing.trace import Trace
 
 LEVELS = ("full", "partly", "none", "out of scope")
 

@@ -1,4 +1,4 @@
-"""Post-process the generated Allure 3 report: `python -m outline.allure_html reports/html/index.html`.
+"""Post-process the generated Allure 3 report: `python -m outline.report.allure_html reports/html/index.html`.
 
 Allure 3.18's awesome report always embeds a Google Analytics tag (no option turns it off; only the allure2
 plugin honours ALLURE_NO_ANALYTICS). A conformance report is opened from disk, often offline, and should not

@@ -11,9 +11,9 @@ from __future__ import annotations
 from collections import Counter
 from pathlib import Path
 
-from .binding import feature_paths
-from .gherkin import parse_feature
-from .stepdefs import definitions_in_modules, matching
+from outline.plugin.binding import feature_paths
+from outline.tree.gherkin import parse_feature
+from outline.plugin.stepdefs import definitions_in_modules, matching
 
 KINDS = ("requirement", "requirement, budget-timed", "project decision", "informative")
 

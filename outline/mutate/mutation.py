@@ -1,4 +1,4 @@
-"""Mutation testing of the references: `make mutate` (`python -m outline.mutation --mutants 200 --seed 1`).
+"""Mutation testing of the references: `make mutate` (`python -m outline.mutate.mutation --mutants 200 --seed 1`).
 
 A conformance suite is worth the faulty implementations it rejects; the hand-written variants in
 tests/variants.py are the ones somebody thought of. This breaks the references in ways nobody chose:
@@ -21,7 +21,7 @@ Phases:
    its fields that no check reads (in_unread_field), those in a branch only faulty variants take
    (in_variant_only_branch) and those in other code the switches leave unrun (never_run: an operand they
    decide, a function only a variant calls); how many were passed over is printed and kept.
-3. `mutmut run <sample>`; outline/mutation_plugin.py notes which scenario failed for each mutant.
+3. `mutmut run <sample>`; outline/mutate/mutation_plugin.py notes which scenario failed for each mutant.
 4. The table: file:line, the change, killed by which scenario or survived; three kill rates per part
    (killed + timed out; "no tests" means no scenario reaches the function, which counts as a survivor):
    of everything drawn (the mutants passed over while drawing count as not killed: they were not run),
@@ -49,11 +49,11 @@ from dataclasses import asdict, dataclass
 from pathlib import Path
 
 # What a step module is made of lives with the plugin that notes it (one way: mutation -> scenario_inputs).
-from .scenario_inputs import sha as _sha, step_definitions
+from outline.mutate.scenario_inputs import sha as _sha, step_definitions
 # A mark counts as equivalent in the last rate only with the checker's evidence (reports/equivalence.json).
-from .sequences import equivalence
+from outline.sequences import equivalence
 
-ROOT = Path(__file__).resolve().parents[1]
+ROOT = Path(__file__).resolve().parents[2]
 MUTANTS_DIR = ROOT / "mutants"
 EQUIVALENTS = ROOT / "sut" / "reference" / "EQUIVALENT_MUTANTS.txt"
 KILLS = MUTANTS_DIR / "kills.tsv"
@@ -109,13 +109,13 @@ def _mutmut(*args: str, env: dict[str, str] | None = None) -> subprocess.Complet
 # the metro backend's remove_key "no tests" though F-NET-25 had come to remove the key). So the tests made of
 # what changed since the map was made are taken out of mutmut's map and mapped again, and only they: what each
 # test is made of (its feature file, and each step definition its steps bind to, by the source of that
-# definition) is noted beside the map (outline/scenario_inputs.py). Mapping every scenario takes ~40 min under
+# definition) is noted beside the map (outline/mutate/scenario_inputs.py). Mapping every scenario takes ~40 min under
 # mutmut's trampolines; a changed feature file costs its own scenarios, a changed step definition the scenarios
 # that use it, a change elsewhere in a step module (a helper, an import) every scenario whose step modules
 # reach that module, and a change the notes cannot place (a module no noted test uses, such as the fixtures,
 # or no notes at all) every test.
 # The plugin is among them: it decides how every test is mapped, so a change to it maps every test again.
-MAPS_EVERY_TEST = ("outline/mutation_plugin.py",)
+MAPS_EVERY_TEST = ("outline/mutate/mutation_plugin.py",)
 MAPPED_FROM = ("features/**/*.feature", "steps/*.py", "tests/test_bulk.py", "tests/test_kernel.py",
                *MAPS_EVERY_TEST)
 MAP_DIGEST = MUTANTS_DIR / "scenarios.sha256"          # what the map was made from (JSON; see map_sources)
@@ -196,10 +196,10 @@ def tests_to_map_again(old: dict[str, str], new: dict[str, str], inputs: dict[st
 
 
 def note_inputs() -> None:
-    """What each mapped test is made of now (outline/scenario_inputs.py, a collect-only run), beside the map."""
-    from outline.scenario_inputs import OUT
+    """What each mapped test is made of now (outline/mutate/scenario_inputs.py, a collect-only run), beside the map."""
+    from outline.mutate.scenario_inputs import OUT
     result = subprocess.run([sys.executable, "-m", "pytest", "--collect-only", "-q", "-p", "no:xdist",
-                             "-p", "no:cacheprovider", "-p", "outline.scenario_inputs", *MAPPED_TESTS],
+                             "-p", "no:cacheprovider", "-p", "outline.mutate.scenario_inputs", *MAPPED_TESTS],
                             cwd=ROOT, capture_output=True, text=True, env=dict(os.environ, **{OUT: str(INPUTS)}))
     if result.returncode != 0 or not INPUTS.exists():
         INPUTS.unlink(missing_ok=True)                # no notes: the next change maps every test again
@@ -238,7 +238,7 @@ def generate() -> None:
             print(f"mutmut: the scenarios or steps changed since the last map: mapping the {len(again)} tests "
                   "made of what changed again", flush=True)
             _forget(stats, again)
-    result = _mutmut("run", "outline.mutation.generate-only")
+    result = _mutmut("run", "outline.mutate.mutation.generate-only")
     if stats.exists():
         if old != sources or not INPUTS.exists():
             note_inputs()
@@ -806,7 +806,7 @@ PROBE = ("features", "--item", "R-CTL-03,F-NET-21,F-ATP-04", "tests/test_kernel.
 
 
 def probe_mutant_mode() -> None:
-    """Run a few tests the way a mutant's run runs them (mutmut's trampolines, outline/mutation_plugin.py in
+    """Run a few tests the way a mutant's run runs them (mutmut's trampolines, outline/mutate/mutation_plugin.py in
     a mutant's mode) under a mutant that does not exist, so every call takes the original code: they must
     pass. If they fail, the harness itself breaks the tests, and every mutant would look killed (seed 7's
     first run, 2026-11-26: the plugin emptied mutmut's own tables and 99 % were "killed")."""
@@ -927,7 +927,7 @@ def table(mutants: list[Mutant], seed: int, left_out: dict[str, int] | None = No
     lines = [f"# Mutation testing of the references ({len(mutants)} mutants, seed {seed})", ""]
     if left_out:
         lines += ["Passed over while drawing: " + ", ".join(f"{n} {why}" for why, n in sorted(left_out.items()))
-                  + " (sut/reference/EQUIVALENT_MUTANTS.txt; usage errors: outline/mutation.py).", ""]
+                  + " (sut/reference/EQUIVALENT_MUTANTS.txt; usage errors: outline/mutate/mutation.py).", ""]
     unchecked = sum(m.status == "not checked" for m in mutants)
     if unchecked:
         lines += [f"{unchecked} sampled mutants were not checked (the run was stopped before them); the rates "
@@ -985,7 +985,7 @@ def to_allure(results: Path, kept: Path) -> Path | None:
                                      f"{drawn_total} of everything drawn (seed {data['seed']}): {per_part}"},
         "stage": "finished", "start": now, "stop": now,
         "labels": [{"name": "epic", "value": "Mutation testing"}, {"name": "suite", "value": "make mutate"},
-                   {"name": "tag", "value": "mutation"}],           # outline.summary: not a scenario
+                   {"name": "tag", "value": "mutation"}],           # outline.report.summary: not a scenario
         "attachments": [{"name": "mutants", "source": attachment, "type": "text/markdown"}],
     }
     out = results / f"{result['uuid']}-result.json"
@@ -994,7 +994,7 @@ def to_allure(results: Path, kept: Path) -> Path | None:
 
 
 def main(argv: list[str] | None = None) -> int:
-    parser = argparse.ArgumentParser(prog="python -m outline.mutation", description=__doc__.split("\n\n")[0])
+    parser = argparse.ArgumentParser(prog="python -m outline.mutate.mutation", description=__doc__.split("\n\n")[0])
     parser.add_argument("--mutants", type=int, default=200, help="how many mutants to sample (default 200)")
     parser.add_argument("--seed", type=int, default=1, help="seed of the sample (default 1)")
     parser.add_argument("--jobs", type=int, default=os.cpu_count() or 2, help="mutants tested at once")
