@@ -435,20 +435,18 @@ def check_site(site: Site, profiles: tuple[str, ...], budget: dict[str, list[tup
     tried = 0
     for profile in profiles:
         for composition, drawn, examples in budget.get(profile, []):
+            def against(other: type) -> Any:
+                return search(_factory(TRAINS[profile], profile, composition), _factory(other, profile, composition),
+                              profile, examples=examples, max_actions=actions, seed=seed, shrink_s=shrink_s,
+                              sequences=DRAWN[drawn])
             try:
-                difference = search(_factory(TRAINS[profile], profile, composition),
-                                    _factory(mutant[profile], profile, composition), profile,
-                                    examples=examples, max_actions=actions, seed=seed, shrink_s=shrink_s,
-                                    sequences=DRAWN[drawn])
+                difference = against(mutant[profile])
             except Exception as error:          # noqa: BLE001  (an error outside the driver calls: read it)
                 # Raised outside a driver call (opening or configuring the train, or reading what it shows:
                 # an event without a kind). If the reference driven alone the same way raises nothing, the
                 # mutant's crash is what a user would see: a difference. Otherwise the checker is at fault.
                 try:
-                    search(_factory(TRAINS[profile], profile, composition),
-                           _factory(TRAINS[profile], profile, composition), profile,
-                           examples=examples, max_actions=actions, seed=seed, shrink_s=shrink_s,
-                           sequences=DRAWN[drawn])
+                    against(TRAINS[profile])
                 except Exception as own:        # noqa: BLE001
                     return {"verdict": "error", "sequences": tried, "difference": {
                         "profile": profile, "composition": composition, "drawn": drawn,
