@@ -49,3 +49,23 @@ def test_the_same_seed_gives_the_same_answer(capsys: pytest.CaptureFixture) -> N
     assert main(args) == 1
     assert capsys.readouterr().out == first
     assert "shortest sequence found" in first and "power_on()" in first
+
+
+class NarrowAmplitude(ReferenceAtp):
+    """Refuses a carrier amplitude of 0 mV, which the reference accepts (the audit's `(0, 10_000)` ->
+    `(1, 10_000)`): a refusal on one side only."""
+
+    def set_input(self, name, value):  # noqa: ANN001, ANN201
+        if name == "amplitude" and value == 0:
+            from sut.errors import OutOfRange
+            raise OutOfRange(name, value, "1..10000")
+        return super().set_input(name, value)
+
+
+def test_a_refusal_on_one_side_only_is_the_difference_shown() -> None:
+    from outline.sequences.differential import first_difference
+    from outline.sequences.stimuli import Action
+    difference = first_difference(opener("reference", "atp"), lambda: NarrowAmplitude.open("atp"), "atp",
+                                  [Action("set_input", ("amplitude", 0))])
+    assert difference is not None
+    assert (difference.what, difference.a, difference.b) == ("refused", "no refusal", "OutOfRange")

@@ -497,6 +497,23 @@ def test_a_mutant_in_a_field_no_check_reads_is_passed_over_one_in_a_read_field_i
     assert {"frm", "to", "state"} <= mutation.read_fields() and "period_us" not in mutation.read_fields()
 
 
+def test_a_change_that_may_raise_instead_is_no_longer_passed_over_by_what_nobody_reads() -> None:
+    """The two rule exclusions the differential checker overturned (reports/equivalence.md, 2026-11-27)."""
+    vdx, backend = "sut/reference/atp/vdx.py", "sut/reference/metro/backend.py"
+    texts = {path: (ROOT / path).read_text(encoding="utf-8").splitlines() for path in (vdx, backend)}
+    field = next(i for i, t in enumerate(texts[vdx], start=1) if "fall_ms=round(fall, 3)" in t)
+    before = texts[vdx][field - 1].strip()
+    assert mutation.rule_reason(vdx, field, before, before.replace("fall_ms=round(fall, 3)", "fall_ms=round(fall, 4)")) \
+        == "unread field"
+    assert mutation.rule_reason(vdx, field, before, before.replace("round(fall, 3)", "round(None, 3)")) is None
+    raise_ = next(i for i, t in enumerate(texts[backend], start=1) if 'raise UnknownName("reading", name, known)' in t)
+    before = texts[backend][raise_ - 1].strip()
+    assert mutation.rule_reason(backend, raise_, before, before.replace('"reading"', '"XXreadingXX"')) == "usage error"
+    assert mutation.rule_reason(backend, raise_, before, before.replace("name, known", "None, known")) is None
+    assert mutation.may_raise_otherwise("f(a, b)", "f(a, )") and mutation.may_raise_otherwise("f(a, b)", "f(b)")
+    assert not mutation.may_raise_otherwise("x = a < b", "x = a <= b")
+
+
 def test_the_columns_a_mutation_changes_are_found_in_its_line() -> None:
     line = '        emit("a", x=1, y=2)'
     assert mutation.changed_columns(line, 'emit("a", x=1, y=2)', 'emit("a", x=1, y=None)') == (25, 26)

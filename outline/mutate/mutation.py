@@ -732,15 +732,29 @@ def never_run_reason(path: str, line: int, before: str, after: str) -> str | Non
                 None)
 
 
+def may_raise_otherwise(before: str, after: str) -> bool:
+    """Whether a one-token change may raise where the original line does not: an argument made None
+    (`round(None, 3)`, `UnknownName("reading", None, known)`, `emit("VDX", None)`) or dropped (`f(a, )`, a
+    keyword gone), mutmut's argument mutations. The differential checker overturned one mutant of the
+    "unread field" rule and one of the "usage error" rule this way (2026-11-27, reports/equivalence.md): what
+    a rule says is not read (a diagnostic field, an error's wording, a diagnostic event) is not read, but a
+    TypeError in computing it is seen by everyone."""
+    dropped = after.count(",") < before.count(",") or ", )" in after and ", )" not in before
+    return after.count("None") > before.count("None") or dropped
+
+
 def rule_reason(path: str, line: int, before: str, after: str) -> str | None:
-    """The rule (the module's note) that passes a mutant of `line` over, or None: the draw's and the reading's."""
-    if in_usage_error(path, line):
+    """The rule (the module's note) that passes a mutant of `line` over, or None: the draw's and the reading's.
+    The rules about what nobody reads (a usage error's words, an unread event or field) hold only for a change
+    that cannot raise instead (may_raise_otherwise)."""
+    unread = not may_raise_otherwise(before, after)
+    if unread and in_usage_error(path, line):
         return "usage error"
-    if in_unread_event(path, line):
+    if unread and in_unread_event(path, line):
         return "unread event"
     if in_variant_only_branch(path, line):
         return "faulty-variant branch"
-    if in_unread_field(path, line, before, after):
+    if unread and in_unread_field(path, line, before, after):
         return "unread field"
     return never_run_reason(path, line, before, after)
 
