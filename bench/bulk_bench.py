@@ -14,6 +14,7 @@ Target (issue 5): 72 h in <= 10 s of wall time.
 from __future__ import annotations
 
 import argparse
+import resource
 import sys
 import time
 import tracemalloc
@@ -29,7 +30,14 @@ from tests.test_bulk import S, frame_by_frame as exactly, powered   # noqa: E402
 HOUR = 3600 * S
 
 
-def frame_by_frame(minutes: float) -> tuple[float, int, int]:
+def _peak_rss_mib() -> float:
+    return resource.getrusage(resource.RUSAGE_SELF).ru_maxrss / 1024      # KiB on Linux
+
+
+def frame_by_frame(minutes: float) -> tuple[float, int, int, float]:
+    """Wall seconds, kernel events, trace events and MiB of peak resident memory grown, per simulated hour
+    frame by frame (what a train runs at when bulk advance is refused: issue 33 saw 3.4 GB in 3 min)."""
+    rss0 = _peak_rss_mib()
     train = powered()
     k0, t0 = train.train.kernel.events, len(train.train.events)
     span = round(minutes * 60 * S)
@@ -38,7 +46,8 @@ def frame_by_frame(minutes: float) -> tuple[float, int, int]:
         train.advance(span)
     wall = time.perf_counter() - wall
     per_hour = HOUR / span
-    return wall * per_hour, round((train.train.kernel.events - k0) * per_hour), round((len(train.train.events) - t0) * per_hour)
+    return (wall * per_hour, round((train.train.kernel.events - k0) * per_hour),
+            round((len(train.train.events) - t0) * per_hour), (_peak_rss_mib() - rss0) * per_hour)
 
 
 def bulk_run(hours: float, every_h: float) -> dict:
@@ -76,11 +85,12 @@ def main() -> None:
     args = ap.parse_args()
 
     load_before = _history.load()
-    wall_h, events_h, trace_h = frame_by_frame(args.fbf_minutes)
-    figures: dict[str, float] = {"fbf_wall_s_per_sim_h": wall_h,
-                                 "fbf_kernel_events_per_sim_h": events_h, "fbf_trace_events_per_sim_h": trace_h}
+    wall_h, events_h, trace_h, rss_h = frame_by_frame(args.fbf_minutes)
+    figures: dict[str, float] = {"fbf_wall_s_per_sim_h": wall_h, "fbf_kernel_events_per_sim_h": events_h,
+                                 "fbf_trace_events_per_sim_h": trace_h, "fbf_peak_rss_mib_per_sim_h": rss_h}
     print(f"frame by frame   {wall_h:8.1f} s wall per simulated hour -> {wall_h * args.hours / 3600:.2f} h for "
-          f"{args.hours:g} h; {events_h:,} kernel events and {trace_h:,} trace events per simulated hour")
+          f"{args.hours:g} h; {events_h:,} kernel events and {trace_h:,} trace events per simulated hour; peak "
+          f"resident memory grows {rss_h:,.0f} MiB per simulated hour (unbounded: the whole trace is held)")
     for every in (1.0, 3.0):
         r = bulk_run(args.hours, every)
         rep = r["report"]

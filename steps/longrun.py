@@ -251,3 +251,31 @@ def _(sut: TrainDriver, declaration: ProfileDeclaration, master: str, bound: flo
             f"record {t_ms} ms {owner} {board} {event} where {row} was expected")
         assert at_ms <= t_ms <= at_ms + bound, (
             f"record of {owner} {board} {event} stamped {t_ms} ms, the {event} happened at {at_ms:.0f} ms")
+
+
+# -- the counters against the trace: what the long-run checks stand on -----------------------------------
+# Event kinds that each count one per event at a node, by the counter that counts them and the part of the
+# node that emits them (sut/contract/crh2.yaml: token.rx from `<node>.MDM8`, status.tx from `<node>.CPU3`).
+COUNTED_EVENTS = {"tokens received": ("token.rx", ".MDM"), "status sent": ("status.tx", ".CPU"),
+                  "token initialisations": ("token.init", ".MDM")}
+
+
+@then("每个节点的令牌、状态数据和令牌初始化计数与上电以来的记录一致")
+@then("every node's counts of token visits, status data and token initialisations agree with the trace since power-up")
+def _(sut: TrainDriver, declaration: ProfileDeclaration) -> None:
+    """The long runs judge the token and the status cycle by the node counters (TST-02): a counter must count
+    what the node did. Read after a plain advance from power-up (the whole trace is owed), each counter lies
+    between the events logged up to one time step (the declared timing resolution) before now and those up
+    to now: a node may count an event at the instant it logs it or within that step."""
+    trace = sut.trace
+    assert not trace.select(kind="time.skip"), "a skipped stretch: the trace does not hold every event since power-up"
+    now, step = sut.now_us, declaration.parameter("timing_resolution_us")
+    wrong = []
+    for node in sut.ring_nodes():
+        counters = sut.counters(node)
+        for counter, (kind, part) in COUNTED_EVENTS.items():
+            times = [ev.t for ev in trace.select(kind=kind) if ev.source.startswith(node + part)]
+            lo, hi = sum(t <= now - step for t in times), len(times)
+            if not lo <= counters[counter] <= hi:
+                wrong.append(f"{node} {counter} {counters[counter]}, its trace shows {lo}..{hi} {kind}")
+    assert not wrong, "counters that do not count what the trace shows: " + "; ".join(wrong[:6])

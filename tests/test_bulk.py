@@ -10,6 +10,7 @@ from __future__ import annotations
 import re
 import subprocess
 import sys
+import warnings
 from contextlib import contextmanager
 from pathlib import Path
 from typing import Iterator
@@ -469,9 +470,10 @@ def test_a_soak_s_trace_outside_its_skips_is_the_frame_by_frame_trace() -> None:
 
 class _Toy:
     """The smallest bulk models: a kernel, a trace, and a tick every 10 ms (the steady period). bulk.py reads
-    only the model's own classes (sut.*): each class names its module so (a class does not inherit it)."""
+    a class that declares BULK_READABLE itself (a class does not inherit it), wherever it lives: these live in
+    tests/."""
 
-    __module__ = "sut.reference.toy"
+    BULK_READABLE = True
     BULK_SKIP = ("events",)                      # the trace is not state
 
     def __init__(self) -> None:
@@ -491,7 +493,7 @@ class _TwoCounters(_Toy):
     """Events that move two fields at once (no train emits such an event yet, so the replay's general case
     would otherwise go untested): every 10 ms, a count and twice the count."""
 
-    __module__ = "sut.reference.toy"
+    BULK_READABLE = True
 
     def __init__(self) -> None:
         super().__init__()
@@ -507,7 +509,7 @@ class _ClosureCounter(_Toy):
     """A count that lives in a closure's cell, not in an attribute: a jump writes it back through the cell
     (seed 6: a mutant of that write survived, no model keeping a moving number in a closure)."""
 
-    __module__ = "sut.reference.toy"
+    BULK_READABLE = True
 
     def __init__(self) -> None:
         super().__init__()
@@ -562,3 +564,47 @@ def test_a_soak_whose_traffic_shows_no_pattern_to_replay_still_agrees_both_ways(
     assert_same(exact, fast)
     report, = fast.trace.select(kind="bulk.report")
     assert report["skipped_us"] > 0 and report["replayed_us"] == 0, report
+
+
+class _UndeclaredToy(_TwoCounters):
+    """A subclass that says nothing about its state: it might keep some where the reader does not look."""
+
+
+def test_a_class_that_does_not_declare_itself_readable_runs_frame_by_frame_and_says_so(jumps: list[int]) -> None:
+    # Issue 33: bulk advance decides by what a class declares, not by where it lives (the toys above live in
+    # tests/ and are carried over jumps); a class that declares nothing is not read, and the user is told.
+    exact, fast = _UndeclaredToy(), _UndeclaredToy()
+    exact.kernel.run(5 * S)
+    with pytest.warns(bulk.BulkRefused, match="_UndeclaredToy does not declare BULK_READABLE"):
+        bulk.advance(fast, 5 * S)
+    assert not jumps, f"an undeclared class was carried over {jumps} periods"
+    assert fast.events == exact.events and fast.count == exact.count == 501
+
+
+class _DeclaredAtp(ReferenceAtp):
+    """A user's own backend, outside sut/: a subclass of the ATP rig (which bulk advance reads as its model)
+    that keeps no state of its own and says so."""
+
+    BULK_READABLE = True
+
+
+class _UndeclaredAtp(ReferenceAtp):
+    """The same, saying nothing: before issue 33 both were refused for living outside sut/."""
+
+
+@pytest.mark.parametrize(("rig", "carried"), [(_DeclaredAtp, True), (_UndeclaredAtp, False)],
+                         ids=["declared", "undeclared"])
+def test_a_users_subclass_of_a_reference_part_gets_bulk_advance_if_it_declares_itself(
+        rig: type, carried: bool, jumps: list[int]) -> None:
+    exact, fast = rig(), rig()
+    for train in (exact, fast):
+        train.configure(sets=1)
+        train.power_on()
+    with frame_by_frame():
+        exact.advance(60 * S)                   # past the start-up self-test, then steady (5 s periods)
+    with warnings.catch_warnings(record=True) as said:
+        warnings.simplefilter("always")
+        fast.advance(60 * S)
+    assert bool(jumps) == carried, jumps
+    assert any(issubclass(w.category, bulk.BulkRefused) for w in said) == (not carried)
+    assert fast.trace.to_csv() == exact.trace.to_csv()

@@ -1113,3 +1113,52 @@ for _module in (freedom_atp, freedom_crh2, freedom_metro):
     for _variant in _module.FREEDOM:
         globals()[_variant.__name__] = _variant
     FREEDOM += _module.FREEDOM
+
+
+# -- the contract's event entries (issue 31: the checker's overturned marks) ---------------------------------
+# An event a step is handed must come from a source its kind's contract entry names and carry every field the
+# entry requires (sut/contract/catalogue.py, check_event), whatever the step then reads: a step that selects
+# by kind alone would take a mis-sourced event, and a field nobody reads could be left out unseen.
+class LoopReportedByAnotherSource(ReferenceAtp):
+    """VDX-04 (contract vdx.yaml, loop.change: source VDX): the loop's changes are reported as the lower-case
+    `vdx`, a source the contract does not name (the checker's overturned marks of vdx.py:139)."""
+
+    def _emit(self, source, kind, **fields):  # noqa: ANN001, ANN202
+        super()._emit("vdx" if kind == "loop.change" else source, kind, **fields)
+
+
+class _PollsWithoutFCode(MetroTrain):
+    """The train of MvbPollsWithoutFCode: a subclass, so the reference's code is not edited."""
+
+    def emit(self, source, kind, **fields):  # noqa: ANN001, ANN201
+        if kind == "mvb.msg":
+            fields.pop("f_code", None)
+        super().emit(source, kind, **fields)
+
+
+class MvbPollsWithoutFCode(ReferenceMetro):
+    """TCN-03 (contract metro-tcn.yaml, mvb.msg: f_code required): the bus analyser's log of a poll leaves its
+    F_code out (the checker's overturned mark of tcds.py's mvb.msg emit)."""
+
+    def __init__(self) -> None:
+        super().__init__()
+        self._train = _PollsWithoutFCode(self._train.cfg)
+
+
+FAULTY += [
+    (LoopReportedByAnotherSource, "VDX-04", "F-ATP-05"),
+    (MvbPollsWithoutFCode, "TCN-03", "F-NET-21"),
+]
+
+
+class TokenVisitsCountedFromOne(ReferenceTrain):
+    """PRO-04/TST-02: every node's `tokens received` counter starts at 1, not 0 (the checker's overturned mark
+    of node.py): the long runs compare counters before and after and cannot see it; the counters against the
+    trace since power-up can (H-CPO-01)."""
+
+    def counters(self, node: str) -> dict[str, int]:
+        counts = super().counters(node)
+        return dict(counts, **{"tokens received": counts["tokens received"] + 1})
+
+
+FAULTY += [(TokenVisitsCountedFromOne, "PRO-04", "H-CPO-01")]

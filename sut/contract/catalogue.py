@@ -106,6 +106,23 @@ class Contract:
             raise ContractGap(f"a step read the field {name!r} of a {kind!r} event, which the {self.profile} "
                               f"contract does not list for that kind{self._where()}")
 
+    def check_event(self, source: str, kind: str, fields: Any, t_us: int) -> None:
+        """An event the SUT returned to a step: from a source the contract names for its kind, with every field
+        it requires. Whatever a step goes on to read, an event outside its kind's entry is the SUT's breach:
+        a step that selects by kind alone would otherwise take a mis-sourced event, and one missing a required
+        field would pass wherever no step reads that field."""
+        ev = self.events.get(kind)
+        if ev is None:
+            return                      # a kind no step asked for cannot come back; check_kind owns the gap
+        sources = [p.strip() for p in ev.source.split("|") if p.strip()]
+        if sources and not any(matches(p, source) for p in sources):
+            raise ContractBreach(f"{source} {kind} at {t_us / 1000:g} ms: the {self.profile} contract names its "
+                                 f"source {ev.source!r}{self._where()}")
+        missing = [n for n, spec in ev.fields.items() if spec.get("required", True) and n not in fields]
+        if missing:
+            raise ContractBreach(f"{source} {kind} at {t_us / 1000:g} ms has no field {missing[0]!r}; the "
+                                 f"{self.profile} contract requires it{self._where()}")
+
     def answer_keys(self, method: str) -> dict[str, Any]:
         return (self.raw.get("answers") or {}).get(method) or {}
 

@@ -143,6 +143,8 @@ class ContractTrace:
             return None
         if self._guard._recorder is not None:
             self._guard._recorder.saw(self._guard._profile, ev)
+        if self._guard._contract is not None:
+            self._guard._contract.check_event(ev.source, ev.kind, ev.fields, ev.t)
         return TraceEvent(ev.t, ev.source, ev.kind, CheckedFields(ev.fields, ev, self._guard))
 
     def _asked(self, kind: str | None, source: str | None, where: dict) -> None:

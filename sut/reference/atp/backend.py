@@ -47,6 +47,7 @@ SUPPLIES = ("VDX", "train 110V")
 
 
 class ReferenceAtp(PickledState, TrainDriver):
+    BULK_READABLE = True  # pragma: no mutate  (a speed declaration: bulk.py)
     backend_name = "reference"
     # One rig, three products' views of it: the 200C ATP alone (`atp`), the 300T VDX interface alone (`vdx`)
     # and the 200C ATP fitted to a CRH2 set (`atp-crh2`, ILK-08). A vendor of one declares only its own.
@@ -87,7 +88,7 @@ class ReferenceAtp(PickledState, TrainDriver):
         self._events.append(TraceEvent(self.kernel.now, source, kind, fields))
 
     # -- long runs: bulk advance (sut/reference/bulk.py) reads the rig itself as its model --------------
-    BULK_SKIP = ("_events",)          # the trace is history, not state
+    BULK_SKIP = ("_events", "_view")          # the trace and the index of it a step built are history, not state
 
     @property
     def events(self) -> list[TraceEvent]:

@@ -11,6 +11,7 @@ MS = 1000
 
 @dataclass(frozen=True)
 class Vdx:
+    BULK_READABLE = True  # pragma: no mutate  (a speed declaration: bulk.py)
     nominal_v: float = 110.0                  # VDX-02
     supply_lo: float = 0.70                   # VDX-02: 70 % .. 125 % of 110 V
     supply_hi: float = 1.25
@@ -39,6 +40,7 @@ POSTPONE = {"old": 16 * MS, "new": 48 * MS}   # VDX-06
 
 @dataclass(frozen=True)
 class Atp:
+    BULK_READABLE = True  # pragma: no mutate  (a speed declaration: bulk.py)
     cfsk_period_us: int = 50 * MS             # one CFSK comparison every 50 ms
     cfsk_confirmations: int = 3               # ATP-03
     decode_delay_us: int = 150 * MS           # ATP-02 dt: three comparisons
@@ -60,6 +62,7 @@ class Atp:
 
 @dataclass(frozen=True)
 class AtpConfig:
+    BULK_READABLE = True  # pragma: no mutate  (a speed declaration: bulk.py)
     vdx: Vdx = Vdx()
     atp: Atp = Atp()
 

@@ -19,6 +19,7 @@ KNOWN_PACKETS = ("CTCS-1", "MA", "ETCS-68", "ETCS-46", "line direction", "defaul
 
 @dataclass
 class Section:
+    BULK_READABLE = True  # pragma: no mutate  (a speed declaration: bulk.py)
     start_m: float
     length_m: float
     carrier: int
@@ -31,6 +32,7 @@ class Section:
 
 @dataclass
 class Cfsk:
+    BULK_READABLE = True  # pragma: no mutate  (a speed declaration: bulk.py)
     failed: bool = False
     carrier_set: str = "down"
     candidate: tuple[int, str] | None = None
@@ -41,6 +43,7 @@ class Cfsk:
 @dataclass
 class Generator:
     """What the track-circuit signal generator puts on the CFSK antenna."""
+    BULK_READABLE = True  # pragma: no mutate  (a speed declaration: bulk.py)
     carrier: int = 0
     code: str = ""
     amplitude_mv: float = 0.0
@@ -49,12 +52,14 @@ class Generator:
 
 @dataclass
 class Linking:
+    BULK_READABLE = True  # pragma: no mutate  (a speed declaration: bulk.py)
     group: str
     at_m: float
 
 
 @dataclass
 class OnboardState:
+    BULK_READABLE = True  # pragma: no mutate  (a speed declaration: bulk.py)
     mode: str = "SB"
     brake: str = "none"
     sections: list[Section] = field(default_factory=list)
@@ -67,6 +72,7 @@ class OnboardState:
 
 
 class OnboardAtp:
+    BULK_READABLE = True  # pragma: no mutate  (a speed declaration: bulk.py)
     def __init__(self, kernel: Kernel, cfg: Atp, emit: Callable[..., None],
                  on_brake: Callable[[], None] | None = None):
         self.kernel, self.cfg, self._emit = kernel, cfg, emit

@@ -25,6 +25,7 @@ LOOP_OPEN, LOOP_CLOSED = "open", "closed"
 class Relay:
     """A relay with its contact timings: the NO contact opens `no_open_us` after the coil loses power and
     closes `pick_up_us` after it is powered again, so a shorter interruption never moves it (VDX-04)."""
+    BULK_READABLE = True  # pragma: no mutate  (a speed declaration: bulk.py)
 
     def __init__(self, kernel: Kernel, name: str, cfg: Vdx, on_change: Callable[[], None],
                  emit: Callable[..., None]):
@@ -54,6 +55,7 @@ class Relay:
 
 class VdxInterface:
     """Both outputs, the two relays, the loop and the FS self-test."""
+    BULK_READABLE = True  # pragma: no mutate  (a speed declaration: bulk.py)
 
     def __init__(self, kernel: Kernel, cfg: Vdx, emit: Callable[..., None],
                  on_loop: Callable[[], None] | None = None):

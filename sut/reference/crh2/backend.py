@@ -33,6 +33,10 @@ class ReferenceTrain(PickledState, TrainDriver):
     PROFILES = ("crh2",)
     DETERMINISTIC = True           # virtual time, no randomness, nothing outside the model
     DECLARATION = "sut/reference/declaration.yaml"
+    # Read by bulk advance where it is a part of a bigger model (the ATP fitted to a set); the index of the
+    # trace a step built is history, not state.
+    BULK_READABLE = True  # pragma: no mutate  (a speed declaration: bulk.py)
+    BULK_SKIP = ("_view",)
     TIMING: ClassVar[dict[str, Any]] = {}
     BEHAVIOUR: ClassVar[dict[str, Any]] = {}
 

@@ -23,6 +23,7 @@ LAMPS = ("MCR", "traction", "brake")
 
 class Txc:
     """Command transmitter with two CPU groups (FS-01..03): #1 works, #2 monitors."""
+    BULK_READABLE = True  # pragma: no mutate  (a speed declaration: bulk.py)
 
     def __init__(self, system: "CcuSystem", supply: PowerSupply):
         self.system = system
@@ -55,6 +56,7 @@ class Txc:
 
 
 class CcuSystem(RingNode):
+    BULK_READABLE = True  # pragma: no mutate  (a speed declaration: bulk.py)
     unit = "CCU"
 
     def __init__(self, train: "TrainContext", ccu: "Ccu", index: int, supply: PowerSupply, txc_supply: PowerSupply):
@@ -122,6 +124,7 @@ class CcuSystem(RingNode):
 
 
 class Ccu:
+    BULK_READABLE = True  # pragma: no mutate  (a speed declaration: bulk.py)
     def __init__(self, train: "TrainContext", car: int, supplies: dict[str, PowerSupply]):
         self.train = train
         self.car = car

@@ -15,6 +15,7 @@ MS = 1000  # microseconds per millisecond
 
 @dataclass(frozen=True)
 class Timing:
+    BULK_READABLE = True  # pragma: no mutate  (a speed declaration: bulk.py)
     bitrate: int = 2_500_000             # NET-07 ARCNET over fibre
     pass_through_us: int = 250           # PRO-01 per-node pass-through
     command_interval_us: int = 10 * MS   # PRO-01 minimum interval (the reference sends at the minimum)
@@ -36,6 +37,7 @@ class Timing:
 @dataclass(frozen=True)
 class Behaviour:
     """Switches that only faulty variants turn off; the reference keeps every one on."""
+    BULK_READABLE = True  # pragma: no mutate  (a speed declaration: bulk.py)
 
     reverse_routing: bool = True          # NET-03 broadcast both ways round the ring
     frame_check: bool = True              # NET-05 discard bad frames
@@ -89,6 +91,7 @@ class Behaviour:
 @dataclass(frozen=True)
 class Interlocks:
     """Trip points and delays of the reference. The features test the requirement bands, not these."""
+    BULK_READABLE = True  # pragma: no mutate  (a speed declaration: bulk.py)
 
     pipe_trip_kpa: float = 590.0        # ILK-02: (590 +/- 10) kPa
     pipe_reset_kpa: float = 620.0       # DECISIONS: hysteresis 30 kPa
@@ -107,6 +110,7 @@ class Interlocks:
 class Environment:
     """Rated environment of the boards (hardware/software class, TST-02; docs/decisions.md "Environment").
     Voltages are fractions of Un; the features test the standards' ranges, not these figures."""
+    BULK_READABLE = True  # pragma: no mutate  (a speed declaration: bulk.py)
 
     nominal_v: float = 110.0                # EN 50155 Un of the train's battery supply
     continuous_lo: float = 0.70             # EN 50155 continuous 0.7 .. 1.25 Un (VDX-02: 70 .. 125 %)
@@ -136,6 +140,7 @@ EMERGENCY = 8
 
 @dataclass(frozen=True)
 class TrainConfig:
+    BULK_READABLE = True  # pragma: no mutate  (a speed declaration: bulk.py)
     sets: int = 1
     cars_per_set: int = 8
     timing: Timing = field(default_factory=Timing)

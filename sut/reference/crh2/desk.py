@@ -17,6 +17,7 @@ DIRECTION_CODES = {name: code for code, name in enumerate(DIRECTIONS)}
 
 @dataclass(frozen=True)
 class Sample:
+    BULK_READABLE = True  # pragma: no mutate  (a speed declaration: bulk.py)
     direction: str
     traction: int
     brake: int
@@ -31,6 +32,7 @@ class Sample:
 
 
 class Desk:
+    BULK_READABLE = True  # pragma: no mutate  (a speed declaration: bulk.py)
     def __init__(self, train: "TrainContext", car: int, supply: PowerSupply):
         self.train = train
         self.car = car

@@ -23,6 +23,7 @@ def to_steps(value: int, what: str) -> str:
 
 class CommandDevice:
     """Main converter (CI) or brake control unit (BCU): records what it was commanded, and how."""
+    BULK_READABLE = True  # pragma: no mutate  (a speed declaration: bulk.py)
 
     def __init__(self, train: "TrainContext", name: str):
         self.train = train
@@ -49,6 +50,7 @@ class LoopDevice:
 
     `polled` devices answer each poll; one-way devices only receive (side destination display) or only
     send (distance detector)."""
+    BULK_READABLE = True  # pragma: no mutate  (a speed declaration: bulk.py)
 
     def __init__(self, train: "TrainContext", name: str, cpu3: "Board", loop: str, period_us: int, mode: str):
         assert mode in ("polled", "to-device", "from-device")

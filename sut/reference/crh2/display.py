@@ -26,6 +26,7 @@ RUNNING = {"traction notch": "traction", "brake step": "brake", "direction": "di
 
 @dataclass(frozen=True)
 class Point:
+    BULK_READABLE = True  # pragma: no mutate  (a speed declaration: bulk.py)
     id: int
     name: str
     owner: str                  # node name
@@ -33,6 +34,7 @@ class Point:
 
 
 class DisplayTable:
+    BULK_READABLE = True  # pragma: no mutate  (a speed declaration: bulk.py)
     def __init__(self, train: "TrainContext"):
         self.train = train
         vehicle = train.vehicle

@@ -22,6 +22,7 @@ class FrameError(ValueError):
 
 @dataclass
 class Line:
+    BULK_READABLE = True  # pragma: no mutate  (a speed declaration: bulk.py)
     name: str
     cut: bool = False
     disturb: int = 0           # the next `disturb` frames get one bit flipped
@@ -37,6 +38,7 @@ class Line:
 class Carried(NamedTuple):
     """What one frame became on the bus: data for the receivers, or None if no line brought it intact.
     (A tuple: one is made per frame, thousands per simulated second.)"""
+    BULK_READABLE = True  # pragma: no mutate  (a speed declaration: bulk.py)
     data: Any
     line: str | None
     errors: tuple[str, ...]
@@ -50,6 +52,7 @@ def flip_one_bit(wire: bytes) -> bytes:
 
 
 class DualLineBus:
+    BULK_READABLE = True  # pragma: no mutate  (a speed declaration: bulk.py)
     def __init__(self, name: str, lines_sent: str, switch_after: int):
         self.name = name
         self.lines = {ln: Line(ln) for ln in LINES}

@@ -15,6 +15,7 @@ MS = 1000
 
 @dataclass(frozen=True)
 class MetroTiming:
+    BULK_READABLE = True  # pragma: no mutate  (a speed declaration: bulk.py)
     mvb_basic_period_us: int = 1 * MS        # TCN-03
     mvb_bit_ns: int = 667                    # TCN-03: 1.5 Mbit/s
     io_period_us: int = 2 * MS               # driver's commands read from the MVB I/O modules
@@ -37,6 +38,7 @@ class MetroTiming:
 @dataclass(frozen=True)
 class MetroBehaviour:
     """Switches that faulty variants turn; the reference is the all-default instance."""
+    BULK_READABLE = True  # pragma: no mutate  (a speed declaration: bulk.py)
     wtb_backup_ranks: tuple[str, ...] = ("car1.CCU", "car2.VCU", "car3.VCU")      # RED-04 order
     lines_sent: str = "AB"                   # RED-06: every frame on both lines
     line_switch_after: int = 1               # RED-06: bad frames on the trusted line before switching
@@ -65,6 +67,7 @@ class MetroBehaviour:
 
 @dataclass(frozen=True)
 class MetroConfig:
+    BULK_READABLE = True  # pragma: no mutate  (a speed declaration: bulk.py)
     timing: MetroTiming = MetroTiming()
     behaviour: MetroBehaviour = MetroBehaviour()
 

@@ -24,6 +24,7 @@ def unit_of(car: int) -> int:
 
 @dataclass(frozen=True)
 class Record:
+    BULK_READABLE = True  # pragma: no mutate  (a speed declaration: bulk.py)
     t_us: int
     origin: str
     seq: int
@@ -36,6 +37,7 @@ class Record:
 @dataclass
 class ControlUnit:
     """A CCU or VCU: one node on the WTB (through its VGWS) and on its unit's MVB."""
+    BULK_READABLE = True  # pragma: no mutate  (a speed declaration: bulk.py)
     name: str
     car: int
     kind: str                                         # "CCU" or "VCU"
@@ -80,6 +82,7 @@ class ControlUnit:
 @dataclass
 class IoModule:
     """MVB I/O module (TCN-07): 28 DI, 3 AI, an RS-485 port; its life signal counts its refreshes."""
+    BULK_READABLE = True  # pragma: no mutate  (a speed declaration: bulk.py)
     name: str
     car: int
     failed: bool = False
@@ -91,6 +94,7 @@ class IoModule:
 @dataclass
 class Device:
     """A subsystem on the MVB: VVVF, BECU, APU, VATC, DU. VVVF and BECU take the train command."""
+    BULK_READABLE = True  # pragma: no mutate  (a speed declaration: bulk.py)
     name: str
     car: int
     kind: str
