@@ -19,7 +19,7 @@ Feature: H-CPO-01 Continuous power-on for 72 h: the token and the status cycle h
     And in every sample the cab 1 monitor receives status data from every other node every 115 to 125 ms
     And no node discarded a frame during the run
 
-  @req:TST-02 @req:PRO-04 @req:PRO-03
+  @req:TST-02 @req:PRO-02 @req:PRO-04
   Scenario: H-CPO-01 The node counters the long run is judged by count what the trace shows
     When 2000 ms pass
     Then every node's counts of token visits, status data and token initialisations agree with the trace since power-up
