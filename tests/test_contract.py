@@ -55,10 +55,15 @@ def test_a_step_reading_an_unlisted_field_is_a_gap_of_the_suite() -> None:
 
 
 def test_a_sut_leaving_out_a_required_field_fails_naming_the_event_and_the_field() -> None:
-    ev = _guarded([TraceEvent(2500, "VDX", "loop.change", {})]).trace.first(kind="loop.change")
+    # when the event is handed to a step, whether or not the step reads that field (check_event)
     with pytest.raises(ContractBreach, match=r"VDX loop.change at 2.5 ms has no field 'state'; the vdx contract requires it"):
-        ev["state"]
+        _guarded([TraceEvent(2500, "VDX", "loop.change", {})]).trace.first(kind="loop.change")
     assert not isinstance(ContractBreach("x"), KeyError) and isinstance(ContractBreach("x"), AssertionError)
+
+
+def test_a_sut_reporting_an_event_from_a_source_its_entry_does_not_name_fails() -> None:
+    with pytest.raises(ContractBreach, match=r"vdx loop.change at 2.5 ms: the vdx contract names its source 'VDX'"):
+        _guarded([TraceEvent(2500, "vdx", "loop.change", {"state": "open"})]).trace.select(kind="loop.change")
 
 
 def test_a_step_selecting_by_an_unlisted_field_is_a_gap() -> None:
