@@ -63,7 +63,8 @@ def first_difference(make_a: Factory, make_b: Factory, profile: str, sequence: l
             # A refusal on one side only is the difference itself, not a missing look to compare field by field.
             what = "refused" if ("refused" in a) != ("refused" in b) else \
                 next((k for k in sorted(set(a) | set(b)) if a.get(k) != b.get(k)), "?")
-            av, bv = a.get(what, "no refusal"), b.get(what, "no refusal")
+            missing = "no refusal" if what == "refused" else None
+            av, bv = a.get(what, missing), b.get(what, missing)
             if what == "events":
                 pairs = [(x, y) for x, y in zip(av, bv) if x != y]
                 av, bv = pairs[0] if pairs else (av[len(bv):][:1], bv[len(av):][:1])

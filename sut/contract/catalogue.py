@@ -45,6 +45,11 @@ class EventKind:
     fields: dict[str, dict[str, Any]]
     requirements: list[str]
 
+    def __post_init__(self) -> None:
+        # What check_event holds every event handed to a step against, worked out once per kind.
+        self.sources = tuple(p.strip() for p in self.source.split("|") if p.strip())
+        self.required = tuple(n for n, spec in self.fields.items() if spec.get("required", True))
+
 
 @dataclass
 class Contract:
@@ -114,11 +119,10 @@ class Contract:
         ev = self.events.get(kind)
         if ev is None:
             return                      # a kind no step asked for cannot come back; check_kind owns the gap
-        sources = [p.strip() for p in ev.source.split("|") if p.strip()]
-        if sources and not any(matches(p, source) for p in sources):
+        if ev.sources and not any(matches(p, source) for p in ev.sources):
             raise ContractBreach(f"{source} {kind} at {t_us / 1000:g} ms: the {self.profile} contract names its "
                                  f"source {ev.source!r}{self._where()}")
-        missing = [n for n, spec in ev.fields.items() if spec.get("required", True) and n not in fields]
+        missing = [n for n in ev.required if n not in fields]
         if missing:
             raise ContractBreach(f"{source} {kind} at {t_us / 1000:g} ms has no field {missing[0]!r}; the "
                                  f"{self.profile} contract requires it{self._where()}")
