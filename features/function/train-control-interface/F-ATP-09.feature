@@ -24,6 +24,18 @@ Feature: F-ATP-09 FS to PS at 150 m before the end of authority; the default tel
       | 150      | 2850     | PS   |
       | 149      | 2851     | PS   |
 
+  # Within 150 m of the end of authority the ATP supervises partially (ATP-06), whatever balise group it passes
+  # meanwhile: line data repeated inside that distance does not bring full supervision back.
+  @req:ATP-06
+  Scenario: F-ATP-09 Within 150 m of the end of authority, the line data passed again keeps PS
+    When the train is set to 2900 m running at 0 km/h
+    And 100 ms pass
+    Then the ATP is in mode PS
+    When the train passes balise group "3-1-1-3" describing track circuits 0-5000 m 1700 Hz and an end of authority at 3000 m
+    Then the ATP is in mode PS
+    When 100 ms pass
+    Then the ATP is in mode PS
+
   @req:ATP-07
   Scenario: F-ATP-09 A default telegram on a diverging entry: maximum service brake, FS kept at 45 km/h
     When the train is set to 2200 m running at 80 km/h
