@@ -640,3 +640,26 @@ def test_each_modules_caches_are_read_from_its_source_once(monkeypatch: pytest.M
     monkeypatch.setattr(ast, "parse", lambda source, *a, **k: parsed.append(source) or ast.Module([], []))
     again = mutation_plugin.reference_caches()
     assert not parsed and len(again) == len(first) and all(a is b for a, b in zip(again, first))
+
+
+def test_a_field_no_contract_lists_is_passed_over_unless_the_change_may_raise() -> None:
+    """The contracts define what a step can read of an event (the guard refuses any other field), so a change
+    to an unlisted field is unobservable, provided it cannot raise: its whole value made None or the keyword
+    dropped cannot; None inside the computation of its value may."""
+    def line_of(path: str, text: str) -> tuple[int, str]:
+        lines = (ROOT / path).read_text(encoding="utf-8").splitlines()
+        return next((i, line.strip()) for i, line in enumerate(lines, start=1) if text in line)
+
+    onboard, vdx = "sut/reference/atp/onboard.py", "sut/reference/atp/vdx.py"
+    line, before = line_of(onboard, 'self._emit("ATP", "def.step", step=step + 1')
+    assert mutation.rule_reason(onboard, line, before, before.replace("step=step + 1", "step=None")) == "unlisted field"
+    assert mutation.in_unlisted_field(onboard, line, before, before.replace("step + 1", "step + 2"))
+    listed = before.replace('readback="ok" if readback else "wrong"', "readback=None")   # def.step lists readback
+    assert mutation.rule_reason(onboard, line, before, listed) is None
+    line, before = line_of(vdx, 'self._emit(self.name, "relay.change", energised=energised)')
+    assert mutation.rule_reason(vdx, line, before, before.replace("energised=energised", "")) == "unlisted field"
+    # None inside a field's computation may raise (round(None, 3)): not this rule's to pass over.
+    line, before = line_of(onboard, 'self._emit("ATP", "mode.change", mode=mode, at_m=round(self.position_m, 3))')
+    inside = before.replace("round(self.position_m, 3)", "round(None, 3)")
+    assert mutation.in_unlisted_field(onboard, line, before, inside) is False
+    assert mutation.in_unlisted_field(onboard, line, before, before.replace("round(self.position_m, 3)", "None"))

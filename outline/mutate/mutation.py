@@ -18,7 +18,8 @@ Phases:
    the mutants marked equivalent in sut/reference/EQUIVALENT_MUTANTS.txt, those inside a `raise` of the
    driver's usage errors (USAGE_ERRORS below), those of a backend's self-description (SELF_DESCRIPTION,
    BACKEND_PASSED_OVER), those inside the emit of a trace event no check reads (EMIT_CALLS) or inside one of
-   its fields that no check reads (in_unread_field), those in a branch only faulty variants take
+   its fields that no check reads (in_unread_field) or no contract lists for its kind (in_unlisted_field),
+   those in a branch only faulty variants take
    (in_variant_only_branch) and those in other code the switches leave unrun (never_run: an operand they
    decide, a function only a variant calls); how many were passed over is printed and kept.
 3. `mutmut run <sample>`; outline/mutate/mutation_plugin.py notes which scenario failed for each mutant.
@@ -35,6 +36,7 @@ from __future__ import annotations
 
 import argparse
 import ast
+import fnmatch
 import hashlib
 import json
 import os
@@ -444,6 +446,71 @@ def in_unread_field(path: str, line: int, before: str, after: str) -> bool:
                for call in calls for kw in call.keywords)
 
 
+def contract_fields() -> dict[str, frozenset[str]]:
+    """Every event kind the implementer's contracts list (sut/contract/<profile>.yaml, every profile) with the
+    fields any of them lists for it; a pattern (`loop.*`) stands as written."""
+    if ROOT not in _CONTRACT_FIELDS:
+        import yaml
+        fields: dict[str, set[str]] = {}
+        for path in sorted((ROOT / "sut" / "contract").glob("*.yaml")):
+            events = (yaml.safe_load(path.read_text(encoding="utf-8")) or {}).get("events") or {}
+            for kind, entry in events.items():
+                fields.setdefault(kind, set()).update((entry or {}).get("fields") or {})
+        _CONTRACT_FIELDS[ROOT] = {kind: frozenset(names) for kind, names in fields.items()}
+    return _CONTRACT_FIELDS[ROOT]
+
+
+_CONTRACT_FIELDS: dict[Path, dict[str, frozenset[str]]] = {}
+
+
+def _listed_fields(kind: str) -> frozenset[str] | None:
+    """The fields the contracts list for `kind` (None: no contract lists the kind)."""
+    found = [names for pattern, names in contract_fields().items()
+             if pattern == kind or any(ch in pattern for ch in "*?[") and fnmatch.fnmatchcase(kind, pattern)]
+    return frozenset().union(*found) if found else None
+
+
+def _squeezed(text: str) -> str:
+    return re.sub(r"\s+", "", text).replace(",)", ")")
+
+
+def in_unlisted_field(path: str, line: int, before: str, after: str) -> bool:
+    """Whether the change is inside one keyword argument of an emit call whose kind (a literal, its last
+    positional argument) no contract lists, or whose entries do not list that field; and cannot raise: either
+    no argument is made None or dropped (may_raise_otherwise), or the change is that keyword's whole value made
+    None, or the keyword dropped. A step can read no such field (the contract guard refuses it: ContractGap),
+    the differential checker compares none, and a conforming implementation need not write it."""
+    source, calls = _emits(path)
+    lines = source.splitlines()
+    if not 0 < line <= len(lines):
+        return False
+    text = lines[line - 1]
+    columns = changed_columns(text, before, after)
+    if columns is None:
+        return False
+    start, end = columns
+    for call in calls:
+        kind = call.args[-1] if call.args else None
+        if not (isinstance(kind, ast.Constant) and isinstance(kind.value, str)):
+            continue
+        listed = _listed_fields(kind.value)
+        for kw in call.keywords:
+            if kw.arg is None or listed is not None and kw.arg in listed:
+                continue
+            if not (kw.lineno == line == kw.end_lineno and kw.col_offset <= start
+                    and end <= (kw.end_col_offset or 0)):
+                continue
+            if not may_raise_otherwise(before, after):
+                return True
+            whole = text[kw.col_offset:kw.end_col_offset]
+            stripped = text.strip()
+            as_none = stripped.replace(whole, f"{kw.arg}=None", 1)
+            dropped = re.sub(r",?\s*" + re.escape(whole), "", stripped, count=1)
+            return _squeezed(after) in (_squeezed(as_none), _squeezed(dropped)) \
+                or _squeezed(after) == _squeezed(stripped.replace(whole, "", 1))
+    return False
+
+
 _RAISES: dict[str, list[tuple[int, int]]] = {}
 
 
@@ -756,6 +823,8 @@ def rule_reason(path: str, line: int, before: str, after: str) -> str | None:
         return "faulty-variant branch"
     if unread and in_unread_field(path, line, before, after):
         return "unread field"
+    if in_unlisted_field(path, line, before, after):
+        return "unlisted field"
     return never_run_reason(path, line, before, after)
 
 

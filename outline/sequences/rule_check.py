@@ -60,12 +60,18 @@ def main(argv: list[str] | None = None) -> int:
     parser.add_argument("--seed", type=int, default=1)
     parser.add_argument("--jobs", type=int, default=2)
     parser.add_argument("--out", type=Path, default=equivalence.REPORT)
+    parser.add_argument("--rule", action="append", default=[], metavar="REASON",
+                        help="check only this rule's mutants (repeatable); the other rules' results are kept")
     args = parser.parse_args(argv)
     if not equivalence.have_mutmut():
         print("rule_check: needs mutmut to write the references' mutants (pip install -e '.[mutate]')")
         return 2
     by_rule = rule_mutants()
-    jobs = draw(by_rule, args.per_rule, args.seed)
+    unknown = [r for r in args.rule if r not in by_rule]
+    if unknown:
+        print(f"rule_check: no rule named {', '.join(map(repr, unknown))}; the rules: {', '.join(sorted(by_rule))}")
+        return 2
+    jobs = [job for job in draw(by_rule, args.per_rule, args.seed) if not args.rule or job[0] in args.rule]
     print("rule_check: mutants passed over by rule: " + ", ".join(f"{r} {len(s)}" for r, s in sorted(by_rule.items()))
           + f"; checking {len(jobs)} (seed {args.seed}, budget {budget_id()})", flush=True)
     started = time.monotonic()
@@ -77,15 +83,20 @@ def main(argv: list[str] | None = None) -> int:
             print(f"[{done}/{len(jobs)} {time.monotonic() - started:.0f}s] {result['verdict']}: {result['rule']}: "
                   f"{result['path']}:{result['line']} {result['before'][:50]} -> {result['after'][:50]}"
                   + (f"  ({seen.get('profile')}: {seen.get('observable')})" if seen else ""), flush=True)
+    report = equivalence.load_report(args.out)
+    kept = report.get("rules") or {}
+    if args.rule and kept.get("budget") == budget_id():     # the other rules' results still hold
+        results += [r for r in kept.get("mutants", []) if r["rule"] not in args.rule]
     per_rule: dict[str, dict[str, int]] = {}
     for reason, sites in by_rule.items():
         per_rule[reason] = {"mutants": len(sites), "checked": 0, "confirmed": 0, "overturned": 0}
     for r in results:
-        per_rule[r["rule"]]["checked"] += 1
-        per_rule[r["rule"]][r["verdict"]] = per_rule[r["rule"]].get(r["verdict"], 0) + 1
-    report = equivalence.load_report(args.out)
+        if r["rule"] in per_rule:
+            per_rule[r["rule"]]["checked"] += 1
+            per_rule[r["rule"]][r["verdict"]] = per_rule[r["rule"]].get(r["verdict"], 0) + 1
     report["rules"] = {"per_rule": per_rule, "asked": args.per_rule, "seed": args.seed, "budget": budget_id(),
-                       "mutants": sorted(results, key=lambda r: (r["rule"], r["path"], r["line"], r["after"]))}
+                       "mutants": sorted((r for r in results if r["rule"] in per_rule),
+                                         key=lambda r: (r["rule"], r["path"], r["line"], r["after"]))}
     equivalence.write_report(report, args.out)
     overturned = sum(c["overturned"] for c in per_rule.values())
     print(f"rule_check: {overturned} of {len(results)} overturned; {args.out} ({time.monotonic() - started:.0f} s)")
