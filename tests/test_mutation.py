@@ -663,3 +663,16 @@ def test_a_field_no_contract_lists_is_passed_over_unless_the_change_may_raise() 
     inside = before.replace("round(self.position_m, 3)", "round(None, 3)")
     assert mutation.in_unlisted_field(onboard, line, before, inside) is False
     assert mutation.in_unlisted_field(onboard, line, before, before.replace("round(self.position_m, 3)", "None"))
+
+
+def test_a_field_change_that_may_raise_is_no_rule_s_to_pass_over() -> None:
+    """The checker overturned `cab=fields["XXcabXX"]` under "unlisted field" (a KeyError every run that
+    receives a command meets): a change inside a subscript, a call or arithmetic of an unread or unlisted
+    field may raise, so neither rule passes it over."""
+    lcu = "sut/reference/crh2/lcu.py"
+    lines = (ROOT / lcu).read_text(encoding="utf-8").splitlines()
+    line = next(i for i, text in enumerate(lines, start=1) if 'self.emit("cmd.rx", seq=fields["seq"]' in text)
+    before = lines[line - 1].strip()
+    after = before.replace('cab=fields["cab"]', 'cab=fields["XXcabXX"]')
+    assert mutation.rule_reason(lcu, line, before, after) is None
+    assert mutation.rule_reason(lcu, line, before, before.replace('cab=fields["cab"]', "cab=None")) == "unlisted field"

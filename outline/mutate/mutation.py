@@ -443,6 +443,7 @@ def in_unread_field(path: str, line: int, before: str, after: str) -> bool:
     fields = read_fields()
     return any(kw.arg is not None and kw.arg not in fields and kw.lineno == line == kw.end_lineno
                and kw.col_offset <= start and end <= (kw.end_col_offset or 0)
+               and field_change_cannot_raise(kw, lines[line - 1], before, after)
                for call in calls for kw in call.keywords)
 
 
@@ -500,15 +501,36 @@ def in_unlisted_field(path: str, line: int, before: str, after: str) -> bool:
             if not (kw.lineno == line == kw.end_lineno and kw.col_offset <= start
                     and end <= (kw.end_col_offset or 0)):
                 continue
-            if not may_raise_otherwise(before, after):
-                return True
-            whole = text[kw.col_offset:kw.end_col_offset]
-            stripped = text.strip()
-            as_none = stripped.replace(whole, f"{kw.arg}=None", 1)
-            dropped = re.sub(r",?\s*" + re.escape(whole), "", stripped, count=1)
-            return _squeezed(after) in (_squeezed(as_none), _squeezed(dropped)) \
-                or _squeezed(after) == _squeezed(stripped.replace(whole, "", 1))
+            return field_change_cannot_raise(kw, text, before, after)
     return False
+
+
+def field_change_cannot_raise(kw: ast.keyword, text: str, before: str, after: str) -> bool:
+    """Whether a change inside the keyword argument `kw` of a call on the source line `text` cannot raise
+    before the call: the keyword's whole value made None, or the keyword dropped; otherwise no argument made
+    None or dropped inside it (may_raise_otherwise), no subscript's key changed (`fields["XXcabXX"]` is a
+    KeyError: the checker overturned it, 2026-11-27) and no arithmetic operator swapped (`"a" - b`, `x / 0`)."""
+    whole = text[kw.col_offset:kw.end_col_offset]
+    stripped = text.strip()
+    squeezed = _squeezed(after)
+    if squeezed in (_squeezed(stripped.replace(whole, f"{kw.arg}=None", 1)),
+                    _squeezed(re.sub(r",?\s*" + re.escape(whole), "", stripped, count=1)),
+                    _squeezed(stripped.replace(whole, "", 1))):
+        return True
+    columns = changed_columns(text, before, after)
+    if may_raise_otherwise(before, after) or columns is None:
+        return False
+    start, end = columns
+
+    def touched(lo: int, hi: int) -> bool:
+        return start < hi and lo < max(end, start + 1)
+
+    for node in ast.walk(kw.value):
+        if isinstance(node, ast.Subscript) and touched(node.slice.col_offset, node.slice.end_col_offset or 0):
+            return False
+        if isinstance(node, ast.BinOp) and touched(node.left.end_col_offset or 0, node.right.col_offset):
+            return False
+    return True
 
 
 _RAISES: dict[str, list[tuple[int, int]]] = {}
