@@ -1,6 +1,6 @@
 """Steps of the CTCS-2 200C on-board ATP on a lab rig (ATP-01..12): balises, the track-circuit signal
 generator, odometry, and what the ATP decides. Positions where an edge lies are computed from what the SUT
-declares (`rated_limits()`: D_Sen, position uncertainty, decode delay, CFSK comparison period) with the
+declares (its declaration: D_Sen, position uncertainty, decode delay, CFSK comparison period) with the
 project's formula (ATP-02):
 
     Dmin = (front - uncertainty) - D_Sen - v * dt        Dmax = (front + uncertainty) - D_Sen
