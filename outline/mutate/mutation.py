@@ -447,6 +447,9 @@ def in_unread_field(path: str, line: int, before: str, after: str) -> bool:
                for call in calls for kw in call.keywords)
 
 
+_CONTRACT_FIELDS: dict[Path, dict[str, frozenset[str]]] = {}
+
+
 def contract_fields() -> dict[str, frozenset[str]]:
     """Every event kind the implementer's contracts list (sut/contract/<profile>.yaml, every profile) with the
     fields any of them lists for it; a pattern (`loop.*`) stands as written."""
@@ -459,9 +462,6 @@ def contract_fields() -> dict[str, frozenset[str]]:
                 fields.setdefault(kind, set()).update((entry or {}).get("fields") or {})
         _CONTRACT_FIELDS[ROOT] = {kind: frozenset(names) for kind, names in fields.items()}
     return _CONTRACT_FIELDS[ROOT]
-
-
-_CONTRACT_FIELDS: dict[Path, dict[str, frozenset[str]]] = {}
 
 
 def _listed_fields(kind: str) -> frozenset[str] | None:
@@ -477,10 +477,9 @@ def _squeezed(text: str) -> str:
 
 def in_unlisted_field(path: str, line: int, before: str, after: str) -> bool:
     """Whether the change is inside one keyword argument of an emit call whose kind (a literal, its last
-    positional argument) no contract lists, or whose entries do not list that field; and cannot raise: either
-    no argument is made None or dropped (may_raise_otherwise), or the change is that keyword's whole value made
-    None, or the keyword dropped. A step can read no such field (the contract guard refuses it: ContractGap),
-    the differential checker compares none, and a conforming implementation need not write it."""
+    positional argument) no contract lists, or whose entries do not list that field, and the change cannot
+    raise (field_change_cannot_raise). A step can read no such field (the contract guard refuses it:
+    ContractGap), the differential checker compares none, and a conforming implementation need not write it."""
     source, calls = _emits(path)
     lines = source.splitlines()
     if not 0 < line <= len(lines):
