@@ -429,22 +429,32 @@ def changed_columns(line_text: str, before: str, after: str) -> tuple[int, int] 
     return indent + prefix, indent + max(prefix, len(before) - suffix)
 
 
-def in_unread_field(path: str, line: int, before: str, after: str) -> bool:
-    """Whether the change is inside one keyword argument of an emit call (EMIT_CALLS) that names a field no
-    check reads (read_fields): a diagnostic field of an event whose other fields may well be read."""
+def _changed_field(path: str, line: int, before: str, after: str
+                   ) -> tuple[ast.Call, ast.keyword, str, tuple[int, int]] | None:
+    """The emit call (EMIT_CALLS) and its one-line keyword argument the change lies inside, with the source line
+    and the changed columns; None if the change is not inside one."""
     source, calls = _emits(path)
     lines = source.splitlines()
     if not 0 < line <= len(lines):
-        return False
-    columns = changed_columns(lines[line - 1], before, after)
+        return None
+    text = lines[line - 1]
+    columns = changed_columns(text, before, after)
     if columns is None:
-        return False
+        return None
     start, end = columns
-    fields = read_fields()
-    return any(kw.arg is not None and kw.arg not in fields and kw.lineno == line == kw.end_lineno
-               and kw.col_offset <= start and end <= (kw.end_col_offset or 0)
-               and field_change_cannot_raise(kw, lines[line - 1], before, after)
-               for call in calls for kw in call.keywords)
+    return next(((call, kw, text, columns) for call in calls for kw in call.keywords
+                 if kw.arg is not None and kw.lineno == line == kw.end_lineno
+                 and kw.col_offset <= start and end <= (kw.end_col_offset or 0)), None)
+
+
+def in_unread_field(path: str, line: int, before: str, after: str) -> bool:
+    """Whether the change is inside one keyword argument of an emit call (EMIT_CALLS) that names a field no
+    check reads (read_fields): a diagnostic field of an event whose other fields may well be read."""
+    found = _changed_field(path, line, before, after)
+    if found is None:
+        return False
+    _call, kw, text, columns = found
+    return kw.arg not in read_fields() and field_change_cannot_raise(kw, text, before, after, columns)
 
 
 _CONTRACT_FIELDS: dict[Path, dict[str, frozenset[str]]] = {}
@@ -480,35 +490,24 @@ def in_unlisted_field(path: str, line: int, before: str, after: str) -> bool:
     positional argument) no contract lists, or whose entries do not list that field, and the change cannot
     raise (field_change_cannot_raise). A step can read no such field (the contract guard refuses it:
     ContractGap), the differential checker compares none, and a conforming implementation need not write it."""
-    source, calls = _emits(path)
-    lines = source.splitlines()
-    if not 0 < line <= len(lines):
+    found = _changed_field(path, line, before, after)
+    if found is None:
         return False
-    text = lines[line - 1]
-    columns = changed_columns(text, before, after)
-    if columns is None:
+    call, kw, text, columns = found
+    kind = call.args[-1] if call.args else None
+    if not (isinstance(kind, ast.Constant) and isinstance(kind.value, str)):
         return False
-    start, end = columns
-    for call in calls:
-        kind = call.args[-1] if call.args else None
-        if not (isinstance(kind, ast.Constant) and isinstance(kind.value, str)):
-            continue
-        listed = _listed_fields(kind.value)
-        for kw in call.keywords:
-            if kw.arg is None or listed is not None and kw.arg in listed:
-                continue
-            if not (kw.lineno == line == kw.end_lineno and kw.col_offset <= start
-                    and end <= (kw.end_col_offset or 0)):
-                continue
-            return field_change_cannot_raise(kw, text, before, after)
-    return False
+    listed = _listed_fields(kind.value)
+    return (listed is None or kw.arg not in listed) and field_change_cannot_raise(kw, text, before, after, columns)
 
 
-def field_change_cannot_raise(kw: ast.keyword, text: str, before: str, after: str) -> bool:
-    """Whether a change inside the keyword argument `kw` of a call on the source line `text` cannot raise
-    before the call: the keyword's whole value made None, or the keyword dropped; otherwise no argument made
-    None or dropped inside it (may_raise_otherwise), no subscript's key changed (`fields["XXcabXX"]` is a
-    KeyError: the checker overturned it, 2026-11-27) and no arithmetic operator swapped (`"a" - b`, `x / 0`)."""
+def field_change_cannot_raise(kw: ast.keyword, text: str, before: str, after: str,
+                              columns: tuple[int, int]) -> bool:
+    """Whether a change (at `columns` of the source line `text`) inside the keyword argument `kw` of a call
+    cannot raise before the call: the keyword's whole value made None, or the keyword dropped; otherwise no
+    argument made None or dropped inside it (may_raise_otherwise), no subscript's key changed
+    (`fields["XXcabXX"]` is a KeyError: the checker overturned it, 2026-11-27) and no arithmetic operator
+    swapped (`"a" - b`, `x / 0`)."""
     whole = text[kw.col_offset:kw.end_col_offset]
     stripped = text.strip()
     squeezed = _squeezed(after)
@@ -516,8 +515,7 @@ def field_change_cannot_raise(kw: ast.keyword, text: str, before: str, after: st
                     _squeezed(re.sub(r",?\s*" + re.escape(whole), "", stripped, count=1)),
                     _squeezed(stripped.replace(whole, "", 1))):
         return True
-    columns = changed_columns(text, before, after)
-    if may_raise_otherwise(before, after) or columns is None:
+    if may_raise_otherwise(before, after):
         return False
     start, end = columns
 
