@@ -70,7 +70,7 @@ report: $(VENV_STAMP) $(NODE_STAMP) ## run every feature, build reports/html/ind
 	$(PY) -m outline.report.summary $(RESULTS); \
 	exit $$status
 
-test: $(VENV_STAMP) $(NODE_STAMP) $(CHROMIUM) ## the project's own tests, the whole conformance run, then the contract check (every catalogue entry read by some step); fails if any fails
+test: $(VENV_STAMP) $(MUTATE_STAMP) $(NODE_STAMP) $(CHROMIUM) ## the project's own tests, the whole conformance run, then the contract check (every catalogue entry read by some step); fails if any fails
 	@$(PY) -m pytest tests $(XDIST_TESTS); t=$$?; \
 	rm -f $(CONTRACT_RECORD)*; \
 	$(PY) -m pytest features $(XDIST) $(SUT_ARG) $(PYTEST_ARGS) --contract-record $(CONTRACT_RECORD); f=$$?; \
