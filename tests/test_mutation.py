@@ -13,10 +13,18 @@ from pathlib import Path
 
 import pytest
 
-from outline.mutate import mutation
+from outline.mutate import mutation, quick_trampoline
 from outline.mutate.mutation import Mutant
 
 ROOT = Path(__file__).resolve().parents[1]
+
+
+@pytest.fixture(autouse=True)
+def _session_ends() -> None:
+    """Tests here call the plugin's pytest_configure by hand; what it swaps in mutmut's trampoline for a session
+    (quick_trampoline.py) goes back as pytest_unconfigure would put it back."""
+    yield
+    quick_trampoline.uninstall()
 
 
 def test_a_mutant_is_placed_on_its_line_inside_its_method(tmp_path: Path) -> None:

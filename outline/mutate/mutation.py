@@ -102,8 +102,9 @@ class Mutant:
 
 
 def _mutmut(*args: str, env: dict[str, str] | None = None) -> subprocess.CompletedProcess:
-    return subprocess.run([sys.executable, "-m", "mutmut", *args], cwd=ROOT, capture_output=True, text=True,
-                          env=dict(os.environ, **(env or {})))
+    """mutmut's command line, its map learnt by one pytest process per core (outline/mutate/sharded_map.py)."""
+    return subprocess.run([sys.executable, "-m", "outline.mutate.sharded_map", *args], cwd=ROOT,
+                          capture_output=True, text=True, env=dict(os.environ, **(env or {})))
 
 
 # What the map of scenarios to functions is made from besides the references. mutmut maps a test again only
@@ -111,17 +112,20 @@ def _mutmut(*args: str, env: dict[str, str] | None = None) -> subprocess.Complet
 # the metro backend's remove_key "no tests" though F-NET-25 had come to remove the key). So the tests made of
 # what changed since the map was made are taken out of mutmut's map and mapped again, and only they: what each
 # test is made of (its feature file, and each step definition its steps bind to, by the source of that
-# definition) is noted beside the map (outline/mutate/scenario_inputs.py). Mapping every scenario takes ~40 min under
-# mutmut's trampolines; a changed feature file costs its own scenarios, a changed step definition the scenarios
-# that use it, a change elsewhere in a step module (a helper, an import) every scenario whose step modules
-# reach that module, and a change the notes cannot place (a module no noted test uses, such as the fixtures,
-# or no notes at all) every test.
-# The plugin is among them: it decides how every test is mapped, so a change to it maps every test again.
-MAPS_EVERY_TEST = ("outline/mutate/mutation_plugin.py",)
+# definition) is noted beside the map (outline/mutate/scenario_inputs.py). Mapping every test under mutmut's
+# trampolines took 71 min in one process (2026-11-27); it is now one process per core with the trampoline's
+# bookkeeping read once (sharded_map.py, quick_trampoline.py). A changed feature file costs its own
+# scenarios, a changed step definition the scenarios that use it, a change elsewhere in a step module (a
+# helper, an import) every scenario whose step modules reach that module, and a change the notes cannot place
+# (a module no noted test uses, such as the fixtures, or no notes at all) every test.
+# The plugins are among them: they decide how every test is mapped, so a change to one maps every test again.
+MAPS_EVERY_TEST = ("outline/mutate/mutation_plugin.py", "outline/mutate/quick_trampoline.py",
+                   "outline/mutate/map_shard.py")
 MAPPED_FROM = ("features/**/*.feature", "steps/*.py", "tests/test_bulk.py", "tests/test_kernel.py",
                *MAPS_EVERY_TEST)
 MAP_DIGEST = MUTANTS_DIR / "scenarios.sha256"          # what the map was made from (JSON; see map_sources)
 INPUTS = MUTANTS_DIR / "scenario_inputs.json"         # what each mapped test is made of
+MAP_LOG = MUTANTS_DIR / "map.log"                     # how the map was learnt (sharded_map.py)
 MAPPED_TESTS = ("features/", "tests/test_bulk.py", "tests/test_kernel.py")
 
 
@@ -240,7 +244,10 @@ def generate() -> None:
             print(f"mutmut: the scenarios or steps changed since the last map: mapping the {len(again)} tests "
                   "made of what changed again", flush=True)
             _forget(stats, again)
+    MAP_LOG.unlink(missing_ok=True)
     result = _mutmut("run", "outline.mutate.mutation.generate-only")
+    if MAP_LOG.exists():
+        print(f"mutmut: {MAP_LOG.read_text(encoding='utf-8').strip()}", flush=True)
     if stats.exists():
         if old != sources or not INPUTS.exists():
             note_inputs()

@@ -1,0 +1,107 @@
+"""outline/mutate/sharded_map.py: the map of who reaches what, learnt by several pytest processes, is the map
+mutmut learns in one (a small project of its own, mapped both ways by mutmut 3.8 itself)."""
+from __future__ import annotations
+
+import json
+import os
+import subprocess
+import sys
+from pathlib import Path
+
+import pytest
+
+pytest.importorskip("mutmut")
+
+from outline.mutate.sharded_map import shards  # noqa: E402
+
+ROOT = Path(__file__).resolve().parents[1]
+
+SOURCE = '''
+def double(x):
+    return add(x, x)
+
+
+def add(a, b):
+    return a + b
+
+
+class Meter:
+    def __init__(self):
+        self.total = 0
+
+    def feed(self, n):
+        for i in range(n):
+            self.total = add(self.total, i)
+        return self.total
+'''
+
+TESTS = '''
+import pytest
+from lib.calc import Meter, add, double
+
+
+def test_add():
+    assert add(2, 3) == 5
+
+
+def test_double():
+    assert double(4) == 8
+
+
+@pytest.mark.parametrize("n", [1, 3, 4])
+def test_meter(n):
+    assert Meter().feed(n) == n * (n - 1) // 2
+
+
+def test_nothing_of_the_library():
+    assert True
+'''
+
+
+def _project(where: Path) -> Path:
+    (where / "lib").mkdir(parents=True)
+    (where / "tests").mkdir()
+    (where / "lib" / "__init__.py").write_text("")
+    (where / "lib" / "calc.py").write_text(SOURCE)
+    (where / "tests" / "test_calc.py").write_text(TESTS)
+    (where / "pyproject.toml").write_text(
+        '[tool.mutmut]\nsource_paths = ["lib/"]\npytest_add_cli_args_test_selection = ["tests/"]\n'
+        'pytest_add_cli_args = ["-p", "no:cacheprovider", "-p", "no:xdist"]\n'
+        '[tool.pytest.ini_options]\npythonpath = ["."]\n')
+    return where
+
+
+def _map(project: Path, module: str) -> dict:
+    env = dict(os.environ, PYTHONPATH=str(ROOT), MUTMUT_MAP_JOBS="2")
+    env.pop("MUTANT_UNDER_TEST", None)
+    done = subprocess.run([sys.executable, "-m", module, "run", "lib.calc.x_nothing__mutmut_1"], cwd=project,
+                          capture_output=True, text=True, env=env, timeout=300)
+    stats = project / "mutants" / "mutmut-stats.json"
+    assert stats.exists(), done.stdout[-3000:] + done.stderr[-3000:]
+    data = json.loads(stats.read_text())
+    return {"tests": {k: sorted(v) for k, v in data["tests_by_mangled_function_name"].items() if v},
+            "callers": {k: sorted(v) for k, v in data["function_dependencies"].items() if v},
+            "timed": sorted(data["duration_by_test"]), "sharded": _logged(project)}
+
+
+def _logged(project: Path) -> bool:
+    log = project / "mutants" / "map.log"
+    return log.exists() and "mapped 6 tests in 2 processes" in log.read_text()
+
+
+@pytest.mark.cost(20)
+def test_a_sharded_map_is_mutmut_own_map(tmp_path: Path) -> None:
+    own = _map(_project(tmp_path / "own"), "mutmut")
+    sharded = _map(_project(tmp_path / "sharded"), "outline.mutate.sharded_map")
+    assert sharded.pop("sharded") and not own.pop("sharded")
+    assert sharded == own
+    assert own["tests"]["lib.calc.x_add"] == ["tests/test_calc.py::test_add", "tests/test_calc.py::test_double",
+                                              "tests/test_calc.py::test_meter[1]", "tests/test_calc.py::test_meter[3]",
+                                              "tests/test_calc.py::test_meter[4]"]
+    assert "tests/test_calc.py::test_nothing_of_the_library" in own["timed"]
+
+
+def test_the_tests_are_dealt_round_robin_in_sorted_order() -> None:
+    assert shards(["d", "a", "c", "b", "e"], 2) == [["a", "c", "e"], ["b", "d"]]
+    assert shards(["a"], 4) == [["a"]]
+    assert shards([], 2) == []
