@@ -684,3 +684,26 @@ def test_a_field_change_that_may_raise_is_no_rule_s_to_pass_over() -> None:
     after = before.replace('cab=fields["cab"]', 'cab=fields["XXcabXX"]')
     assert mutation.rule_reason(lcu, line, before, after) is None
     assert mutation.rule_reason(lcu, line, before, before.replace('cab=fields["cab"]', "cab=None")) == "unlisted field"
+
+
+def test_the_source_of_an_event_no_contract_lists_is_passed_over_unless_the_change_may_raise() -> None:
+    """An emit stores its source as it is; an event of a kind no contract lists is read by no step and compared
+    by no checker, so its source is as unobservable as its unlisted fields (seed 9: `cfsk.carrier_set` and
+    `order.given` signed None survived). A listed kind's source is checked wherever a step reads the event."""
+    def line_of(path: str, text: str) -> tuple[int, str]:
+        lines = (ROOT / path).read_text(encoding="utf-8").splitlines()
+        return next((i, line.strip()) for i, line in enumerate(lines, start=1) if text in line)
+
+    onboard, ccu = "sut/reference/atp/onboard.py", "sut/reference/crh2/ccu.py"
+    line, before = line_of(onboard, 'self._emit("CFSK", "cfsk.carrier_set"')
+    assert mutation.rule_reason(onboard, line, before, before.replace('"CFSK"', "None")) == "unlisted source"
+    renamed = before.replace('"CFSK"', '"XXCFSKXX"')                   # no None: the older rule's already
+    assert mutation.in_unlisted_source(onboard, line, before, renamed)
+    assert mutation.rule_reason(onboard, line, before, renamed) == "unread event"
+    line, before = line_of(ccu, '"order.given", name=name, value=value)')
+    assert mutation.rule_reason(ccu, line, before, before.replace('f"car{self.car}.monitor"', "None")) == \
+        "unlisted source"
+    assert mutation.in_unlisted_source(ccu, line, before, before.replace("car{self.car}", "XXcar{self.car}XX"))
+    line, before = line_of(onboard, 'self._emit("ATP", "linking.missing", group=link.group, reaction="none")')
+    assert mutation.rule_reason(onboard, line, before, before.replace('"ATP"', '"atp"')) is None     # listed
+    assert not mutation.in_unlisted_source(onboard, line, before, before.replace('"linking.missing"', "None"))

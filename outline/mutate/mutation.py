@@ -508,20 +508,53 @@ def in_unlisted_field(path: str, line: int, before: str, after: str) -> bool:
     return (listed is None or kw.arg not in listed) and field_change_cannot_raise(kw, text, before, after, columns)
 
 
-def field_change_cannot_raise(kw: ast.keyword, text: str, before: str, after: str,
-                              columns: tuple[int, int]) -> bool:
-    """Whether a change (at `columns` of the source line `text`) inside the keyword argument `kw` of a call
-    cannot raise before the call: the keyword's whole value made None, or the keyword dropped; otherwise no
+def in_unlisted_source(path: str, line: int, before: str, after: str) -> bool:
+    """Whether the change is inside the source argument of an emit call (`emit(source, kind, ...)`, the first
+    of two positional arguments) whose kind, a literal, no contract lists, and cannot raise: the whole source
+    made None, or a change inside it that field_change_cannot_raise would allow in a field. Every emit stores
+    its source as it is (TraceEvent), and an event of a kind no contract lists is read by no step (the guard
+    refuses it: ContractGap) and compared by no checker; a listed kind's source is checked (check_event)."""
+    source, calls = _emits(path)
+    lines = source.splitlines()
+    if not 0 < line <= len(lines):
+        return False
+    text = lines[line - 1]
+    columns = changed_columns(text, before, after)
+    if columns is None:
+        return False
+    start, end = columns
+    for call in calls:
+        if len(call.args) != 2 or not (isinstance(call.args[1], ast.Constant) and isinstance(call.args[1].value, str)):
+            continue
+        arg = call.args[0]
+        if not (arg.lineno == line == arg.end_lineno and arg.col_offset <= start and end <= (arg.end_col_offset or 0)):
+            continue
+        if _listed_fields(call.args[1].value) is not None:
+            return False
+        whole = text[arg.col_offset:arg.end_col_offset]
+        if _squeezed(after) == _squeezed(text.strip().replace(whole, "None", 1)):
+            return True
+        return field_change_cannot_raise(None, text, before, after, columns, arg)
+    return False
+
+
+def field_change_cannot_raise(kw: ast.keyword | None, text: str, before: str, after: str,
+                              columns: tuple[int, int], value: ast.expr | None = None) -> bool:
+    """Whether a change (at `columns` of the source line `text`) inside the keyword argument `kw` of a call (or,
+    with `kw` None, inside the expression `value`) cannot raise before the call: the keyword's whole value made
+    None, or the keyword dropped; otherwise no
     argument made None or dropped inside it (may_raise_otherwise), no subscript's key changed
     (`fields["XXcabXX"]` is a KeyError: the checker overturned it, 2026-11-27) and no arithmetic operator
     swapped (`"a" - b`, `x / 0`)."""
-    whole = text[kw.col_offset:kw.end_col_offset]
-    stripped = text.strip()
-    squeezed = _squeezed(after)
-    if squeezed in (_squeezed(stripped.replace(whole, f"{kw.arg}=None", 1)),
-                    _squeezed(re.sub(r",?\s*" + re.escape(whole), "", stripped, count=1)),
-                    _squeezed(stripped.replace(whole, "", 1))):
-        return True
+    if kw is not None:
+        whole = text[kw.col_offset:kw.end_col_offset]
+        stripped = text.strip()
+        squeezed = _squeezed(after)
+        if squeezed in (_squeezed(stripped.replace(whole, f"{kw.arg}=None", 1)),
+                        _squeezed(re.sub(r",?\s*" + re.escape(whole), "", stripped, count=1)),
+                        _squeezed(stripped.replace(whole, "", 1))):
+            return True
+        value = kw.value
     if may_raise_otherwise(before, after):
         return False
     start, end = columns
@@ -529,7 +562,7 @@ def field_change_cannot_raise(kw: ast.keyword, text: str, before: str, after: st
     def touched(lo: int, hi: int) -> bool:
         return start < hi and lo < max(end, start + 1)
 
-    for node in ast.walk(kw.value):
+    for node in ast.walk(value):
         if isinstance(node, ast.Subscript) and touched(node.slice.col_offset, node.slice.end_col_offset or 0):
             return False
         if isinstance(node, ast.BinOp) and touched(node.left.end_col_offset or 0, node.right.col_offset):
@@ -851,6 +884,8 @@ def rule_reason(path: str, line: int, before: str, after: str) -> str | None:
         return "unread field"
     if in_unlisted_field(path, line, before, after):
         return "unlisted field"
+    if in_unlisted_source(path, line, before, after):
+        return "unlisted source"
     return never_run_reason(path, line, before, after)
 
 
