@@ -19,6 +19,12 @@ from outline.mutate.mutation import Mutant
 ROOT = Path(__file__).resolve().parents[1]
 
 
+def _line_saying(path: str, text: str) -> tuple[int, str]:
+    """The first line of a reference that holds `text`: its number and its stripped text."""
+    lines = (ROOT / path).read_text(encoding="utf-8").splitlines()
+    return next((i, line.strip()) for i, line in enumerate(lines, start=1) if text in line)
+
+
 @pytest.fixture(autouse=True)
 def _session_ends() -> None:
     """Tests here call the plugin's pytest_configure by hand; what it swaps in mutmut's trampoline for a session
@@ -654,20 +660,16 @@ def test_a_field_no_contract_lists_is_passed_over_unless_the_change_may_raise() 
     """The contracts define what a step can read of an event (the guard refuses any other field), so a change
     to an unlisted field is unobservable, provided it cannot raise: its whole value made None or the keyword
     dropped cannot; None inside the computation of its value may."""
-    def line_of(path: str, text: str) -> tuple[int, str]:
-        lines = (ROOT / path).read_text(encoding="utf-8").splitlines()
-        return next((i, line.strip()) for i, line in enumerate(lines, start=1) if text in line)
-
     onboard, vdx = "sut/reference/atp/onboard.py", "sut/reference/atp/vdx.py"
-    line, before = line_of(onboard, 'self._emit("ATP", "def.step", step=step + 1')
+    line, before = _line_saying(onboard, 'self._emit("ATP", "def.step", step=step + 1')
     assert mutation.rule_reason(onboard, line, before, before.replace("step=step + 1", "step=None")) == "unlisted field"
     assert mutation.in_unlisted_field(onboard, line, before, before.replace("step + 1", "step + 2"))
     listed = before.replace('readback="ok" if readback else "wrong"', "readback=None")   # def.step lists readback
     assert mutation.rule_reason(onboard, line, before, listed) is None
-    line, before = line_of(vdx, 'self._emit(self.name, "relay.change", energised=energised)')
+    line, before = _line_saying(vdx, 'self._emit(self.name, "relay.change", energised=energised)')
     assert mutation.rule_reason(vdx, line, before, before.replace("energised=energised", "")) == "unlisted field"
     # None inside a field's computation may raise (round(None, 3)): not this rule's to pass over.
-    line, before = line_of(onboard, 'self._emit("ATP", "mode.change", mode=mode, at_m=round(self.position_m, 3))')
+    line, before = _line_saying(onboard, 'self._emit("ATP", "mode.change", mode=mode, at_m=round(self.position_m, 3))')
     inside = before.replace("round(self.position_m, 3)", "round(None, 3)")
     assert mutation.in_unlisted_field(onboard, line, before, inside) is False
     assert mutation.in_unlisted_field(onboard, line, before, before.replace("round(self.position_m, 3)", "None"))
@@ -690,20 +692,16 @@ def test_the_source_of_an_event_no_contract_lists_is_passed_over_unless_the_chan
     """An emit stores its source as it is; an event of a kind no contract lists is read by no step and compared
     by no checker, so its source is as unobservable as its unlisted fields (seed 9: `cfsk.carrier_set` and
     `order.given` signed None survived). A listed kind's source is checked wherever a step reads the event."""
-    def line_of(path: str, text: str) -> tuple[int, str]:
-        lines = (ROOT / path).read_text(encoding="utf-8").splitlines()
-        return next((i, line.strip()) for i, line in enumerate(lines, start=1) if text in line)
-
     onboard, ccu = "sut/reference/atp/onboard.py", "sut/reference/crh2/ccu.py"
-    line, before = line_of(onboard, 'self._emit("CFSK", "cfsk.carrier_set"')
+    line, before = _line_saying(onboard, 'self._emit("CFSK", "cfsk.carrier_set"')
     assert mutation.rule_reason(onboard, line, before, before.replace('"CFSK"', "None")) == "unlisted source"
     renamed = before.replace('"CFSK"', '"XXCFSKXX"')                   # no None: the older rule's already
     assert mutation.in_unlisted_source(onboard, line, before, renamed)
     assert mutation.rule_reason(onboard, line, before, renamed) == "unread event"
-    line, before = line_of(ccu, '"order.given", name=name, value=value)')
+    line, before = _line_saying(ccu, '"order.given", name=name, value=value)')
     assert mutation.rule_reason(ccu, line, before, before.replace('f"car{self.car}.monitor"', "None")) == \
         "unlisted source"
     assert mutation.in_unlisted_source(ccu, line, before, before.replace("car{self.car}", "XXcar{self.car}XX"))
-    line, before = line_of(onboard, 'self._emit("ATP", "linking.missing", group=link.group, reaction="none")')
+    line, before = _line_saying(onboard, 'self._emit("ATP", "linking.missing", group=link.group, reaction="none")')
     assert mutation.rule_reason(onboard, line, before, before.replace('"ATP"', '"atp"')) is None     # listed
     assert not mutation.in_unlisted_source(onboard, line, before, before.replace('"linking.missing"', "None"))

@@ -436,18 +436,26 @@ def changed_columns(line_text: str, before: str, after: str) -> tuple[int, int] 
     return indent + prefix, indent + max(prefix, len(before) - suffix)
 
 
-def _changed_field(path: str, line: int, before: str, after: str
-                   ) -> tuple[ast.Call, ast.keyword, str, tuple[int, int]] | None:
-    """The emit call (EMIT_CALLS) and its one-line keyword argument the change lies inside, with the source line
-    and the changed columns; None if the change is not inside one."""
+def _emit_change(path: str, line: int, before: str, after: str
+                 ) -> tuple[list[ast.Call], str, tuple[int, int]] | None:
+    """The emit calls of `path`, the source line and the columns of it the change covers; None if not found."""
     source, calls = _emits(path)
     lines = source.splitlines()
     if not 0 < line <= len(lines):
         return None
     text = lines[line - 1]
     columns = changed_columns(text, before, after)
-    if columns is None:
+    return None if columns is None else (calls, text, columns)
+
+
+def _changed_field(path: str, line: int, before: str, after: str
+                   ) -> tuple[ast.Call, ast.keyword, str, tuple[int, int]] | None:
+    """The emit call (EMIT_CALLS) and its one-line keyword argument the change lies inside, with the source line
+    and the changed columns; None if the change is not inside one."""
+    found = _emit_change(path, line, before, after)
+    if found is None:
         return None
+    calls, text, columns = found
     start, end = columns
     return next(((call, kw, text, columns) for call in calls for kw in call.keywords
                  if kw.arg is not None and kw.lineno == line == kw.end_lineno
@@ -514,14 +522,10 @@ def in_unlisted_source(path: str, line: int, before: str, after: str) -> bool:
     made None, or a change inside it that field_change_cannot_raise would allow in a field. Every emit stores
     its source as it is (TraceEvent), and an event of a kind no contract lists is read by no step (the guard
     refuses it: ContractGap) and compared by no checker; a listed kind's source is checked (check_event)."""
-    source, calls = _emits(path)
-    lines = source.splitlines()
-    if not 0 < line <= len(lines):
+    found = _emit_change(path, line, before, after)
+    if found is None:
         return False
-    text = lines[line - 1]
-    columns = changed_columns(text, before, after)
-    if columns is None:
-        return False
+    calls, text, columns = found
     start, end = columns
     for call in calls:
         if len(call.args) != 2 or not (isinstance(call.args[1], ast.Constant) and isinstance(call.args[1].value, str)):
