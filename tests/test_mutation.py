@@ -705,3 +705,20 @@ def test_the_source_of_an_event_no_contract_lists_is_passed_over_unless_the_chan
     line, before = _line_saying(onboard, 'self._emit("ATP", "linking.missing", group=link.group, reaction="none")')
     assert mutation.rule_reason(onboard, line, before, before.replace('"ATP"', '"atp"')) is None     # listed
     assert not mutation.in_unlisted_source(onboard, line, before, before.replace('"linking.missing"', "None"))
+
+
+def test_a_usage_error_worded_with_none_is_passed_over_only_where_its_constructor_only_words_it() -> None:
+    """OutOfRange words all three of its arguments; UnknownName words what it is asked for but sorts the
+    known names and looks the name up among them, where None raises a TypeError instead (seed 9 drew
+    `OutOfRange(name, value, None)` and `UnknownName(None, name, lamps)`: both the same error, only worded
+    "None"). A dropped argument is a TypeError either way."""
+    assert mutation.words_only_parameters()["OutOfRange"] == ("what", "value", "allowed")
+    assert mutation.words_only_parameters()["UnknownName"] == ("what", "", "")
+    atp, crh2 = "sut/reference/atp/backend.py", "sut/reference/crh2/backend.py"
+    line, before = _line_saying(atp, 'raise OutOfRange(name, value, f"{limits[0]:g}..{limits[1]:g}")')
+    assert mutation.rule_reason(atp, line, before, "raise OutOfRange(name, value, None)") == "usage error"
+    assert mutation.rule_reason(atp, line, before, 'raise OutOfRange(name, value, )') is None
+    line, before = _line_saying(crh2, 'raise UnknownName("cab lamp", name, lamps)')
+    assert mutation.rule_reason(crh2, line, before, "raise UnknownName(None, name, lamps)") == "usage error"
+    assert mutation.rule_reason(crh2, line, before, 'raise UnknownName("cab lamp", None, lamps)') is None
+    assert mutation.rule_reason(crh2, line, before, 'raise UnknownName("cab lamp", name, None)') is None

@@ -598,6 +598,55 @@ def in_usage_error(path: str, line: int) -> bool:
     return any(start <= line <= end for start, end in _RAISES[path])
 
 
+_WORDS_ONLY: dict[Path, dict[str, tuple[str, ...]]] = {}
+
+
+def words_only_parameters() -> dict[str, tuple[str, ...]]:
+    """For each of the driver's USAGE_ERRORS (sut/errors.py), the parameters of its __init__ in order, each
+    named if the constructor only puts it into its message (an f-string's value) or keeps it as an attribute,
+    "" if it computes with it (UnknownName sorts `known` and looks `name` up among them: None there raises)."""
+    if ROOT not in _WORDS_ONLY:
+        tree = ast.parse((ROOT / "sut" / "errors.py").read_text(encoding="utf-8"))
+        found: dict[str, tuple[str, ...]] = {}
+        for cls in (n for n in tree.body if isinstance(n, ast.ClassDef) and n.name in USAGE_ERRORS):
+            init = next((f for f in cls.body if isinstance(f, ast.FunctionDef) and f.name == "__init__"), None)
+            if init is None:
+                continue
+            params = [a.arg for a in init.args.args[1:]]
+            harmless: set[int] = set()
+            for node in ast.walk(init):
+                if isinstance(node, ast.FormattedValue) and isinstance(node.value, ast.Name):
+                    harmless.add(id(node.value))
+                if isinstance(node, ast.Assign) and all(isinstance(t, (ast.Attribute, ast.Tuple)) for t in node.targets):
+                    values = node.value.elts if isinstance(node.value, ast.Tuple) else [node.value]
+                    harmless.update(id(v) for v in values if isinstance(v, ast.Name))
+            loads = [n for n in ast.walk(init) if isinstance(n, ast.Name) and isinstance(n.ctx, ast.Load)]
+            found[cls.name] = tuple(p if all(id(n) in harmless for n in loads if n.id == p) else "" for p in params)
+        _WORDS_ONLY[ROOT] = found
+    return _WORDS_ONLY[ROOT]
+
+
+def words_made_none(path: str, line: int, before: str, after: str) -> bool:
+    """Whether the change makes one whole argument of a usage error's constructor None where that constructor
+    only words it (words_only_parameters): the same error, raised by the same test, only its message reads
+    "None" (seed 9: `OutOfRange(name, value, None)`, `UnknownName(None, name, lamps)`)."""
+    source, _calls = _emits(path)                  # parsed once per file (_TREES)
+    lines = source.splitlines()
+    text = lines[line - 1] if 0 < line <= len(lines) else ""
+    for node in ast.walk(_TREES[ROOT, path]):
+        if not (isinstance(node, ast.Call) and isinstance(node.func, ast.Name)
+                and node.func.id in USAGE_ERRORS and node.lineno <= line <= (node.end_lineno or node.lineno)):
+            continue
+        params = words_only_parameters().get(node.func.id, ())
+        for index, arg in enumerate(node.args):
+            if index >= len(params) or not params[index] or not (arg.lineno == line == arg.end_lineno):
+                continue
+            whole = text[arg.col_offset:arg.end_col_offset]
+            if _squeezed(after) == _squeezed(text.strip().replace(whole, "None", 1)) and whole != "None":
+                return True
+    return False
+
+
 # A branch only faulty variants take: an `if` whose test the reference's behaviour switches decide (each
 # config's *Behaviour dataclass: "switches that only faulty variants turn off"), read at their defaults. A
 # mutant in the branch the reference never takes changes a faulty variant, not the reference, and no run
@@ -878,7 +927,7 @@ def rule_reason(path: str, line: int, before: str, after: str) -> str | None:
     The rules about what nobody reads (a usage error's words, an unread event or field) hold only for a change
     that cannot raise instead (may_raise_otherwise)."""
     unread = not may_raise_otherwise(before, after)
-    if unread and in_usage_error(path, line):
+    if in_usage_error(path, line) and (unread or words_made_none(path, line, before, after)):
         return "usage error"
     if unread and in_unread_event(path, line):
         return "unread event"
