@@ -716,9 +716,10 @@ def test_a_usage_error_worded_with_none_is_passed_over_only_where_its_constructo
     assert mutation.words_only_parameters()["UnknownName"] == ("what", "", "")
     atp, crh2 = "sut/reference/atp/backend.py", "sut/reference/crh2/backend.py"
     line, before = _line_saying(atp, 'raise OutOfRange(name, value, f"{limits[0]:g}..{limits[1]:g}")')
-    assert mutation.rule_reason(atp, line, before, "raise OutOfRange(name, value, None)") == "usage error"
+    assert mutation.rule_reason(atp, line, before, "raise OutOfRange(name, value, None)") == "usage error worded None"
     assert mutation.rule_reason(atp, line, before, 'raise OutOfRange(name, value, )') is None
     line, before = _line_saying(crh2, 'raise UnknownName("cab lamp", name, lamps)')
-    assert mutation.rule_reason(crh2, line, before, "raise UnknownName(None, name, lamps)") == "usage error"
+    assert mutation.rule_reason(crh2, line, before, "raise UnknownName(None, name, lamps)") == \
+        "usage error worded None"
     assert mutation.rule_reason(crh2, line, before, 'raise UnknownName("cab lamp", None, lamps)') is None
     assert mutation.rule_reason(crh2, line, before, 'raise UnknownName("cab lamp", name, None)') is None

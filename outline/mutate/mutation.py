@@ -927,8 +927,10 @@ def rule_reason(path: str, line: int, before: str, after: str) -> str | None:
     The rules about what nobody reads (a usage error's words, an unread event or field) hold only for a change
     that cannot raise instead (may_raise_otherwise)."""
     unread = not may_raise_otherwise(before, after)
-    if in_usage_error(path, line) and (unread or words_made_none(path, line, before, after)):
+    if in_usage_error(path, line) and unread:
         return "usage error"
+    if in_usage_error(path, line) and words_made_none(path, line, before, after):
+        return "usage error worded None"
     if unread and in_unread_event(path, line):
         return "unread event"
     if in_variant_only_branch(path, line):
