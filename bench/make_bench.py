@@ -3,6 +3,7 @@
     .venv/bin/python bench/make_bench.py test --clone [--record]       # a clean clone of HEAD, installs included
     .venv/bin/python bench/make_bench.py report [--record]             # this working tree, as it is
     .venv/bin/python bench/make_bench.py mutate --clone --map-only     # until the map is made, then stopped
+    (--keep-map FILE keeps the map made, mutants/mutmut-stats.json, to compare with another)
 
 One `make TARGET` (arguments after `--` go to make, e.g. `-- JOBS=2`), in this working tree or, with --clone, in
 a fresh `git clone` of HEAD in a temporary folder (what issue 33's targets are measured on: the venv, npm and
@@ -18,6 +19,7 @@ from __future__ import annotations
 import argparse
 import os
 import re
+import shutil
 import signal
 import subprocess
 import sys
@@ -76,6 +78,8 @@ def main(argv: list[str] | None = None) -> int:
     ap.add_argument("--clone", action="store_true", help="in a fresh git clone of HEAD (a temporary folder)")
     ap.add_argument("--map-only", action="store_true", help="mutate: stop once the map is made")
     ap.add_argument("--keep-log", type=Path, default=None, metavar="FILE", help="keep make's output here")
+    ap.add_argument("--keep-map", type=Path, default=None, metavar="FILE",
+                    help="mutate: keep the map made (mutants/mutmut-stats.json) here, to compare with another")
     _history.add_argument(ap)
     args = ap.parse_args(argv)
     load_before = _history.load()
@@ -86,6 +90,9 @@ def main(argv: list[str] | None = None) -> int:
             subprocess.run(["git", "clone", "--quiet", str(ROOT), str(cwd)], check=True)
         log = args.keep_log or Path(tmp) / "make.log"
         figures = run(args.target, cwd, make_args, args.map_only, log)
+        made = cwd / "mutants" / "mutmut-stats.json"
+        if args.keep_map and made.exists():
+            shutil.copyfile(made, args.keep_map)
     load_after = _history.load()
     shown = figures.get("map_s", figures["wall_s"]) if args.target == "mutate" else figures["wall_s"]
     goal = TARGETS[args.target]
