@@ -723,3 +723,16 @@ def test_a_usage_error_worded_with_none_is_passed_over_only_where_its_constructo
         "usage error worded None"
     assert mutation.rule_reason(crh2, line, before, 'raise UnknownName("cab lamp", None, lamps)') is None
     assert mutation.rule_reason(crh2, line, before, 'raise UnknownName("cab lamp", name, None)') is None
+
+
+def test_a_keyword_dropped_from_the_middle_of_an_emit_is_inside_that_keyword() -> None:
+    """mutmut drops a middle keyword with the ", " after it; seed 9 drew `to=to, ` of the metro's line.switch
+    (no contract lists that kind) and the field rules did not see the change as inside the keyword."""
+    tcds = "sut/reference/metro/tcds.py"
+    line, before = _line_saying(tcds, '"line.switch", frm=frm, to=to, reason=why')
+    assert mutation.rule_reason(tcds, line, before, before.replace("to=to, ", "")) == "unlisted field"
+    assert mutation.rule_reason(tcds, line, before, before.replace("reason=why", "")) == "unlisted field"
+    # A listed field dropped from the middle stays a mutant to run.
+    onboard = "sut/reference/atp/onboard.py"
+    line, before = _line_saying(onboard, 'self._emit("ATP", "linking.missing", group=link.group, reaction="none")')
+    assert mutation.rule_reason(onboard, line, before, before.replace("group=link.group, ", "")) is None

@@ -457,9 +457,15 @@ def _changed_field(path: str, line: int, before: str, after: str
         return None
     calls, text, columns = found
     start, end = columns
+    def reach(kw: ast.keyword) -> int:
+        # A keyword dropped from the middle of a call goes with the ", " after it (seed 9: `to=to, ` of the
+        # metro's line.switch, which the rule did not see as inside the keyword).
+        stop = kw.end_col_offset or 0
+        return stop + 2 if text[stop:stop + 2] == ", " else stop
+
     return next(((call, kw, text, columns) for call in calls for kw in call.keywords
                  if kw.arg is not None and kw.lineno == line == kw.end_lineno
-                 and kw.col_offset <= start and end <= (kw.end_col_offset or 0)), None)
+                 and kw.col_offset <= start and end <= reach(kw)), None)
 
 
 def in_unread_field(path: str, line: int, before: str, after: str) -> bool:
