@@ -105,3 +105,28 @@ def test_the_tests_are_dealt_round_robin_in_sorted_order() -> None:
     assert shards(["d", "a", "c", "b", "e"], 2) == [["a", "c", "e"], ["b", "d"]]
     assert shards(["a"], 4) == [["a"]]
     assert shards([], 2) == []
+
+
+def _mutmut_run(project: Path, mutant: str) -> subprocess.CompletedProcess:
+    env = dict(os.environ, PYTHONPATH=str(ROOT), MUTMUT_MAP_JOBS="2")
+    env.pop("MUTANT_UNDER_TEST", None)
+    return subprocess.run([sys.executable, "-m", "outline.mutate.sharded_map", "run", mutant], cwd=project,
+                          capture_output=True, text=True, env=env, timeout=300)
+
+
+@pytest.mark.cost(20)
+def test_the_clean_run_is_dealt_out_too_and_a_failing_test_still_stops_mutmut(tmp_path: Path) -> None:
+    project = _project(tmp_path / "ok")
+    done = _mutmut_run(project, "lib.calc.x_add__mutmut_1")
+    log = (project / "mutants" / "map.log").read_text()
+    assert "clean run of 5 tests in 2 processes" in log, done.stdout[-2000:]      # the tests that reach add()
+    meta = json.loads((project / "mutants" / "lib" / "calc.py.meta").read_text())
+    assert meta["exit_code_by_key"]["lib.calc.x_add__mutmut_1"] == 1                # killed, as mutmut says
+    # A test that passes while mutmut maps and fails unmutated: the sharded clean run must stop mutmut.
+    project = _project(tmp_path / "failing")
+    with open(project / "tests" / "test_calc.py", "a") as fh:
+        fh.write("\n\ndef test_fails_unmutated():\n    import os\n    assert add(1, 1) == 2\n"
+                 "    assert os.environ.get('MUTANT_UNDER_TEST') == 'stats'\n")
+    done = _mutmut_run(project, "lib.calc.x_add__mutmut_1")
+    assert done.returncode != 0 and "Failed to run clean test" in done.stdout
+    assert "test_fails_unmutated" in done.stdout
