@@ -1041,6 +1041,9 @@ def run(mutants: list[Mutant], jobs: int, resume: bool = False) -> None:
     if todo:
         probe_mutant_mode()
         _mutmut("run", "--max-children", str(jobs), *[m.name for m in todo], env={"CRH2_MUTATION_KILLS": str(KILLS)})
+        if MAP_LOG.exists():              # sharded_map.py's line for the clean run, which mutmut does not print
+            print(*(f"mutmut: {line}" for line in MAP_LOG.read_text(encoding="utf-8").splitlines()
+                    if line.startswith("clean run")), sep="\n", flush=True)
     codes = _codes()
     killers = dict(line.split("\t", 1) for line in KILLS.read_text(encoding="utf-8").splitlines()) \
         if KILLS.exists() else {}
