@@ -71,11 +71,17 @@ def _project(where: Path) -> Path:
     return where
 
 
-def _map(project: Path, module: str) -> dict:
+def _mutmut_run(project: Path, mutant: str, module: str = "outline.mutate.sharded_map"
+                ) -> subprocess.CompletedProcess:
+    """`python -m <module> run <mutant>` in the project, two processes for the shards."""
     env = dict(os.environ, PYTHONPATH=str(ROOT), MUTMUT_MAP_JOBS="2")
     env.pop("MUTANT_UNDER_TEST", None)
-    done = subprocess.run([sys.executable, "-m", module, "run", "lib.calc.x_nothing__mutmut_1"], cwd=project,
-                          capture_output=True, text=True, env=env, timeout=300)
+    return subprocess.run([sys.executable, "-m", module, "run", mutant], cwd=project, capture_output=True,
+                          text=True, env=env, timeout=300)
+
+
+def _map(project: Path, module: str) -> dict:
+    done = _mutmut_run(project, "lib.calc.x_nothing__mutmut_1", module)
     stats = project / "mutants" / "mutmut-stats.json"
     assert stats.exists(), done.stdout[-3000:] + done.stderr[-3000:]
     data = json.loads(stats.read_text())
@@ -105,13 +111,6 @@ def test_the_tests_are_dealt_round_robin_in_sorted_order() -> None:
     assert shards(["d", "a", "c", "b", "e"], 2) == [["a", "c", "e"], ["b", "d"]]
     assert shards(["a"], 4) == [["a"]]
     assert shards([], 2) == []
-
-
-def _mutmut_run(project: Path, mutant: str) -> subprocess.CompletedProcess:
-    env = dict(os.environ, PYTHONPATH=str(ROOT), MUTMUT_MAP_JOBS="2")
-    env.pop("MUTANT_UNDER_TEST", None)
-    return subprocess.run([sys.executable, "-m", "outline.mutate.sharded_map", "run", mutant], cwd=project,
-                          capture_output=True, text=True, env=env, timeout=300)
 
 
 @pytest.mark.cost(20)

@@ -230,6 +230,15 @@ def _noted(path: Path) -> dict:
     return value if isinstance(value, dict) else {}
 
 
+def _print_map_log(what: str) -> None:
+    """sharded_map.py's lines starting with `what` (how long the map or the clean run took), which mutmut,
+    holding its own output back, does not print."""
+    if MAP_LOG.exists():
+        for line in MAP_LOG.read_text(encoding="utf-8").splitlines():
+            if line.startswith(what):
+                print(f"mutmut: {line}", flush=True)
+
+
 def generate() -> None:
     """Phase 1: mutants written and scenarios mapped (mutmut refuses the name afterwards, as intended)."""
     sources = map_sources()
@@ -246,8 +255,7 @@ def generate() -> None:
             _forget(stats, again)
     MAP_LOG.unlink(missing_ok=True)
     result = _mutmut("run", "outline.mutate.mutation.generate-only")
-    if MAP_LOG.exists():
-        print(f"mutmut: {MAP_LOG.read_text(encoding='utf-8').strip()}", flush=True)
+    _print_map_log("mapped")
     if stats.exists():
         if old != sources or not INPUTS.exists():
             note_inputs()
@@ -389,6 +397,12 @@ def read_kinds() -> tuple[frozenset[str], tuple[str, ...], frozenset[str]]:
     return kinds, prefixes, literals
 
 
+def _literal_kind(call: ast.Call) -> str | None:
+    """The kind an emit call names, its last positional argument, if that is a string literal."""
+    kind = call.args[-1] if call.args else None
+    return kind.value if isinstance(kind, ast.Constant) and isinstance(kind.value, str) else None
+
+
 def in_unread_event(path: str, line: int) -> bool:
     """Whether `line` of `path` is inside an emit call (EMIT_CALLS) whose kind, a literal, no check reads.
     Every emit of the references takes the kind as its last positional argument (`emit(kind)` on a node,
@@ -396,10 +410,8 @@ def in_unread_event(path: str, line: int) -> bool:
     _kinds, prefixes, literals = read_kinds()
 
     def unread(call: ast.Call) -> bool:
-        kind = call.args[-1] if call.args else None
-        if not (isinstance(kind, ast.Constant) and isinstance(kind.value, str)):
-            return False
-        return kind.value not in literals and not ("." in kind.value and kind.value.startswith(prefixes))
+        kind = _literal_kind(call)
+        return kind is not None and kind not in literals and not ("." in kind and kind.startswith(prefixes))
 
     _source, calls = _emits(path)
     if any(call.lineno <= line <= (call.end_lineno or call.lineno) for call in calls if unread(call)):
@@ -515,10 +527,10 @@ def in_unlisted_field(path: str, line: int, before: str, after: str) -> bool:
     if found is None:
         return False
     call, kw, text, columns = found
-    kind = call.args[-1] if call.args else None
-    if not (isinstance(kind, ast.Constant) and isinstance(kind.value, str)):
+    kind = _literal_kind(call)
+    if kind is None:
         return False
-    listed = _listed_fields(kind.value)
+    listed = _listed_fields(kind)
     return (listed is None or kw.arg not in listed) and field_change_cannot_raise(kw, text, before, after, columns)
 
 
@@ -534,26 +546,30 @@ def in_unlisted_source(path: str, line: int, before: str, after: str) -> bool:
     calls, text, columns = found
     start, end = columns
     for call in calls:
-        if len(call.args) != 2 or not (isinstance(call.args[1], ast.Constant) and isinstance(call.args[1].value, str)):
+        kind = _literal_kind(call)
+        if len(call.args) != 2 or kind is None:
             continue
         arg = call.args[0]
         if not (arg.lineno == line == arg.end_lineno and arg.col_offset <= start and end <= (arg.end_col_offset or 0)):
             continue
-        if _listed_fields(call.args[1].value) is not None:
+        if _listed_fields(kind) is not None:
             return False
-        whole = text[arg.col_offset:arg.end_col_offset]
-        if _squeezed(after) == _squeezed(text.strip().replace(whole, "None", 1)):
-            return True
-        return field_change_cannot_raise(None, text, before, after, columns, arg)
+        return _made_none(arg, text, after) or field_change_cannot_raise(None, text, before, after, columns, arg)
     return False
+
+
+def _made_none(arg: ast.expr, text: str, after: str) -> bool:
+    """Whether `after` is the source line `text` with the whole argument `arg` (on that line) written None."""
+    whole = text[arg.col_offset:arg.end_col_offset]
+    return whole != "None" and _squeezed(after) == _squeezed(text.strip().replace(whole, "None", 1))
 
 
 def field_change_cannot_raise(kw: ast.keyword | None, text: str, before: str, after: str,
                               columns: tuple[int, int], value: ast.expr | None = None) -> bool:
     """Whether a change (at `columns` of the source line `text`) inside the keyword argument `kw` of a call (or,
     with `kw` None, inside the expression `value`) cannot raise before the call: the keyword's whole value made
-    None, or the keyword dropped; otherwise no
-    argument made None or dropped inside it (may_raise_otherwise), no subscript's key changed
+    None, or the keyword dropped; otherwise no argument made None or dropped inside it (may_raise_otherwise), no
+    subscript's key changed
     (`fields["XXcabXX"]` is a KeyError: the checker overturned it, 2026-11-27) and no arithmetic operator
     swapped (`"a" - b`, `x / 0`)."""
     if kw is not None:
@@ -645,10 +661,8 @@ def words_made_none(path: str, line: int, before: str, after: str) -> bool:
             continue
         params = words_only_parameters().get(node.func.id, ())
         for index, arg in enumerate(node.args):
-            if index >= len(params) or not params[index] or not (arg.lineno == line == arg.end_lineno):
-                continue
-            whole = text[arg.col_offset:arg.end_col_offset]
-            if _squeezed(after) == _squeezed(text.strip().replace(whole, "None", 1)) and whole != "None":
+            if index < len(params) and params[index] and arg.lineno == line == arg.end_lineno \
+                    and _made_none(arg, text, after):
                 return True
     return False
 
@@ -933,10 +947,11 @@ def rule_reason(path: str, line: int, before: str, after: str) -> str | None:
     The rules about what nobody reads (a usage error's words, an unread event or field) hold only for a change
     that cannot raise instead (may_raise_otherwise)."""
     unread = not may_raise_otherwise(before, after)
-    if in_usage_error(path, line) and unread:
-        return "usage error"
-    if in_usage_error(path, line) and words_made_none(path, line, before, after):
-        return "usage error worded None"
+    if in_usage_error(path, line):
+        if unread:
+            return "usage error"
+        if words_made_none(path, line, before, after):
+            return "usage error worded None"
     if unread and in_unread_event(path, line):
         return "unread event"
     if in_variant_only_branch(path, line):
@@ -1041,9 +1056,7 @@ def run(mutants: list[Mutant], jobs: int, resume: bool = False) -> None:
     if todo:
         probe_mutant_mode()
         _mutmut("run", "--max-children", str(jobs), *[m.name for m in todo], env={"CRH2_MUTATION_KILLS": str(KILLS)})
-        if MAP_LOG.exists():              # sharded_map.py's line for the clean run, which mutmut does not print
-            print(*(f"mutmut: {line}" for line in MAP_LOG.read_text(encoding="utf-8").splitlines()
-                    if line.startswith("clean run")), sep="\n", flush=True)
+        _print_map_log("clean run")
     codes = _codes()
     killers = dict(line.split("\t", 1) for line in KILLS.read_text(encoding="utf-8").splitlines()) \
         if KILLS.exists() else {}
