@@ -4,6 +4,7 @@ from __future__ import annotations
 
 import os
 from collections import defaultdict
+from pathlib import Path
 
 import pytest
 
@@ -66,17 +67,21 @@ def _drive() -> tuple:
     return tuple(map(repr, values))
 
 
-def _run(mutant: str, quick: bool, monkeypatch: pytest.MonkeyPatch) -> tuple:
-    """What the functions return under `mutant`, with what mutmut recorded (the map run)."""
+def _run(mutant: str, quick: bool, monkeypatch: pytest.MonkeyPatch, recorders: bool = False) -> tuple:
+    """What the functions return under `mutant`, with what mutmut recorded (the map run); with `recorders`,
+    the trampolines of this module rebound to quick_trampoline's recorders after the swap."""
     monkeypatch.setenv("MUTANT_UNDER_TEST", mutant)
     monkeypatch.setattr(state(), "_stats", set())
     monkeypatch.setattr(state(), "function_dependencies", defaultdict(set))
     installed = quick_trampoline.install() if quick else False
     try:
+        rebound = quick_trampoline.install_recorders(Path(__file__)) if recorders else 0
+        assert rebound == (3 if recorders and mutant == "stats" else 0)
         values = _drive()
     finally:
         quick_trampoline.uninstall()
     assert installed == quick
+    assert outer.__code__.co_name == "_trampoline_wrapper"             # every trampoline back
     deps = {k: sorted(v) for k, v in state().function_dependencies.items()}
     return values, sorted(state()._stats), deps
 
@@ -85,6 +90,24 @@ def _run(mutant: str, quick: bool, monkeypatch: pytest.MonkeyPatch) -> tuple:
 def test_the_swapped_trampoline_returns_and_records_what_mutmut_own_does(mutant: str,
                                                                           monkeypatch: pytest.MonkeyPatch) -> None:
     assert _run(mutant, True, monkeypatch) == _run(mutant, False, monkeypatch)
+
+
+def test_the_map_run_s_recorders_record_what_mutmut_own_trampolines_do(monkeypatch: pytest.MonkeyPatch) -> None:
+    assert _run("stats", True, monkeypatch, recorders=True) == _run("stats", False, monkeypatch)
+
+
+def test_a_recorder_and_a_trampoline_held_elsewhere_share_one_call_stack(monkeypatch: pytest.MonkeyPatch) -> None:
+    held = {"outer": outer}                  # a table built at import time keeps mutmut's trampoline
+    monkeypatch.setenv("MUTANT_UNDER_TEST", "stats")
+    monkeypatch.setattr(state(), "_stats", set())
+    monkeypatch.setattr(state(), "function_dependencies", defaultdict(set))
+    quick_trampoline.install()
+    try:
+        quick_trampoline.install_recorders(Path(__file__))
+        assert held["outer"] is not outer and held["outer"](3) == 10
+    finally:
+        quick_trampoline.uninstall()
+    assert dict(state().function_dependencies) == {f"{MODULE}.x_inner": {f"{MODULE}.x_outer"}}
 
 
 def test_the_map_run_records_each_function_with_its_callers(monkeypatch: pytest.MonkeyPatch) -> None:

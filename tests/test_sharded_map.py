@@ -1,5 +1,5 @@
-"""outline/mutate/sharded_map.py: the map of who reaches what, learnt by several pytest processes, is the map
-mutmut learns in one (a small project of its own, mapped both ways by mutmut 3.8 itself)."""
+"""outline/mutate/sharded_map.py: the map of who reaches what, learnt by two xdist workers, is the map mutmut
+learns in one process (a small project of its own, mapped both ways by mutmut 3.8 itself)."""
 from __future__ import annotations
 
 import json
@@ -12,7 +12,7 @@ import pytest
 
 pytest.importorskip("mutmut")
 
-from outline.mutate.sharded_map import shards  # noqa: E402
+from tests import mutmut_project  # noqa: E402
 
 ROOT = Path(__file__).resolve().parents[1]
 
@@ -59,21 +59,12 @@ def test_nothing_of_the_library():
 
 
 def _project(where: Path) -> Path:
-    (where / "lib").mkdir(parents=True)
-    (where / "tests").mkdir()
-    (where / "lib" / "__init__.py").write_text("")
-    (where / "lib" / "calc.py").write_text(SOURCE)
-    (where / "tests" / "test_calc.py").write_text(TESTS)
-    (where / "pyproject.toml").write_text(
-        '[tool.mutmut]\nsource_paths = ["lib/"]\npytest_add_cli_args_test_selection = ["tests/"]\n'
-        'pytest_add_cli_args = ["-p", "no:cacheprovider", "-p", "no:xdist"]\n'
-        '[tool.pytest.ini_options]\npythonpath = ["."]\n')
-    return where
+    return mutmut_project.write(where, SOURCE, TESTS)
 
 
 def _mutmut_run(project: Path, mutant: str, module: str = "outline.mutate.sharded_map"
                 ) -> subprocess.CompletedProcess:
-    """`python -m <module> run <mutant>` in the project, two processes for the shards."""
+    """`python -m <module> run <mutant>` in the project, two xdist workers for the map and the clean run."""
     env = dict(os.environ, PYTHONPATH=str(ROOT), MUTMUT_MAP_JOBS="2")
     env.pop("MUTANT_UNDER_TEST", None)
     return subprocess.run([sys.executable, "-m", module, "run", mutant], cwd=project, capture_output=True,
@@ -105,12 +96,6 @@ def test_a_sharded_map_is_mutmut_own_map(tmp_path: Path) -> None:
                                               "tests/test_calc.py::test_meter[1]", "tests/test_calc.py::test_meter[3]",
                                               "tests/test_calc.py::test_meter[4]"]
     assert "tests/test_calc.py::test_nothing_of_the_library" in own["timed"]
-
-
-def test_the_tests_are_dealt_round_robin_in_sorted_order() -> None:
-    assert shards(["d", "a", "c", "b", "e"], 2) == [["a", "c", "e"], ["b", "d"]]
-    assert shards(["a"], 4) == [["a"]]
-    assert shards([], 2) == []
 
 
 @pytest.mark.cost(20)

@@ -1,6 +1,6 @@
 """pytest plugin for one shard of mutmut's map (outline/mutate/sharded_map.py): after each test, the functions
-of the references its trampolines met, as mutmut's own StatsCollector keeps them, written to $MUTMUT_MAP_SHARD
-as JSON when the session ends."""
+of the references its trampolines met, as mutmut's own StatsCollector keeps them, written to
+$MUTMUT_MAP_SHARD.<xdist worker> as JSON when the session ends."""
 from __future__ import annotations
 
 import json
@@ -36,8 +36,10 @@ def pytest_runtest_teardown(item: pytest.Item, nextitem: pytest.Item | None) -> 
 
 def pytest_unconfigure(config: pytest.Config) -> None:
     out = os.environ.get("MUTMUT_MAP_SHARD")
-    if not out:
-        return
+    worker = os.environ.get("PYTEST_XDIST_WORKER")
+    if not out or (worker is None and getattr(config.option, "numprocesses", None)):
+        return                    # xdist's controller runs no test: it only hears of the workers' starts
+    out = f"{out}.{worker or 'main'}"
     deps = _state().function_dependencies
     with open(out, "w", encoding="utf-8") as fh:
         json.dump({"tests_by_mangled_function_name": {k: sorted(v) for k, v in _tests_by_function.items()},

@@ -31,6 +31,10 @@ the mutant, and stops at the first failure (-x); it keeps only the exit code.
   instead of simulating their Background again.
 - mutmut's trampoline made cheap for the session (outline/mutate/quick_trampoline.py): what it reads on every
   call of a reference function is read once; the map of who reaches what costs less than half as much.
+- Fewer frames per call once a session has collected its tests: in the map every trampoline becomes a
+  recorder made for its function (quick_trampoline.install_recorders), and in a mutant's own run and the
+  clean run every reference function that cannot reach the mutant is called directly
+  (outline/mutate/direct_calls.py).
 """
 from __future__ import annotations
 
@@ -41,7 +45,7 @@ from pathlib import Path
 
 import pytest
 
-from outline.mutate import quick_trampoline
+from outline.mutate import direct_calls, quick_trampoline
 
 
 ENGINE = ("sut.reference.kernel.", "sut.reference.bulk.")
@@ -59,6 +63,7 @@ def pytest_configure(config: pytest.Config) -> None:
 
 
 def pytest_unconfigure(config: pytest.Config) -> None:
+    direct_calls.uninstall()
     quick_trampoline.uninstall()
 
 
@@ -74,6 +79,9 @@ def _empty(caches: list) -> None:
 
 def pytest_collection_finish(session: pytest.Session) -> None:
     reference_caches()        # read once here, where mutmut's warm-up collects: the forked runs inherit it
+    if "mutmut.mutation.trampoline" in sys.modules:
+        from mutmut.mutation.trampoline import get_mutant_under_test
+        quick_trampoline.install_recorders(Path.cwd()) or direct_calls.install(get_mutant_under_test(), Path.cwd())
 
 
 # What each module's caches are, worked out once per module: a mutated module is large (reading them all

@@ -19,8 +19,12 @@ more (a stack-depth limit walks the frames).
 from __future__ import annotations
 
 import functools
+import inspect
 import os
 import types
+from pathlib import Path
+
+from outline.mutate import direct_calls
 
 MAPPING_RUN = "stats"            # mutmut's MUTANT_UNDER_TEST while it learns which tests reach which function
 _SWAPPED = ("os", "get_mutant_under_test", "mangled_name_from_mutant_name", "record_trampoline_hit",
@@ -77,8 +81,72 @@ def install() -> bool:
     return True
 
 
+def install_recorders(root: Path) -> int:
+    """In the map run, after install(): every trampoline of a module loaded from under `root` (or a class of
+    one) rebound to a recorder made for its function alone, which records and routes as mutmut's does, in one
+    frame instead of nine; how many names were rebound (0 outside the map run or where install() left
+    mutmut as it is). The call stack is the one mutmut's own trampolines use here (_CallStack), so a
+    trampoline held elsewhere (a table of handlers built at import time) records its callers alike."""
+    from mutmut.mutation.trampoline import get_mutant_under_test
+    if not _saved or get_mutant_under_test() != MAPPING_RUN or \
+            int(trampoline_environ().get("MUTMUT_DEPENDENCY_DEPTH", "-1")) != -1:
+        return 0
+    return direct_calls.rebind(root, _recorder)
+
+
+def trampoline_environ() -> dict:
+    from mutmut.mutation import trampoline
+    return trampoline.os.environ
+
+
+def _recorder(wrapper: types.FunctionType, table: dict) -> object | None:
+    """mutmut's map-run branch of the trampoline for one function, with its name worked out once; None for
+    a classmethod's or a coroutine's trampoline (left to mutmut's, which records the same)."""
+    from mutmut.configuration import config
+    from mutmut.state import state
+    from mutmut.utils.format_utils import mangled_name_from_mutant_name
+
+    wrapped, orig = wrapper.__wrapped__, table["_mutmut_orig"]
+    if direct_calls.closure(direct_calls.closure(wrapper)["trampoline"]).get("is_classmethod") or \
+            inspect.iscoroutinefunction(wrapped) or inspect.isasyncgenfunction(wrapped):
+        return None
+    name = f"{orig.__module__}.{mangled_name_from_mutant_name(orig.__name__)}"
+    now, track, stack = state(), config().track_dependencies, _CallStack
+
+    def record() -> tuple[str | None, int]:
+        caller, depth = token = stack.top
+        now._stats.add(name)
+        if caller is not None and track:
+            now.function_dependencies[name].add(caller)
+        stack.top = (name, depth + 1)
+        return token
+
+    if inspect.isgeneratorfunction(wrapped):
+        def recorder(*args, **kwargs):
+            # mutmut's trampoline runs at the first next(): it records then and hands back the generator.
+            token = record()
+            try:
+                body = orig(*args, **kwargs)
+            finally:
+                stack.top = token
+            return (yield from body)
+    else:
+        def recorder(*args, **kwargs):
+            caller, depth = token = stack.top
+            now._stats.add(name)
+            if caller is not None and track:
+                now.function_dependencies[name].add(caller)
+            stack.top = (name, depth + 1)
+            try:
+                return orig(*args, **kwargs)
+            finally:
+                stack.top = token
+    return functools.update_wrapper(recorder, wrapped)
+
+
 def uninstall() -> None:
     """mutmut's own trampoline globals back: the same process goes on to its next session."""
+    direct_calls.uninstall()
     if not _saved:
         return
     from mutmut.mutation import trampoline

@@ -2,11 +2,12 @@
 map took 71 min in one process on a 2-core machine).
 
 `python -m outline.mutate.sharded_map ARGS` is `python -m mutmut ARGS` with two changes: where mutmut runs
-the tests it maps in its own process (ForkRunner.collect_stats), the tests are dealt round-robin to
-$MUTMUT_MAP_JOBS pytest processes (default: the machine's cores), each with mutmut's own arguments and
-outline/mutate/map_shard.py, and their maps are merged into mutmut's state before mutmut saves it; and its
-clean run (the tests of the drawn mutants, unmutated, must pass before any mutant runs) is dealt out the same
-way. Every mapped test is simulated whole and the references' caches are emptied before it
+the tests it maps in its own process (ForkRunner.collect_stats), they run in one pytest process with mutmut's
+own arguments and outline/mutate/map_shard.py, spread over $MUTMUT_MAP_JOBS xdist workers (default: the
+machine's cores) that each take the next test as they free up, and the workers' maps are merged into mutmut's
+state before mutmut saves it; and its clean run (the tests of the drawn mutants, unmutated, must pass before
+any mutant runs) is spread the same way. (Dealt out beforehand, round-robin, one process finished 5 minutes
+before the other: a few tests cost minutes, and where they land decides.) Every mapped test is simulated whole and the references' caches are emptied before it
 (mutation_plugin.py), so which process runs a test does not change what it reaches. tests/test_sharded_map.py
 compares a sharded map with mutmut's own of the same tests.
 """
@@ -25,13 +26,6 @@ from typing import Iterable
 LOG = Path("mutants") / "map.log"
 
 
-def shards(tests: list[str], jobs: int) -> list[list[str]]:
-    """The tests dealt round-robin in their sorted order: a feature's scenarios, which cost alike, spread over
-    every process."""
-    ordered = sorted(tests)
-    return [ordered[k::jobs] for k in range(min(jobs, len(ordered)))]
-
-
 def merge(state: object, shard: dict) -> None:
     """One shard's map added to mutmut's state, as mutmut's StatsCollector would have added it."""
     for function, tests in shard["tests_by_mangled_function_name"].items():
@@ -42,31 +36,36 @@ def merge(state: object, shard: dict) -> None:
 
 
 def _in_shards(tests: list[str], plugin: list[str], what: str) -> tuple[int, list[dict]]:
-    """`tests` run by one pytest process per job in mutants/, each with mutmut's own arguments (and `plugin`,
-    which writes its shard's result to $MUTMUT_MAP_SHARD as JSON): 0 and those results, or the first failing
-    shard's exit code (its output printed). A line of how long it took goes to mutants/map.log."""
+    """`tests` run in mutants/ by one pytest process with mutmut's own arguments (and `plugin`, which writes
+    each worker's result to $MUTMUT_MAP_SHARD.<worker> as JSON), spread over one xdist worker per job, which
+    take the next test as they free up: 0 and those results, or the run's exit code (its output printed). A
+    line of how long it took goes to mutants/map.log."""
     from mutmut.configuration import config
 
-    jobs = int(os.environ.get("MUTMUT_MAP_JOBS") or os.cpu_count() or 1)
-    parts = shards(tests, jobs)
+    jobs = min(int(os.environ.get("MUTMUT_MAP_JOBS") or os.cpu_count() or 1), len(tests)) or 1
+    own = list(config().pytest_add_cli_args)
+    for at in reversed([i for i in range(len(own) - 1) if own[i:i + 2] == ["-p", "no:xdist"]]):
+        del own[at:at + 2]
     start = time.monotonic()
     with tempfile.TemporaryDirectory(prefix="mutmut-shards-") as tmp:
-        running = []
-        for index, part in enumerate(parts):
-            out, log = Path(tmp) / f"shard{index}.json", Path(tmp) / f"shard{index}.log"
-            args = [sys.executable, "-m", "pytest", "--rootdir=.", "--tb=native", "-x", "-q",
-                    "-p", "no:randomly", "-p", "no:random-order", *part, *config().pytest_add_cli_args, *plugin]
-            with open(log, "w", encoding="utf-8") as fh:
-                running.append((subprocess.Popen(args, cwd="mutants", stdout=fh, stderr=subprocess.STDOUT,
-                                                 env=dict(os.environ, MUTMUT_MAP_SHARD=str(out))), out, log))
-        codes = [(process.wait(), out, log) for process, out, log in running]
-        for code, _out, log in codes:
-            if code != 0:
-                print(log.read_text(encoding="utf-8")[-5000:], flush=True)
-                return code, []
-        results = [json.loads(out.read_text(encoding="utf-8")) for _code, out, _log in codes if out.exists()]
+        out, log = Path(tmp) / "shard.json", Path(tmp) / "shard.log"
+        args = [sys.executable, "-m", "pytest", "--rootdir=.", "--tb=native", "-x", "-q",
+                "-p", "no:randomly", "-p", "no:random-order", *own, *plugin]
+        # One test at a time to whichever worker is free: the costliest are collected first (tests/conftest.py),
+        # and xdist's first batches would otherwise give them all to one worker.
+        args += ["-n", str(jobs), "--dist", "load", "--maxschedchunk", "1"] if jobs > 1 else ["-p", "no:xdist"]
+        # The test ids go through a file: a map names every test of the suite.
+        ids = Path(tmp) / "tests.txt"
+        ids.write_text("\n".join(tests) + "\n", encoding="utf-8")
+        with open(log, "w", encoding="utf-8") as fh:
+            code = subprocess.run([*args, f"@{ids}"], cwd="mutants", stdout=fh, stderr=subprocess.STDOUT,
+                                  env=dict(os.environ, MUTMUT_MAP_SHARD=str(out))).returncode
+        if code != 0:
+            print(log.read_text(encoding="utf-8")[-5000:], flush=True)
+            return code, []
+        results = [json.loads(part.read_text(encoding="utf-8")) for part in sorted(Path(tmp).glob("shard.json*"))]
     with open(LOG, "a", encoding="utf-8") as fh:          # mutmut holds its own output back: a line of ours
-        fh.write(f"{what} {len(tests)} tests in {len(parts)} processes in {time.monotonic() - start:.0f} s\n")
+        fh.write(f"{what} {len(tests)} tests in {jobs} processes in {time.monotonic() - start:.0f} s\n")
     return 0, results
 
 
