@@ -69,3 +69,14 @@ def test_a_refusal_on_one_side_only_is_the_difference_shown() -> None:
                                   [Action("set_input", ("amplitude", 0))])
     assert difference is not None
     assert (difference.what, difference.a, difference.b) == ("refused", "no refusal", "OutOfRange")
+
+
+def test_of_a_free_text_the_contract_fixes_in_part_only_that_part_is_compared() -> None:
+    from outline.sequences.observe import Observer
+    observer = Observer("metro-tcn", ReferenceMetro.open("metro-tcn"))
+    assert observer._listed("frame.discard") == {"error"}
+    # metro-tcn.yaml: `error` begins with `line A` or `line B`; what follows is the SUT's own wording
+    seen = {text: observer._compared("frame.discard", "error", text) for text in (
+        "line A: master frame check sequence failed at raw[2]: received 0xba, computed 0x71",
+        "line A: bad FCS", "line B: bad FCS", "no line named")}
+    assert list(seen.values()) == ["line A", "line A", "line B", "no line named"]

@@ -2,12 +2,14 @@
 every output, reading and lamp the contract names, each cab's monitor, the records, every ring node's
 counters, rated_limits(), and the trace events of the kinds the contract lists since the last look: their
 time, source and the fields the contract lists for the kind (a field it does not list is the implementer's
-own: no conforming SUT owes it, so two SUTs do not differ by it). An answer that is an error is seen as its
+own: no conforming SUT owes it, so two SUTs do not differ by it; of a free text the contract fixes only in part,
+that part). An answer that is an error is seen as its
 error's class: two SUTs that refuse alike do not differ."""
 from __future__ import annotations
 
 import fnmatch
 import math
+import re
 from typing import Any, Callable
 
 from sut.contract import load as load_contract
@@ -72,6 +74,7 @@ class Observer:
             self.probes["rated_limits"] = driver.rated_limits
         self.contract_kinds = contract.events
         self.fields: dict[str, frozenset[str] | None] = {}     # by kind seen: the fields compared, None: not listed
+        self.fixed: dict[str, dict[str, re.Pattern]] = {}       # by kind seen: the fields fixed only in part
         self.seen = 0
 
     def _listed(self, kind: str) -> frozenset[str] | None:
@@ -79,13 +82,23 @@ class Observer:
             # a kind the contract lists by itself or under a pattern (`loop.*`): the fields of every entry for it
             entries = [e for name, e in self.contract_kinds.items() if name == kind or fnmatch.fnmatchcase(kind, name)]
             self.fields[kind] = frozenset(f for e in entries for f in e.fields) if entries else None
+            self.fixed[kind] = {f: re.compile(str(spec["fixed"])) for e in entries for f, spec in e.fields.items()
+                                if "fixed" in spec}
         return self.fields[kind]
+
+    def _compared(self, kind: str, name: str, value: Any) -> Any:
+        """What of a field is compared: where the contract fixes only part of a free text (`fixed`, a regular
+        expression), that part; the rest is the implementation's wording."""
+        pattern = self.fixed[kind].get(name)
+        found = pattern.match(value) if pattern is not None and isinstance(value, str) else None
+        return found.group(0) if found else value
 
     def look(self) -> dict[str, Any]:
         shown = {name: _ask(probe) for name, probe in self.probes.items()}
         shown["now us"] = self.driver.now_us
         events = self.driver.trace[self.seen:]
         self.seen += len(events)
-        shown["events"] = [(ev.t, ev.source, ev.kind, _plain({k: v for k, v in ev.fields.items() if k in listed}))
+        shown["events"] = [(ev.t, ev.source, ev.kind,
+                            _plain({k: self._compared(ev.kind, k, v) for k, v in ev.fields.items() if k in listed}))
                            for ev in events if (listed := self._listed(ev.kind)) is not None]
         return shown

@@ -8,6 +8,7 @@ from __future__ import annotations
 
 import fnmatch
 from dataclasses import dataclass, field
+import re
 from functools import lru_cache
 from pathlib import Path
 from typing import Any
@@ -185,6 +186,11 @@ def parse(path: Path) -> Contract:
             fspec = dict(fspec or {})
             if fspec.get("type", "any") not in FIELD_TYPES:
                 raise _fail(path, f"events.{kind}.fields.{fname}.type", f"one of {', '.join(FIELD_TYPES)}")
+            if "fixed" in fspec:
+                try:
+                    re.compile(str(fspec["fixed"]))
+                except re.error as exc:
+                    raise _fail(path, f"events.{kind}.fields.{fname}.fixed", f"a regular expression ({exc})") from None
             fields[str(fname)] = fspec
         events[str(kind)] = EventKind(str(kind), str(spec.get("source", "")), str(spec.get("when", "")),
                                       str(spec.get("count", "")), fields, list(spec.get("requirements") or []))
