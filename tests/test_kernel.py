@@ -328,6 +328,22 @@ def test_kill_stops_a_sleeping_process(k):
     assert log == [] and not p.alive
 
 
+def test_kill_before_the_process_has_started(k):
+    # A board that loses power at the instant its process was made (make mutate seed 10: the process's timer
+    # taken for pending before its first run made this kill fail).
+    log = []
+
+    def proc():
+        log.append("started")
+        yield 100
+        log.append("ran")
+
+    p = k.process(proc(), "stillborn")
+    p.kill()
+    k.run(500)
+    assert log == [] and not p.alive
+
+
 def test_exception_in_a_process_surfaces_naming_the_process(k):
     def proc():
         yield 5

@@ -1162,3 +1162,17 @@ class TokenVisitsCountedFromOne(ReferenceTrain):
 
 
 FAULTY += [(TokenVisitsCountedFromOne, "PRO-04", "H-CPO-01")]
+
+
+class SelfTestVerdictInCapitals(ReferenceAtp):
+    """VDX-03 (contract vdx.yaml, selftest: `result` is `pass` or `C019`): a passed self-test is logged `PASS`
+    (make mutate seed 10's survivor of vdx.py:180). The words a field takes are the contract's: check_event
+    holds every field whose values the contract lists to them."""
+
+    def _emit(self, source, kind, **fields):  # noqa: ANN001, ANN202
+        if kind == "selftest" and fields.get("result") == "pass":
+            fields["result"] = "PASS"
+        super()._emit(source, kind, **fields)
+
+
+FAULTY += [(SelfTestVerdictInCapitals, "VDX-03", "F-ATP-05")]

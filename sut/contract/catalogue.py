@@ -50,6 +50,9 @@ class EventKind:
         # What check_event holds every event handed to a step against, worked out once per kind.
         self.sources = tuple(p.strip() for p in self.source.split("|") if p.strip())
         self.required = tuple(n for n, spec in self.fields.items() if spec.get("required", True))
+        # A field whose entry lists its values may take no other (a word a step compares with is the
+        # contract's word, not the reference's spelling of it).
+        self.valued = {n: tuple(spec["values"]) for n, spec in self.fields.items() if spec.get("values")}
         # A run hands steps ~1.8 M events from a few hundred sources: a source's verdict is worked out once.
         self._source_ok: dict[str, bool] = {}
 
@@ -122,7 +125,7 @@ class Contract:
 
     def check_event(self, source: str, kind: str, fields: Any, t_us: int) -> None:
         """An event the SUT returned to a step: from a source the contract names for its kind, with every field
-        it requires. Whatever a step goes on to read, an event outside its kind's entry is the SUT's breach:
+        it requires, each field whose values the contract lists holding one of them. Whatever a step goes on to read, an event outside its kind's entry is the SUT's breach:
         a step that selects by kind alone would otherwise take a mis-sourced event, and one missing a required
         field would pass wherever no step reads that field."""
         ev = self.events.get(kind)
@@ -135,6 +138,11 @@ class Contract:
         if missing:
             raise ContractBreach(f"{source} {kind} at {t_us / 1000:g} ms has no field {missing[0]!r}; the "
                                  f"{self.profile} contract requires it{self._where()}")
+        for name, allowed in ev.valued.items():
+            if name in fields and fields[name] not in allowed:
+                raise ContractBreach(f"{source} {kind} at {t_us / 1000:g} ms has {name}={fields[name]!r}; the "
+                                     f"{self.profile} contract allows {', '.join(map(repr, allowed))}"
+                                     f"{self._where()}")
 
     def answer_keys(self, method: str) -> dict[str, Any]:
         return (self.raw.get("answers") or {}).get(method) or {}
