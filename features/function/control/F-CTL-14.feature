@@ -57,6 +57,22 @@ Feature: F-CTL-14 Main circuit reset after a protection trip
     Then the "unit1.VCB" is closed within 100 ms
 
   @req:ILK-06 @req:TST-05 @req:TST-04
+  Scenario Outline: F-CTL-14 A reset while the oil fault persists leaves the converters cut
+    When the vehicle input "unit2.<input>" becomes "<fault>"
+    And 200 ms pass
+    Then the "car7.CI contactor" is open within 100 ms
+    When the driver resets the main circuit
+    And 500 ms pass
+    Then the "car7.CI contactor" stays open
+    And the "car7.CI gates" stays blocked
+    And the "unit2.VCB" stays closed
+
+    Examples:
+      | input           | fault            |
+      | oil pump        | stopped          |
+      | oil temperature | over-temperature |
+
+  @req:ILK-06 @req:TST-05 @req:TST-04
   Scenario: F-CTL-14 A restarted oil pump brings the converters back only after a reset, the VCB never opened
     When the vehicle input "unit2.oil pump" becomes "stopped"
     And 200 ms pass
