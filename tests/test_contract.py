@@ -151,3 +151,30 @@ def test_the_readme_shows_todays_assertion_count_and_every_freedom_variant() -> 
     assert set(FREEDOM_CLASSES.values()) <= set(rows), "the README's freedom table lacks a row per freedom class"
     misplaced = [v.__name__ for v in FREEDOM if f"`{v.__name__}`" not in rows[FREEDOM_CLASSES[v.FREEDOM_CLASS]]]
     assert not misplaced, f"freedom variants the README's table does not name in their class's row: {misplaced}"
+
+
+@pytest.mark.parametrize(("fields", "breach"), [
+    ({"path": 1, "traction": 4, "brake": 0, "traction_step": None, "brake_step": None, "direction": "forward"}, None),
+    ({"path": 1, "traction": None, "brake": 0, "traction_step": None, "brake_step": None, "direction": "forward"},
+     None),                                                      # traction: "integer or null" (paths 2 and 3)
+    ({"path": None, "traction": 4, "brake": 0, "traction_step": None, "brake_step": None, "direction": "forward"},
+     "path=None; the crh2 contract gives it the type integer"),
+    ({"path": 1, "traction": 4.0, "brake": 0, "traction_step": None, "brake_step": None, "direction": "forward"},
+     "traction=4.0; the crh2 contract gives it the type integer"),
+    ({"path": 1, "traction": True, "brake": 0, "traction_step": None, "brake_step": None, "direction": "forward"},
+     "traction=True"),                                             # a flag is no number
+])
+def test_an_event_handed_to_a_step_holds_each_field_to_its_declared_type(fields: dict, breach: str | None) -> None:
+    contract = load("crh2")
+    if breach is None:
+        contract.check_event("car1.BCU", "cmd.in", fields, 1000)
+    else:
+        with pytest.raises(ContractBreach, match=re.escape(breach)):
+            contract.check_event("car1.BCU", "cmd.in", fields, 1000)
+
+
+def test_an_event_handed_to_a_step_holds_a_field_with_listed_values_to_them() -> None:
+    contract = load("vdx")
+    contract.check_event("VDX", "selftest", {"result": "C019", "sample_ms": 1.5, "sample_v": 7.0}, 5_000_000)
+    with pytest.raises(ContractBreach, match="result='PASS'; the vdx contract allows 'C019', 'pass'"):
+        contract.check_event("VDX", "selftest", {"result": "PASS", "sample_ms": 1.5, "sample_v": 1.0}, 5_000_000)

@@ -7,8 +7,9 @@ they read with each kind's fields. `docs/implementing-a-sut.md` is rendered from
 from __future__ import annotations
 
 import fnmatch
-from dataclasses import dataclass, field
 import re
+from collections.abc import Callable, Mapping
+from dataclasses import dataclass, field
 from functools import lru_cache
 from pathlib import Path
 from typing import Any
@@ -18,6 +19,16 @@ import yaml
 HERE = Path(__file__).parent
 SECTIONS = ("inputs", "outputs", "readings", "orders", "lamps")
 FIELD_TYPES = ("integer", "number", "string", "boolean", "list", "mapping", "any")
+# What a value of each declared field type may be in Python (a boolean is no number, though Python's bool is
+# an int).
+TYPES: dict[str, Callable[[Any], bool]] = {
+    "integer": lambda v: isinstance(v, int) and not isinstance(v, bool),
+    "number": lambda v: isinstance(v, (int, float)) and not isinstance(v, bool),
+    "string": lambda v: isinstance(v, str),
+    "boolean": lambda v: isinstance(v, bool),
+    "list": lambda v: isinstance(v, (list, tuple)),
+    "mapping": lambda v: isinstance(v, Mapping),
+}
 
 
 def matches(pattern: str, name: str) -> bool:
@@ -53,6 +64,10 @@ class EventKind:
         # A field whose entry lists its values may take no other (a word a step compares with is the
         # contract's word, not the reference's spelling of it).
         self.valued = {n: tuple(spec["values"]) for n, spec in self.fields.items() if spec.get("values")}
+        # ... and a field of a declared type holds a value of that type (a number may be an integer), or null
+        # where its entry says `nullable: true` (a path-1 field of a path-2 command).
+        self.typed = {n: TYPES[spec["type"]] for n, spec in self.fields.items() if spec.get("type") in TYPES}
+        self.nullable = frozenset(n for n, spec in self.fields.items() if spec.get("nullable"))
         # A run hands steps ~1.8 M events from a few hundred sources: a source's verdict is worked out once.
         self._source_ok: dict[str, bool] = {}
 
@@ -125,7 +140,8 @@ class Contract:
 
     def check_event(self, source: str, kind: str, fields: Any, t_us: int) -> None:
         """An event the SUT returned to a step: from a source the contract names for its kind, with every field
-        it requires, each field whose values the contract lists holding one of them. Whatever a step goes on to read, an event outside its kind's entry is the SUT's breach:
+        it requires, each field of a declared type holding a value of that type and each field whose values the
+        contract lists one of them. Whatever a step goes on to read, an event outside its kind's entry is the SUT's breach:
         a step that selects by kind alone would otherwise take a mis-sourced event, and one missing a required
         field would pass wherever no step reads that field."""
         ev = self.events.get(kind)
@@ -138,6 +154,11 @@ class Contract:
         if missing:
             raise ContractBreach(f"{source} {kind} at {t_us / 1000:g} ms has no field {missing[0]!r}; the "
                                  f"{self.profile} contract requires it{self._where()}")
+        for name, is_type in ev.typed.items():
+            if name in fields and not is_type(fields[name]) and not (fields[name] is None and name in ev.nullable):
+                raise ContractBreach(f"{source} {kind} at {t_us / 1000:g} ms has {name}={fields[name]!r}; the "
+                                     f"{self.profile} contract gives it the type {ev.fields[name]['type']}"
+                                     f"{self._where()}")
         for name, allowed in ev.valued.items():
             if name in fields and fields[name] not in allowed:
                 raise ContractBreach(f"{source} {kind} at {t_us / 1000:g} ms has {name}={fields[name]!r}; the "
