@@ -168,7 +168,9 @@ def test_mutmut_mutates_the_references_and_runs_the_features_with_the_kill_recor
     config = tomllib.loads((ROOT / "pyproject.toml").read_text(encoding="utf-8"))
     mutmut = config["tool"]["mutmut"]
     assert mutmut["source_paths"] == ["sut/reference/"]
-    assert mutmut["pytest_add_cli_args_test_selection"] == ["features/", "tests/test_bulk.py", "tests/test_kernel.py"]
+    assert mutmut["pytest_add_cli_args_test_selection"] == ["features/", "tests/test_bulk.py", "tests/test_kernel.py",
+                                                            "tests/test_bad_input.py"]
+    assert tuple(mutmut["pytest_add_cli_args_test_selection"]) == mutation.MAPPED_TESTS
     assert "outline.mutate.mutation_plugin" in mutmut["pytest_add_cli_args"]
     # snapshots off only while mutmut maps who reaches what (the plugin's pytest_configure), on for each mutant
     assert "--no-snapshots" not in mutmut["pytest_add_cli_args"]
@@ -248,12 +250,13 @@ def test_a_mutant_inside_a_usage_error_is_passed_over_and_counted(tmp_path: Path
     assert "Passed over while drawing: 1 usage error" in mutation.table(chosen, 1, left_out)
 
 
-def test_a_train_reference_is_judged_by_the_scenarios_alone_the_engine_also_by_its_own_tests() -> None:
+def test_a_train_reference_is_judged_by_the_scenarios_and_bad_input_the_engine_also_by_its_own_tests() -> None:
     from outline.mutate.mutation_plugin import judges
     ids = ["tests/test_bulk.py::test_both_ways", "features/test_outline.py::test_fnet01_a", "tests/test_kernel.py::test_k",
-           "features/test_outline.py::test_filk06_b"]
+           "features/test_outline.py::test_filk06_b", "tests/test_bad_input.py::test_unknown_names[0]"]
     assert judges("sut.reference.crh2.ring.xǁRingǁ_start__mutmut_4", ids) == \
-        ["features/test_outline.py::test_fnet01_a", "features/test_outline.py::test_filk06_b"]
+        ["tests/test_bad_input.py::test_unknown_names[0]", "features/test_outline.py::test_fnet01_a",
+         "features/test_outline.py::test_filk06_b"]
     assert judges("sut.reference.bulk.x_slope__mutmut_53", ids) == \
         ["tests/test_bulk.py::test_both_ways", "tests/test_kernel.py::test_k",
          "features/test_outline.py::test_fnet01_a", "features/test_outline.py::test_filk06_b"]

@@ -3,7 +3,10 @@
 mutmut runs the tests that reach a mutant's function in a forked child with MUTANT_UNDER_TEST naming
 the mutant, and stops at the first failure (-x); it keeps only the exit code.
 
-- What may judge it: a train reference (crh2, metro, atp) is judged by the conformance scenarios alone. The
+- What may judge it: a train reference (crh2, metro, atp) is judged by the conformance scenarios and by the
+  driver's answers to bad input (tests/test_bad_input.py: an unknown name raises UnknownName, a value out of
+  range OutOfRange, as docs/implementing-a-sut.md asks of any SUT; no scenario gives bad input, and seeds 9
+  and 10 left 4 mutants that raise a TypeError there instead). The
   simulation engine they share (kernel.py, bulk.py) is no train: its specification is that a bulk advance
   gives the same state and trace as frame by frame (tests/test_bulk.py) and the kernel's own contract
   (tests/test_kernel.py), so its mutants also meet those tests, and first: they compare bulk with frame by
@@ -49,6 +52,7 @@ from outline.mutate import direct_calls, quick_trampoline
 
 
 ENGINE = ("sut.reference.kernel.", "sut.reference.bulk.")
+BAD_INPUT = "tests/test_bad_input.py::"
 MAPPING_RUN = quick_trampoline.MAPPING_RUN
 
 
@@ -133,11 +137,14 @@ def _trampoline_table(node: ast.stmt) -> bool:
 
 
 def judges(mutant: str, nodeids: list[str]) -> list[str]:
-    """The tests that may judge `mutant`: the scenarios; for the engine its own tests first, then those."""
+    """The tests that may judge `mutant`: for a train reference the driver's answers to bad input
+    (BAD_INPUT: milliseconds each, so first) and the scenarios; for the engine its own tests first, then the
+    scenarios."""
     scenarios = [n for n in nodeids if n.startswith("features/")]
+    bad_input = [n for n in nodeids if n.startswith(BAD_INPUT)]
     if mutant.startswith(ENGINE):
-        return [n for n in nodeids if not n.startswith("features/")] + scenarios
-    return scenarios
+        return [n for n in nodeids if not n.startswith(("features/", BAD_INPUT))] + scenarios
+    return bad_input + scenarios
 
 
 @pytest.hookimpl(trylast=True)
