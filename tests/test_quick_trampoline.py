@@ -132,3 +132,16 @@ def test_a_stack_depth_limit_leaves_mutmut_as_it_is(monkeypatch: pytest.MonkeyPa
     monkeypatch.setattr(config(), "max_stack_depth", 3)
     assert quick_trampoline.install() is False
     assert trampoline.get_mutant_under_test is mutmut_own
+
+
+def test_a_recorder_holds_only_its_function_s_name_and_original(monkeypatch: pytest.MonkeyPatch) -> None:
+    # bulk.py reads the closure of a function a train holds (a callback) and refuses mutmut's state: a recorder
+    # holding it made the map run simulate such trains frame by frame (H-EMC-02 never reached bulk.slope).
+    monkeypatch.setenv("MUTANT_UNDER_TEST", "stats")
+    quick_trampoline.install()
+    try:
+        quick_trampoline.install_recorders(Path(__file__))
+        cells = [cell.cell_contents for cell in outer.__closure__]
+    finally:
+        quick_trampoline.uninstall()
+    assert sorted(type(c).__name__ for c in cells) == ["function", "str"]

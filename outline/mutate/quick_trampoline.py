@@ -99,6 +99,24 @@ def trampoline_environ() -> dict:
     return trampoline.os.environ
 
 
+class _Map:
+    """What the recorders record into, set by install_recorders: module globals, not closure cells, because
+    bulk.py reads the closure of a function a train holds (a callback) and refuses what it cannot carry over a
+    jump (mutmut's state): a recorder may hold only its function's name and original in its cells, or the map
+    run would simulate those trains frame by frame and map other functions than a plain run reaches."""
+    now: object = None
+    track = True
+
+
+def _enter(name: str) -> tuple[str | None, int]:
+    caller, depth = token = _CallStack.top
+    _Map.now._stats.add(name)
+    if caller is not None and _Map.track:
+        _Map.now.function_dependencies[name].add(caller)
+    _CallStack.top = (name, depth + 1)
+    return token
+
+
 def _recorder(wrapper: types.FunctionType, table: dict) -> object | None:
     """mutmut's map-run branch of the trampoline for one function, with its name worked out once; None for
     a classmethod's or a coroutine's trampoline (left to mutmut's, which records the same)."""
@@ -111,36 +129,28 @@ def _recorder(wrapper: types.FunctionType, table: dict) -> object | None:
             inspect.iscoroutinefunction(wrapped) or inspect.isasyncgenfunction(wrapped):
         return None
     name = f"{orig.__module__}.{mangled_name_from_mutant_name(orig.__name__)}"
-    now, track, stack = state(), config().track_dependencies, _CallStack
-
-    def record() -> tuple[str | None, int]:
-        caller, depth = token = stack.top
-        now._stats.add(name)
-        if caller is not None and track:
-            now.function_dependencies[name].add(caller)
-        stack.top = (name, depth + 1)
-        return token
+    _Map.now, _Map.track = state(), config().track_dependencies
 
     if inspect.isgeneratorfunction(wrapped):
         def recorder(*args, **kwargs):
             # mutmut's trampoline runs at the first next(): it records then and hands back the generator.
-            token = record()
+            token = _enter(name)
             try:
                 body = orig(*args, **kwargs)
             finally:
-                stack.top = token
+                _CallStack.top = token
             return (yield from body)
     else:
         def recorder(*args, **kwargs):
-            caller, depth = token = stack.top
-            now._stats.add(name)
-            if caller is not None and track:
-                now.function_dependencies[name].add(caller)
-            stack.top = (name, depth + 1)
+            caller, depth = token = _CallStack.top
+            _Map.now._stats.add(name)
+            if caller is not None and _Map.track:
+                _Map.now.function_dependencies[name].add(caller)
+            _CallStack.top = (name, depth + 1)
             try:
                 return orig(*args, **kwargs)
             finally:
-                stack.top = token
+                _CallStack.top = token
     return functools.update_wrapper(recorder, wrapped)
 
 
