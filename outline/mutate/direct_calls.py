@@ -15,7 +15,8 @@ import time): those still route exactly as mutmut routes. The clean run (no muta
 mutmut's other runs (the map, the forced failure) need the trampoline and are left alone.
 
 Everything is put back when the session ends. tests/test_direct_calls.py checks that a mutated project
-gives mutmut's verdicts, mutant by mutant, with and without this.
+gives mutmut's verdicts, mutant by mutant, with and without this; 82 of make mutate seed 10's mutants gave
+the same verdicts both ways in 333 s of runs instead of 901 s (bench/performance-notes.md).
 """
 from __future__ import annotations
 

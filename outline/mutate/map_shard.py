@@ -36,9 +36,11 @@ def pytest_runtest_teardown(item: pytest.Item, nextitem: pytest.Item | None) -> 
 
 def pytest_unconfigure(config: pytest.Config) -> None:
     out = os.environ.get("MUTMUT_MAP_SHARD")
-    worker = os.environ.get("PYTEST_XDIST_WORKER")
+    # A worker knows itself by its workerinput (its environment may be inherited: make test runs this under
+    # xdist too); xdist's controller runs no test, it only hears of the workers' starts.
+    worker = config.workerinput["workerid"] if hasattr(config, "workerinput") else None
     if not out or (worker is None and getattr(config.option, "numprocesses", None)):
-        return                    # xdist's controller runs no test: it only hears of the workers' starts
+        return
     out = f"{out}.{worker or 'main'}"
     deps = _state().function_dependencies
     with open(out, "w", encoding="utf-8") as fh:

@@ -7,9 +7,9 @@ own arguments and outline/mutate/map_shard.py, spread over $MUTMUT_MAP_JOBS xdis
 machine's cores) that each take the next test as they free up, and the workers' maps are merged into mutmut's
 state before mutmut saves it; and its clean run (the tests of the drawn mutants, unmutated, must pass before
 any mutant runs) is spread the same way. (Dealt out beforehand, round-robin, one process finished 5 minutes
-before the other: a few tests cost minutes, and where they land decides.) Every mapped test is simulated whole and the references' caches are emptied before it
-(mutation_plugin.py), so which process runs a test does not change what it reaches. tests/test_sharded_map.py
-compares a sharded map with mutmut's own of the same tests.
+before the other: a few tests cost minutes, and where they land decides.) Every mapped test is simulated whole
+and the references' caches are emptied before it (mutation_plugin.py), so which process runs a test does not
+change what it reaches. tests/test_sharded_map.py compares a sharded map with mutmut's own of the same tests.
 """
 from __future__ import annotations
 
@@ -58,8 +58,10 @@ def _in_shards(tests: list[str], plugin: list[str], what: str) -> tuple[int, lis
         ids = Path(tmp) / "tests.txt"
         ids.write_text("\n".join(tests) + "\n", encoding="utf-8")
         with open(log, "w", encoding="utf-8") as fh:
+            # Not an xdist worker's environment of its own (make test runs mutmut's tests under xdist).
+            env = {k: v for k, v in os.environ.items() if not k.startswith("PYTEST_XDIST_")}
             code = subprocess.run([*args, f"@{ids}"], cwd="mutants", stdout=fh, stderr=subprocess.STDOUT,
-                                  env=dict(os.environ, MUTMUT_MAP_SHARD=str(out))).returncode
+                                  env=dict(env, MUTMUT_MAP_SHARD=str(out))).returncode
         if code != 0:
             print(log.read_text(encoding="utf-8")[-5000:], flush=True)
             return code, []

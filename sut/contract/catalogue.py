@@ -141,9 +141,9 @@ class Contract:
     def check_event(self, source: str, kind: str, fields: Any, t_us: int) -> None:
         """An event the SUT returned to a step: from a source the contract names for its kind, with every field
         it requires, each field of a declared type holding a value of that type and each field whose values the
-        contract lists one of them. Whatever a step goes on to read, an event outside its kind's entry is the SUT's breach:
-        a step that selects by kind alone would otherwise take a mis-sourced event, and one missing a required
-        field would pass wherever no step reads that field."""
+        contract lists one of them. Whatever a step goes on to read, an event outside its kind's entry is the
+        SUT's breach: a step that selects by kind alone would otherwise take a mis-sourced event, and one
+        missing a required field would pass wherever no step reads that field."""
         ev = self.events.get(kind)
         if ev is None:
             return                      # a kind no step asked for cannot come back; check_kind owns the gap
@@ -155,7 +155,8 @@ class Contract:
             raise ContractBreach(f"{source} {kind} at {t_us / 1000:g} ms has no field {missing[0]!r}; the "
                                  f"{self.profile} contract requires it{self._where()}")
         for name, is_type in ev.typed.items():
-            if name in fields and not is_type(fields[name]) and not (fields[name] is None and name in ev.nullable):
+            value = fields.get(name)
+            if name in fields and not is_type(value) and not (value is None and name in ev.nullable):
                 raise ContractBreach(f"{source} {kind} at {t_us / 1000:g} ms has {name}={fields[name]!r}; the "
                                      f"{self.profile} contract gives it the type {ev.fields[name]['type']}"
                                      f"{self._where()}")
