@@ -88,9 +88,12 @@ def install_recorders(root: Path) -> int:
     mutmut as it is). The call stack is the one mutmut's own trampolines use here (_CallStack), so a
     trampoline held elsewhere (a table of handlers built at import time) records its callers alike."""
     from mutmut.mutation.trampoline import get_mutant_under_test
+    from mutmut.configuration import config
+    from mutmut.state import state
     if not _saved or get_mutant_under_test() != MAPPING_RUN or \
             int(trampoline_environ().get("MUTMUT_DEPENDENCY_DEPTH", "-1")) != -1:
         return 0
+    _Map.now, _Map.track = state(), config().track_dependencies
     return direct_calls.rebind(root, _recorder)
 
 
@@ -120,8 +123,6 @@ def _enter(name: str) -> tuple[str | None, int]:
 def _recorder(wrapper: types.FunctionType, table: dict) -> object | None:
     """mutmut's map-run branch of the trampoline for one function, with its name worked out once; None for
     a classmethod's or a coroutine's trampoline (left to mutmut's, which records the same)."""
-    from mutmut.configuration import config
-    from mutmut.state import state
     from mutmut.utils.format_utils import mangled_name_from_mutant_name
 
     wrapped, orig = wrapper.__wrapped__, table["_mutmut_orig"]
@@ -129,7 +130,6 @@ def _recorder(wrapper: types.FunctionType, table: dict) -> object | None:
             inspect.iscoroutinefunction(wrapped) or inspect.isasyncgenfunction(wrapped):
         return None
     name = f"{orig.__module__}.{mangled_name_from_mutant_name(orig.__name__)}"
-    _Map.now, _Map.track = state(), config().track_dependencies
 
     if inspect.isgeneratorfunction(wrapped):
         def recorder(*args, **kwargs):
@@ -142,6 +142,7 @@ def _recorder(wrapper: types.FunctionType, table: dict) -> object | None:
             return (yield from body)
     else:
         def recorder(*args, **kwargs):
+            # _enter written out: a call of it is a frame more on every call of every reference function
             caller, depth = token = _CallStack.top
             _Map.now._stats.add(name)
             if caller is not None and _Map.track:
