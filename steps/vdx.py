@@ -146,6 +146,22 @@ def _(sut: TrainDriver, offset: float) -> int:
     return release_before_selftest(sut, offset)
 
 
+@when(parsers.parse("ATP在下一次FS自检前{first:g} ms缓解紧急制动,前{applied:g} ms再次施加,到期后{again:g} ms再次缓解"),
+      target_fixture="t_action")
+@when(parsers.parse("the ATP releases the emergency brake {first:g} ms before the next FS self-test, applies it "
+                     "{applied:g} ms before and releases it again {again:g} ms after"), target_fixture="t_action")
+def _(sut: TrainDriver, first: float, applied: float, again: float) -> int:
+    """A brake applied again across a due self-test: VDX-06's postponement is owed to the release that comes
+    before the test runs, not to one the brake has since cancelled. Returns the first release."""
+    release = release_before_selftest(sut, first)
+    due = release + us(first)
+    sut.advance(due - us(applied) - sut.now_us)
+    sut.set_input("ATP emergency brake", True)
+    sut.advance(due + us(again) - sut.now_us)
+    sut.set_input("ATP emergency brake", False)
+    return release
+
+
 # -- the loop and its relays (VDX-01, VDX-04) ------------------------------------------------------------
 @then(parsers.parse("紧急制动回路处于{state:w}状态"), converters={"state": zh.vdx_state})
 @then(parsers.parse("the emergency-brake loop is {state:w}"))

@@ -15,6 +15,8 @@ from sut.reference.crh2.vehicle import Vehicle
 from tests.wording import reword
 from sut.reference.atp.backend import ReferenceAtp
 from sut.reference.atp.onboard import OnboardAtp
+from sut.reference.atp.config import POSTPONE
+from sut.reference.atp.vdx import VdxInterface
 from sut.reference.metro.backend import ReferenceMetro
 from sut.reference.metro.ports import DI_KEY, Command, IoPort
 from sut.reference.metro.tcds import MetroTrain
@@ -1176,3 +1178,32 @@ class SelfTestVerdictInCapitals(ReferenceAtp):
 
 
 FAULTY += [(SelfTestVerdictInCapitals, "VDX-03", "F-ATP-05")]
+
+
+class _VdxPostponesFromACancelledRelease(VdxInterface):
+    """The VDX of SelfTestPostponedFromACancelledRelease."""
+
+    def _selftest_due(self) -> None:
+        if self.testing:
+            return
+        since = self.kernel.now - (self.released_at or 0)
+        postpone = (self.cfg.postpone_us or POSTPONE)[self.firmware]
+        if since < postpone:
+            self._emit("VDX", "selftest.postpone", by_ms=(postpone - since) / 1000, since_release_ms=since / 1000)
+            self._test_timer = self.kernel.call_later(postpone - since, self._selftest)
+        elif self.fs_on:
+            self._selftest()
+
+
+class SelfTestPostponedFromACancelledRelease(ReferenceAtp):
+    """VDX-06: a self-test due while the brake is applied is postponed from the release before that brake and
+    runs when the brake is released again, a few ms after that release: the coil is charged and the new
+    firmware raises C019 (make mutate seed 10's survivor of vdx.py:147, `or` made `and`)."""
+
+    def _build(self) -> None:
+        super()._build()
+        self.vdx = _VdxPostponesFromACancelledRelease(self.kernel, self._cfg.vdx, self._emit,
+                                                      on_loop=self._brake_to_train)
+
+
+FAULTY += [(SelfTestPostponedFromACancelledRelease, "VDX-06", "F-ATP-06")]

@@ -77,3 +77,21 @@ Feature: F-ATP-06 C019: a release just before the FS self-test, by firmware and 
       | firmware | postpone |
       | old      | 16       |
       | new      | 48       |
+
+  # A brake applied again across a due test cancels the release before it: the postponement is owed to the
+  # release that comes before the test runs. Released again just after the due time, the coil is charged.
+  @req:VDX-06
+  Scenario Outline: F-ATP-06 New firmware: released, braked again across a due self-test, released <again> ms after it: no C019
+    Given the VDX runs the new firmware
+    And the FS output is fed with 137 V
+    And the train has been powered up for 1000 ms
+    And the ATP has released the emergency brake
+    When 11 s pass
+    And the ATP releases the emergency brake 30 ms before the next FS self-test, applies it 10 ms before and releases it again <again> ms after
+    And 6 s pass
+    Then no C019 is raised
+
+    Examples:
+      | again |
+      | 2     |
+      | 10    |
