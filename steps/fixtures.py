@@ -9,6 +9,7 @@ import os
 
 import gc
 import re
+import sys
 from pathlib import Path
 from typing import Callable
 
@@ -298,6 +299,21 @@ def pytest_bdd_after_step(request, feature, scenario, step, step_func, step_func
             Bound(step.name, start, start + round(args["bound"] * 1000)))
 
 
+_GUARD = pytest.StashKey[ContractDriver]()
+
+
+def pytest_bdd_after_scenario(request, feature, scenario) -> None:
+    """A passed scenario's trace, beyond the events its steps were handed, held to the contract. Called from
+    pytest-bdd's `finally`: a scenario already failing (or not applicable) is left as it is."""
+    guard = request.node.stash.get(_GUARD, None)
+    if guard is None or sys.exc_info()[0] is not None:
+        return
+    driver = guard.driver
+    trace = driver.simulated_trace if isinstance(driver, SnapshotDriver) else driver.trace
+    if trace is not None:
+        guard.check_trace(trace)
+
+
 def pytest_bdd_before_step(request, feature, scenario, step, step_func) -> None:
     recorder = request.config.stash.get(_RECORDER, None)
     if recorder is not None:
@@ -314,7 +330,8 @@ def sut(sut_class: type[TrainDriver], request: pytest.FixtureRequest):
     recorder = request.config.stash.get(_RECORDER, None)
     if recorder is not None:
         recorder.item = ",".join(str(a) for m in request.node.iter_markers("item") for a in m.args) or "?"
-    yield ContractDriver(driver, profile or "", load_contract(profile or ""), recorder)
+    guard = request.node.stash[_GUARD] = ContractDriver(driver, profile or "", load_contract(profile or ""), recorder)
+    yield guard
     outcome = [getattr(request.node, f"_crh2_{phase}", None) for phase in ("setup", "call")]
     failed = any(r is not None and r.failed for r in outcome)
     whole = failed or request.config.getoption("--whole-trace") == "all"

@@ -415,6 +415,12 @@ class SnapshotDriver:
         self._live = False
         return driver
 
+    @property
+    def simulated_trace(self) -> Trace | None:
+        """The trace of the driver as far as it has been simulated, without replaying deferred calls: their
+        events were made, and seen, by the scenario that first ran them (None: nothing simulated here)."""
+        return self._driver.trace if self._driver is not None else None
+
     def shutdown(self) -> None:
         if self._driver is not None:
             self._driver.shutdown()

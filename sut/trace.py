@@ -211,6 +211,30 @@ class Trace:
             return [events[i] for i in runs[0]]
         return [events[i] for i in sorted(i for run in runs for i in run)]
 
+    def heads(self, kinds: Iterable[str], n: int) -> dict[str, list[TraceEvent]]:
+        """The first n events of each of `kinds` present, in list order: a sample of every kind that costs a
+        search of the kinds list per event taken, not a Python step per event held (a trace is mostly
+        periodic frames, of a few kinds)."""
+        if type(self) is not Trace:                         # a subclass may stand for another's events: walk
+            wanted, out = set(kinds), {}
+            for ev in self._events:
+                if ev.kind in wanted and len(out.setdefault(ev.kind, [])) < n:
+                    out[ev.kind].append(ev)
+            return out
+        events, kind_list = self._events, self._catch_up()
+        out = {}
+        for kind in self._kind_set.intersection(kinds):
+            taken = out[kind] = []
+            i, find = 0, kind_list.index
+            try:
+                while len(taken) < n:
+                    i = find(kind, i)
+                    taken.append(events[i])
+                    i += 1
+            except ValueError:
+                pass
+        return out
+
     def _since(self, since: int | None) -> Iterable[TraceEvent]:
         events = self._events
         if not since:

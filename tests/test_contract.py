@@ -178,3 +178,24 @@ def test_an_event_handed_to_a_step_holds_a_field_with_listed_values_to_them() ->
     contract.check_event("VDX", "selftest", {"result": "C019", "sample_ms": 1.5, "sample_v": 7.0}, 5_000_000)
     with pytest.raises(ContractBreach, match="result='PASS'; the vdx contract allows 'C019', 'pass'"):
         contract.check_event("VDX", "selftest", {"result": "PASS", "sample_ms": 1.5, "sample_v": 1.0}, 5_000_000)
+
+
+def test_a_scenarios_end_holds_events_no_step_was_handed_to_the_contract() -> None:
+    # an optional statement (the selftest at 0 ms) that no step selects is the SUT's statement all the same
+    events = [TraceEvent(0, "VDX", "selftest", {"result": "PASS", "sample_ms": 1.5, "sample_v": 1.0}),
+              TraceEvent(10, "VDX", "loop.change", {"state": "closed"})]
+    guard = _guarded(events)
+    assert guard.trace.first(kind="loop.change")["state"] == "closed"
+    with pytest.raises(ContractBreach, match="VDX selftest at 0 ms has result='PASS'"):
+        guard.check_trace(guard.driver.trace)
+
+
+def test_a_scenarios_end_holds_the_first_events_of_each_listed_kind_from_a_named_source() -> None:
+    closed = TraceEvent(0, "VDX", "loop.change", {"state": "closed"})
+    # an event from a source the entry does not name is outside the contract, as an unlisted kind is
+    stray = [TraceEvent(1, "rig", "loop.change", {}), TraceEvent(2, "VDX", "debug.dump", {"x": 1})]
+    late = TraceEvent(9, "VDX", "loop.change", {})          # past the first per_kind of its kind: not held
+    guard = _guarded([closed, closed, *stray, late])
+    assert guard.check_trace(guard.driver.trace, per_kind=3) == 2
+    with pytest.raises(ContractBreach, match="VDX loop.change at 0.009 ms has no field 'state'"):
+        guard.check_trace(guard.driver.trace, per_kind=4)

@@ -75,3 +75,16 @@ def test_events_of_several_kinds_come_from_the_index_as_the_walk_gives_them(firs
             assert indexed.of_kinds(kinds.__contains__, since, until) == expected
             assert walk.of_kinds(kinds.__contains__, since, until) == expected
         grown.extend(timed[len(first):])
+
+
+@settings(max_examples=300, deadline=None, suppress_health_check=[HealthCheck.too_slow])
+@given(first=events, more=events, kinds=kind_sets, n=st.integers(0, 5))
+def test_the_first_events_of_each_kind_come_from_the_index_as_the_walk_gives_them(first, more, kinds, n):
+    timed = _timed(first + more)
+    grown: list[TraceEvent] = timed[:len(first)]
+    indexed, walk = Trace(grown), Walk(grown)
+    for step in (0, 1):
+        expected = {k: [ev for ev in grown if ev.kind == k][:n] for k in kinds if any(ev.kind == k for ev in grown)}
+        assert indexed.heads(kinds, n) == expected
+        assert walk.heads(kinds, n) == expected
+        grown.extend(timed[len(first):])

@@ -1207,3 +1207,34 @@ class SelfTestPostponedFromACancelledRelease(ReferenceAtp):
 
 
 FAULTY += [(SelfTestPostponedFromACancelledRelease, "VDX-06", "F-ATP-06")]
+
+
+# -- events no step is handed, held to the contract at a scenario's end (ContractDriver.check_trace) ----------
+class _PressureUnstatedAtPowerUp(Vehicle):
+    """The vehicle of PowerUpStatementWithoutPressure."""
+    BULK_READABLE = True         # no state of its own (sut/reference/bulk.py)
+
+    def announce(self) -> None:
+        emit = self.train.emit
+        self.train.emit = lambda source, kind, **fields: emit(source, kind, **dict(fields, pressure=None))
+        try:
+            super().announce()
+        finally:
+            del self.train.emit
+
+
+class PowerUpStatementWithoutPressure(ReferenceTrain):
+    """CMD-02/ILK-01 (contract crh2.yaml, out.change: `pressure` a number): the optional statement of every
+    output at power-up carries no pressure (make mutate seed 10's survivor of vehicle.py:196). No step selects
+    those statements; a scenario's end holds every listed kind's first events to its entry."""
+
+    @property
+    def train(self) -> Train:
+        fresh = self._train is None
+        train = super().train
+        if fresh:
+            train.vehicle.__class__ = _PressureUnstatedAtPowerUp
+        return train
+
+
+FAULTY += [(PowerUpStatementWithoutPressure, "ILK-01", "F-ILK-01")]

@@ -48,6 +48,9 @@ class ContractFileError(Exception):
     """A contract file that cannot be read as one, naming the file and the entry."""
 
 
+# How many events of each listed kind a passed scenario's end holds to the contract (guard.check_trace).
+TRACE_CHECK_PER_KIND = 200
+
 @dataclass
 class EventKind:
     name: str

@@ -5,7 +5,7 @@ from pathlib import Path
 
 import jinja2
 
-from sut.contract.catalogue import HERE, load
+from sut.contract.catalogue import HERE, TRACE_CHECK_PER_KIND, load
 from sut.contract.declaration import form
 
 GUIDE = HERE.parents[1] / "docs" / "implementing-a-sut.md"
@@ -30,7 +30,8 @@ def render() -> str:
     env.filters.update(oneline=_oneline, words=_words, range_of=_range)
     profiles = [p for p in PROFILE_ORDER if (HERE / f"{p}.yaml").exists()]
     profiles += sorted(p.stem for p in HERE.glob("*.yaml") if p.stem not in profiles and p.stem != "form")
-    text = env.get_template("guide.md.j2").render(form=form(), contracts=[load(p) for p in profiles])
+    text = env.get_template("guide.md.j2").render(form=form(), contracts=[load(p) for p in profiles],
+                                                       per_kind=TRACE_CHECK_PER_KIND)
     while "\n\n\n" in text:
         text = text.replace("\n\n\n", "\n\n")
     return text
