@@ -183,6 +183,11 @@ def test_ramp_needs_a_positive_rate_and_a_number(train) -> None:
     ("atp", lambda t: t.monitor_order(1, "carrier set", "left"), OutOfRange, ["carrier set 'left'", "down or up"]),
     ("atp", lambda t: t.records("CCU"), UnknownName, ["recording unit", "ATP"]),
     ("atp", lambda t: t.pass_balise("1-1-1-1", []), NotPoweredUp, ["not powered up"]),
+    ("atp", lambda t: t.reading("FS voltage"), UnknownName, ["reading", "FS voltage", "FS output voltage"]),
+    ("atp", lambda t: t.insert_key(1), SutError, ["not fitted to a train", "cars_per_set"]),
+    ("metro-tcn", lambda t: t.set_input("emergency operation", 1), OutOfRange,
+     ["emergency operation switch 1", "True"]),
+    (None, lambda t: t.set_supply_voltage("train 110V", 500), OutOfRange, ["supply voltage 500", "0 .. 220 V"]),
 ])
 def test_profile_bad_input_names_value_and_what_is_allowed(profile, call, error, words) -> None:
     driver = open_backend("reference", profile)

@@ -202,9 +202,10 @@ def test_yielding_something_else_is_an_error(k):
     def proc():
         yield 1.5
 
-    k.process(proc(), "floaty")
+    process = k.process(proc(), "floaty")
     with pytest.raises(SimulationError, match="floaty"):
         k.run(10)
+    assert not process.alive
 
 
 def test_interrupt_carries_its_cause_and_can_be_caught(k):
@@ -349,19 +350,21 @@ def test_exception_in_a_process_surfaces_naming_the_process(k):
         yield 5
         raise KeyError("boom")
 
-    k.process(proc(), "car3.CCU.sys1.TXC.sampler")
+    process = k.process(proc(), "car3.CCU.sys1.TXC.sampler")
     with pytest.raises(SimulationError, match=r"car3\.CCU\.sys1\.TXC\.sampler.*t=5 us.*boom") as info:
         k.run(100)
     assert isinstance(info.value.__cause__, KeyError)
+    assert not process.alive
 
 
 def test_negative_delay_is_an_error_naming_the_process(k):
     def proc():
         yield -1
 
-    k.process(proc(), "backwards")
+    process = k.process(proc(), "backwards")
     with pytest.raises(SimulationError, match="backwards.*negative"):
         k.run(10)
+    assert not process.alive                  # a failed process is over, like one that raised
 
 
 # -- periodic activities --------------------------------------------------------------------------
