@@ -464,6 +464,14 @@ def _(sut: TrainDriver, declaration: ProfileDeclaration, unit: str, text: str) -
     assert any(pattern.search(r) for r in records), f"{unit} holds no record with {said}; it holds {records}"
 
 
+@then(parsers.parse('"{unit}"没有保存记录"{text}"'), converters={"text": zh.metro_text})
+@then(parsers.parse('"{unit}" holds no record "{text}"'))
+def _(sut: TrainDriver, declaration: ProfileDeclaration, unit: str, text: str) -> None:
+    pattern, said = _message(declaration, text)
+    found = [r for r in sut.records(unit) if pattern.search(r)]
+    assert not found, f"{unit} holds records with {said}: {found}"
+
+
 @then(parsers.parse('"{unit}"中记录"{text}"恰好保存了一次'), converters={"text": zh.metro_text})
 @then(parsers.parse('"{unit}" holds the record "{text}" exactly once'))
 def _(sut: TrainDriver, declaration: ProfileDeclaration, unit: str, text: str) -> None:

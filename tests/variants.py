@@ -1238,3 +1238,23 @@ class PowerUpStatementWithoutPressure(ReferenceTrain):
 
 
 FAULTY += [(PowerUpStatementWithoutPressure, "ILK-01", "F-ILK-01")]
+
+
+class _FailureRecordedAtPowerUp(MetroTrain):
+    """The train of TrainNetworkFailureRecordedAtPowerUp: a subclass, so the reference's code is not edited."""
+
+    def __init__(self, cfg) -> None:  # noqa: ANN001
+        super().__init__(cfg)
+        self.modes = {1: "starting", 2: "starting"}
+
+
+class TrainNetworkFailureRecordedAtPowerUp(ReferenceMetro):
+    """TCN-09: the mode a unit takes before its first commands have come (train network failure) is recorded
+    as a failure at power-up (make mutate seed 11's survivors of tcds.py:138)."""
+
+    def __init__(self) -> None:
+        super().__init__()
+        self._train = _FailureRecordedAtPowerUp(self._train.cfg)
+
+
+FAULTY += [(TrainNetworkFailureRecordedAtPowerUp, "TCN-09", "F-NET-25")]

@@ -23,6 +23,14 @@ Feature: F-NET-25 Train network failure: brake to a stop, then hard-wired emerge
     Then every BECU applies 100 % brake within 500 ms
     And every VVVF applies 0 % traction
 
+  # The record states a failure: a power-up, before the first commands have come, is none.
+  @req:TCN-09
+  Scenario: F-NET-25 A power-up with the network whole records no train network failure
+    Given the direction switch of cab 1 is at forward
+    And the train has been powered up for 1000 ms
+    Then "car1.CCU" holds no record "train network failure: braking to a stop"
+    And "car6.CCU" holds no record "train network failure: braking to a stop"
+
   @req:TCN-09
   Scenario: F-NET-25 Unit 1 lost entirely: the train brakes to a stop, then runs in emergency operation
     Given the direction switch of cab 1 is at forward
