@@ -130,6 +130,14 @@ def test_scheduling_in_the_past_raises(k):
     k.call_at(100, lambda: None)    # now itself is fine
 
 
+def test_a_time_that_is_not_whole_microseconds_is_refused_where_it_is_made(k):
+    # carried on, a float time stops bulk.py (no state is ever steady) and a long run goes frame by frame
+    with pytest.raises(SimulationError, match=r"delay of 2\.5 us: delays are whole us"):
+        k.call_later(2.5, lambda: None)
+    with pytest.raises(SimulationError, match=r"at 7\.0 us"):
+        k.call_at(7.0, lambda: None)
+
+
 # -- processes ------------------------------------------------------------------------------------
 def test_process_yielding_ints_sleeps_exactly(k):
     wakes = []

@@ -178,8 +178,9 @@ class Kernel:
 
     # -- scheduling -----------------------------------------------------------------------------
     def call_at(self, at: int, fn: Callable, *args: Any, prio: int = NORMAL) -> Timer:
-        if at < self.now:
-            raise SimulationError(f"cannot schedule in the past: {at} us < now {self.now} us")
+        if at < self.now or type(at) is not int:
+            raise SimulationError(f"cannot schedule at {at!r} us (now {self.now} us): times are whole us, "
+                                  "never in the past")
         self._seq += 1
         timer = Timer(at, prio, self._seq, fn, args)
         heapq.heappush(self._heap, (at, prio, self._seq, timer))
@@ -187,8 +188,11 @@ class Kernel:
 
     def call_later(self, delay: int, fn: Callable, *args: Any, prio: int = NORMAL) -> Timer:
         # The hot path of the model: pushes itself rather than going through call_at (bench/kernel_bench.py).
-        if delay < 0:
-            raise SimulationError(f"cannot schedule in the past: delay {delay} us")
+        # A time that is not a whole number of us is refused here, where it is made: carried on, it stops bulk
+        # (no state is steady any more) and a long scenario runs frame by frame without bound.
+        if delay < 0 or type(delay) is not int:
+            raise SimulationError(f"cannot schedule after a delay of {delay!r} us: delays are whole us, never "
+                                  "into the past")
         at = self.now + delay
         self._seq += 1
         timer = Timer(at, prio, self._seq, fn, args)
