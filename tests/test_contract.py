@@ -186,7 +186,8 @@ def test_a_scenarios_end_holds_events_no_step_was_handed_to_the_contract() -> No
               TraceEvent(10, "VDX", "loop.change", {"state": "closed"})]
     guard = _guarded(events)
     assert guard.trace.first(kind="loop.change")["state"] == "closed"
-    with pytest.raises(ContractBreach, match="VDX selftest at 0 ms has result='PASS'"):
+    with pytest.raises(ContractBreach, match="at the scenario's end, in an event no step was handed: VDX selftest at "
+                                             "0 ms has result='PASS'"):
         guard.check_trace(guard.driver.trace)
 
 

@@ -51,6 +51,7 @@ class ContractFileError(Exception):
 # How many events of each listed kind a passed scenario's end holds to the contract (guard.check_trace).
 TRACE_CHECK_PER_KIND = 200
 
+
 @dataclass
 class EventKind:
     name: str

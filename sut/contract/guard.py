@@ -231,7 +231,11 @@ class ContractDriver:
             entry = self._contract.events[kind]
             for ev in events:
                 if entry.names_source(ev.source):
-                    check(ev.source, kind, ev.fields, ev.t)
+                    try:
+                        check(ev.source, kind, ev.fields, ev.t)
+                    except ContractBreach as breach:    # no step to blame: say where it was found
+                        raise ContractBreach(f"at the scenario's end, in an event no step was handed: {breach}") \
+                            from None
                     held += 1
         return held
 
