@@ -720,20 +720,27 @@ class _ForwardOnlyTraction(Vehicle):
         return super()._permitted(emergency, rapid, doors) and (ccu is None or ccu.desk.direction == "forward")
 
 
-class ReverseRefused(ReferenceTrain):
-    """ILK-08 (issue 31, item 4: a held-out fault, described): the direction condition reads "forward", not
-    "forward or reverse", so with the direction switch at reverse traction is blocked and no notch reaches a
-    CI. Before, only F-CTL-11's "In reverse the driver's notch reaches every CI" (tagged CMD-05) drove in
-    reverse: `--req ILK-08` passed it. Rejected by F-ILK-08's "The direction switch at reverse permits
-    traction as forward does"."""
+class _OwnVehicle(ReferenceTrain):
+    """A CRH2 train whose vehicle is of the class VEHICLE (a subclass of the reference's), from when the train
+    is built: the reference's code is not edited."""
+    VEHICLE: type[Vehicle] = Vehicle
 
     @property
     def train(self) -> Train:
         fresh = self._train is None
         train = super().train
         if fresh:
-            train.vehicle.__class__ = _ForwardOnlyTraction
+            train.vehicle.__class__ = self.VEHICLE
         return train
+
+
+class ReverseRefused(_OwnVehicle):
+    """ILK-08 (issue 31, item 4: a held-out fault, described): the direction condition reads "forward", not
+    "forward or reverse", so with the direction switch at reverse traction is blocked and no notch reaches a
+    CI. Before, only F-CTL-11's "In reverse the driver's notch reaches every CI" (tagged CMD-05) drove in
+    reverse: `--req ILK-08` passed it. Rejected by F-ILK-08's "The direction switch at reverse permits
+    traction as forward does"."""
+    VEHICLE = _ForwardOnlyTraction
 
 
 FAULTY += [(ReverseRefused, "ILK-08", "F-ILK-08")]
@@ -1223,18 +1230,11 @@ class _PressureUnstatedAtPowerUp(Vehicle):
             del self.train.emit
 
 
-class PowerUpStatementWithoutPressure(ReferenceTrain):
+class PowerUpStatementWithoutPressure(_OwnVehicle):
     """CMD-02/ILK-01 (contract crh2.yaml, out.change: `pressure` a number): the optional statement of every
     output at power-up carries no pressure (make mutate seed 10's survivor of vehicle.py:196). No step selects
     those statements; a scenario's end holds every listed kind's first events to its entry."""
-
-    @property
-    def train(self) -> Train:
-        fresh = self._train is None
-        train = super().train
-        if fresh:
-            train.vehicle.__class__ = _PressureUnstatedAtPowerUp
-        return train
+    VEHICLE = _PressureUnstatedAtPowerUp
 
 
 FAULTY += [(PowerUpStatementWithoutPressure, "ILK-01", "F-ILK-01")]
