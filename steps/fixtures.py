@@ -299,16 +299,18 @@ def pytest_bdd_after_step(request, feature, scenario, step, step_func, step_func
             Bound(step.name, start, start + round(args["bound"] * 1000)))
 
 
-_GUARD = pytest.StashKey[ContractDriver]()
+# A scenario's guard and the driver behind it: the end-of-scenario check asks a snapshot for its trace as far
+# as it was simulated, which the driver interface does not offer.
+_GUARD = pytest.StashKey[tuple[ContractDriver, object]]()
 
 
 def pytest_bdd_after_scenario(request, feature, scenario) -> None:
     """A passed scenario's trace, beyond the events its steps were handed, held to the contract. Called from
     pytest-bdd's `finally`: a scenario already failing (or not applicable) is left as it is."""
-    guard = request.node.stash.get(_GUARD, None)
-    if guard is None or sys.exc_info()[0] is not None:
+    found = request.node.stash.get(_GUARD, None)
+    if found is None or sys.exc_info()[0] is not None:
         return
-    driver = guard.driver
+    guard, driver = found
     trace = driver.simulated_trace if isinstance(driver, SnapshotDriver) else driver.trace
     if trace is not None:
         guard.check_trace(trace)
@@ -330,7 +332,8 @@ def sut(sut_class: type[TrainDriver], request: pytest.FixtureRequest):
     recorder = request.config.stash.get(_RECORDER, None)
     if recorder is not None:
         recorder.item = ",".join(str(a) for m in request.node.iter_markers("item") for a in m.args) or "?"
-    guard = request.node.stash[_GUARD] = ContractDriver(driver, profile or "", load_contract(profile or ""), recorder)
+    guard = ContractDriver(driver, profile or "", load_contract(profile or ""), recorder)
+    request.node.stash[_GUARD] = (guard, driver)
     yield guard
     outcome = [getattr(request.node, f"_crh2_{phase}", None) for phase in ("setup", "call")]
     failed = any(r is not None and r.failed for r in outcome)

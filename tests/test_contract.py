@@ -188,7 +188,7 @@ def test_a_scenarios_end_holds_events_no_step_was_handed_to_the_contract() -> No
     assert guard.trace.first(kind="loop.change")["state"] == "closed"
     with pytest.raises(ContractBreach, match="at the scenario's end, in an event no step was handed: VDX selftest at "
                                              "0 ms has result='PASS'"):
-        guard.check_trace(guard.driver.trace)
+        guard.check_trace(Trace(events))
 
 
 def test_a_scenarios_end_holds_the_first_events_of_each_listed_kind_from_a_named_source() -> None:
@@ -196,7 +196,8 @@ def test_a_scenarios_end_holds_the_first_events_of_each_listed_kind_from_a_named
     # an event from a source the entry does not name is outside the contract, as an unlisted kind is
     stray = [TraceEvent(1, "rig", "loop.change", {}), TraceEvent(2, "VDX", "debug.dump", {"x": 1})]
     late = TraceEvent(9, "VDX", "loop.change", {})          # past the first per_kind of its kind: not held
-    guard = _guarded([closed, closed, *stray, late])
-    assert guard.check_trace(guard.driver.trace, per_kind=3) == 2
+    events = [closed, closed, *stray, late]
+    guard = _guarded(events)
+    assert guard.check_trace(Trace(events), per_kind=3) == 2
     with pytest.raises(ContractBreach, match="VDX loop.change at 0.009 ms has no field 'state'"):
-        guard.check_trace(guard.driver.trace, per_kind=4)
+        guard.check_trace(Trace(events), per_kind=4)

@@ -212,11 +212,6 @@ class ContractDriver:
         if self._contract is not None:
             self._contract.check_answer_key(method, dotted)
 
-    @property
-    def driver(self) -> Any:
-        """The driver behind the guard (for the harness; steps go through the guard)."""
-        return self._driver
-
     def check_trace(self, trace: Trace, per_kind: int = TRACE_CHECK_PER_KIND) -> int:
         """Events no step was handed, held to their kind's entry all the same (check_event): an optional
         statement at power-up, or a kind read only under other conditions, is still the SUT's statement in
