@@ -1,6 +1,7 @@
 """Reading the SUT's trace the way a test engineer reads analyser logs. No pytest, no SUT internals."""
 from __future__ import annotations
 
+import re
 from dataclasses import dataclass
 from typing import Iterable
 
@@ -8,6 +9,15 @@ from sut.driver import TrainDriver
 from sut.trace import Trace, TraceEvent
 
 from steps import budgets
+
+QUOTED = re.compile(r'"([^"]+)"')
+
+
+def quoted_names(text: str) -> list[str]:
+    """The quoted names of a sentence's list (`"car6.LCU" and "car2.LCU"`), at least one."""
+    names = QUOTED.findall(text)
+    assert names, f"no quoted names in {text!r}"
+    return names
 
 
 @dataclass(frozen=True)

@@ -16,16 +16,10 @@ from sut.codecs import mvb
 from sut.contract.declaration import PLACEHOLDER, ProfileDeclaration
 from sut.driver import TrainDriver
 from steps import messages, zh
+from steps import analysis
 from steps.analysis import describe, intervals, ms, us
 
-QUOTED = re.compile(r'"([^"]+)"')
 WTB_CYCLE_US = 25_000          # TCN-03: the WTB's maximum cycle
-
-
-def _names(text: str) -> list[str]:
-    names = QUOTED.findall(text)
-    assert names, f"no quoted names in {text!r}"
-    return names
 
 
 def _sinks(sut: TrainDriver, kind: str) -> list[str]:
@@ -97,7 +91,7 @@ def _(sut: TrainDriver, position: str) -> int:
 @when(parsers.parse('{units}同时故障'), target_fixture="t_action")
 @when(parsers.parse('{units} fail together'), target_fixture="t_action")
 def _(sut: TrainDriver, units: str) -> int:
-    for unit in _names(units):
+    for unit in analysis.quoted_names(units):
         sut.fail(unit)
     return sut.now_us
 
@@ -195,7 +189,7 @@ def _(sut: TrainDriver, declaration: ProfileDeclaration, t_action: int, node: st
 @then(parsers.parse('{nodes}均不发出WTB主帧'))
 @then(parsers.parse('no WTB master frame comes from {nodes}'))
 def _(sut: TrainDriver, t_action: int, nodes: str) -> None:
-    banned = set(_names(nodes))
+    banned = set(analysis.quoted_names(nodes))
     bad = [p for p in sut.trace.select(kind="wtb.msg", source="WTB") if p["master"] in banned]
     assert not bad, f"WTB master frames from {sorted({p['master'] for p in bad})}: {describe(bad)}"
 
@@ -335,7 +329,7 @@ def _(sut: TrainDriver, t_action: int, line: str, bus: str, after: float) -> Non
 def _(sut: TrainDriver, t_action: int, nodes: str) -> None:
     # RED-04/RED-06: the WTB carries on without a loss while a node is down: every node still up answers every
     # poll (the failed node's own polls, unanswered, are no loss of a message: nothing was sent to lose).
-    down = set(_names(nodes))
+    down = set(analysis.quoted_names(nodes))
     polls = [p for p in _polls(sut, "WTB", t_action) if p["polled"] not in down]
     silent = [p for p in polls if not p["answered"]]
     assert polls and not silent, f"{len(silent)} of {len(polls)} WTB polls unanswered: {describe(silent[:5])}"

@@ -1,6 +1,7 @@
 """The token protocol (PRO-03..05), status and block data (PRO-02, PRO-06), the ring itself (NET-03..09)."""
 from __future__ import annotations
 
+
 from pytest_bdd import parsers, then
 
 from sut.codecs import arcnet
@@ -277,7 +278,29 @@ def _(sut: TrainDriver, t_action: int, master: str, node: str) -> None:
     grant = sut.trace.first(kind="block.grant", source=f"{master}.CPU3", since=t_action, node=node)
     assert grant is not None, f"{master} never granted {node} a block transfer"
     announced = sut.trace.first(kind="status.tx", source=f"{master}.CPU3", since=grant.t)
-    assert announced is not None and announced["grant"] > 0, f"{master}'s status data did not carry the grant"
+    number = _node_number(sut, node)
+    assert announced is not None and announced["grant"] == number, (
+        f"{master}'s status data did not carry the grant of {node} (node {number}): "
+        f"{'no status data since' if announced is None else 'grant ' + str(announced['grant'])}")
+
+
+def _node_number(sut: TrainDriver, node: str) -> int:
+    """The contract's numbering: a node's number is its position in ring_nodes() plus one (PRO-06's grant)."""
+    nodes = sut.ring_nodes()
+    assert node in nodes, f"{node} is not a node of the ring ({', '.join(nodes)})"
+    return nodes.index(node) + 1
+
+
+@then(parsers.parse('"{master}"的状态数据只准许{nodes}进行数据块传输'))
+@then(parsers.parse('the status data of "{master}" grant a block transfer to none but {nodes}'))
+def _(sut: TrainDriver, t_action: int, master: str, nodes: str) -> None:
+    """PRO-06: the master announces the node it granted; a grant is for a node that asked for one. A grant
+    left standing for a node that never asked holds back every node queued behind it."""
+    asked = {_node_number(sut, n): n for n in analysis.quoted_names(nodes)}
+    for status in sut.trace.select(kind="status.tx", source=f"{master}.CPU3", since=t_action):
+        assert status["grant"] == 0 or status["grant"] in asked, (
+            f"{master}'s status data at {ms(status.t)} grant node {status['grant']}, which did not ask "
+            f"(asked: {', '.join(f'{n} = node {k}' for k, n in asked.items())})")
 
 
 @then(parsers.parse('"{node}"在获准之前不发送数据块'))

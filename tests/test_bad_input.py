@@ -185,6 +185,8 @@ def test_ramp_needs_a_positive_rate_and_a_number(train) -> None:
     ("atp", lambda t: t.pass_balise("1-1-1-1", []), NotPoweredUp, ["not powered up"]),
     ("atp", lambda t: t.reading("FS voltage"), UnknownName, ["reading", "FS voltage", "FS output voltage"]),
     ("atp", lambda t: t.insert_key(1), SutError, ["not fitted to a train", "cars_per_set"]),
+    ("atp", lambda t: t.configure(sets=1, cars_per_set=16), OutOfRange,
+     ["cars per set of the fitted train 16", "8"]),
     ("metro-tcn", lambda t: t.set_input("emergency operation", 1), OutOfRange,
      ["emergency operation switch 1", "True"]),
     (None, lambda t: t.set_supply_voltage("train 110V", 500), OutOfRange, ["supply voltage 500", "0 .. 220 V"]),

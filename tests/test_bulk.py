@@ -608,3 +608,26 @@ def test_a_users_subclass_of_a_reference_part_gets_bulk_advance_if_it_declares_i
     assert bool(jumps) == carried, jumps
     assert any(issubclass(w.category, bulk.BulkRefused) for w in said) == (not carried)
     assert fast.trace.to_csv() == exact.trace.to_csv()
+
+
+class _Speeding(_TwoCounters):
+    """A count that goes up by 1 every 10 ms, and by 2 from 31 s on: a change of motion with no change of
+    shape, which bulk must see when it simulates a sample on the train (the soak's sample of 30 s to 33 s)."""
+
+    BULK_READABLE = True
+
+    def _tick(self) -> None:
+        self.count += 1 if self.kernel.now < 31 * S else 2
+
+
+def test_a_train_that_leaves_its_line_during_a_sample_is_followed_onto_its_new_line(
+        monkeypatch: pytest.MonkeyPatch) -> None:
+    # After a sample simulated on the train (samples are not replayed here), the state is held to the line
+    # the jumps extrapolate; a state of the same shape that moved otherwise is off the line (seed 11: with
+    # `and` for `or` in that test, the old line carried the count on at half its speed).
+    monkeypatch.setattr(bulk, "_replayable", lambda *args: None)
+    exact, fast = _Speeding(), _Speeding()
+    exact.kernel.run(60 * S)
+    report = bulk.run(fast, 60 * S, sample_every_us=30 * S)
+    assert report.jumps >= 2 and report.simulated_us < 20 * S, report
+    assert fast.count == exact.count == 3100 + 2 * 2901      # ticks at 0..30.99 s by 1, at 31..60 s by 2

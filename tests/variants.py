@@ -746,6 +746,27 @@ class ReverseRefused(_OwnVehicle):
 FAULTY += [(ReverseRefused, "ILK-08", "F-ILK-08")]
 
 
+class _GrantLeftAtNode1(Train):
+    """The train of GrantLeftStanding."""
+    BULK_READABLE = True         # no state of its own (sut/reference/bulk.py)
+
+    def block_master_saw_status(self, node, fields: dict, src: int) -> None:
+        released = node is self.block_master() and src == self.block_granted and not fields["block_request"]
+        super().block_master_saw_status(node, fields, src)
+        if released:
+            self.block_granted = 1
+
+
+class GrantLeftStanding(ReferenceTrain):
+    """PRO-06: when a node's transfer ends, the master's grant moves to node 1, which never asked; the queued
+    nodes wait until node 1's own status data say it asks for nothing, and for ever if node 1 is silent (make
+    mutate seed 11's survivor of train.py:188). Rejected by F-NET-15's scenario with system 1 switched off."""
+    TRAIN = _GrantLeftAtNode1
+
+
+FAULTY += [(GrantLeftStanding, "PRO-06", "F-NET-15")]
+
+
 class _LastKeyedCommand(MetroTrain):
     """The train of KeyRemovalIgnored: a subclass, so the reference's code is not edited."""
 

@@ -36,3 +36,16 @@ Feature: F-NET-15 Block data: 236-byte blocks on request and grant, at least 10 
     Then "car1.CCU.sys1" holds the 5000-byte record of "car2.LCU"
     And "car1.CCU.sys1" holds the 300-byte record of "car6.LCU"
     And the block transfers of "car2.LCU" and "car6.LCU" do not overlap
+
+  @req:PRO-06
+  Scenario: F-NET-15 With system 1 switched off, system 2 grants the requesting nodes in turn and no other
+    When the supply "car1.CCU.sys1" is switched off
+    And 500 ms pass
+    And "car6.LCU" asks to send a 500-byte record as block data
+    And "car2.LCU" asks to send a 300-byte record as block data
+    And 2 s pass
+    Then "car1.CCU.sys2" grants "car6.LCU" the block transfer in its status data
+    And "car1.CCU.sys2" grants "car2.LCU" the block transfer in its status data
+    And the status data of "car1.CCU.sys2" grant a block transfer to none but "car6.LCU" and "car2.LCU"
+    And "car1.CCU.sys2" holds the 500-byte record of "car6.LCU"
+    And "car1.CCU.sys2" holds the 300-byte record of "car2.LCU"

@@ -117,6 +117,10 @@ class ReferenceAtp(PickledState, TrainDriver):
             raise OutOfRange("train sets", sets, "1 (one ATP-equipped train)")
         if cars_per_set is None:
             return
+        # The fitted profile (atp-crh2) declares an 8-car set only: a 16-car fit is a train this rig does not
+        # model (one ATP, cab 1's desk), so it is refused rather than built as something else.
+        if cars_per_set != 8:
+            raise OutOfRange("cars per set of the fitted train", cars_per_set, "8 (atp-crh2: an 8-car CRH2 set)")
         if self.powered or self._crh2 is not None:
             raise SutError("fit the ATP to a train before anything else is done")
         crh2 = self.TRAIN()

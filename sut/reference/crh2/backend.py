@@ -42,6 +42,8 @@ class ReferenceTrain(PickledState, TrainDriver):
 
     INTERLOCKS: ClassVar[dict[str, Any]] = {}
     ENVIRONMENT: ClassVar[dict[str, Any]] = {}
+    # The model's class: a variant of the train (tests/variants.py) is a subclass named here, not an edit.
+    TRAIN: ClassVar[type[Train]] = Train
 
     def __init__(self) -> None:
         super().__init__()
@@ -61,7 +63,7 @@ class ReferenceTrain(PickledState, TrainDriver):
     @property
     def train(self) -> Train:
         if self._train is None:
-            self._train = Train(self._cfg)
+            self._train = self.TRAIN(self._cfg)
         return self._train
 
     def _power_on(self) -> None:
