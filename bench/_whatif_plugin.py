@@ -6,6 +6,8 @@ switch is a stand-in for a fix proposed in the benchmark's findings, not the fix
 
   bddscan     the opposite of a fix now made: pytest-bdd's own per-step scan of every fixture instead of
               the step index (outline/plugin/step_index.py, issue 14), to show what the index saves.
+  noendcheck  no end-of-scenario contract check (ContractDriver.check_trace a no-op): what holding the
+              events no step was handed to their contract entries costs (steps/fixtures.py, issue 31).
   (Done since, each first measured here: noattach, no report attachments without --alluredir, in
   steps/report.py; steplookup, the step index; nohypothesis, hypothesis's pytest plugin not loaded, in
   pyproject.toml's addopts.)
@@ -17,7 +19,7 @@ import os
 import pytest
 
 WHATIF = {w.strip() for w in os.environ.get("BENCH_WHATIF", "").split(",") if w.strip()}
-KNOWN = {"bddscan"}
+KNOWN = {"bddscan", "noendcheck"}
 
 
 def _patch_bddscan() -> None:
@@ -33,3 +35,7 @@ def pytest_configure(config: pytest.Config) -> None:
         raise pytest.UsageError(f"BENCH_WHATIF: unknown {sorted(unknown)}; known: {sorted(KNOWN)}")
     if "bddscan" in WHATIF:
         _patch_bddscan()
+    if "noendcheck" in WHATIF:
+        from sut.contract.guard import ContractDriver
+
+        ContractDriver.check_trace = lambda self, trace, per_kind=0: 0

@@ -57,6 +57,7 @@ ROOT = BENCH.parent
 sys.path.insert(0, str(BENCH))
 
 import _history  # noqa: E402
+from _whatif_plugin import KNOWN as WHATIF_KNOWN  # noqa: E402  (one list of switches)
 from _table import table, text  # noqa: E402
 
 TARGET_FLOOR = 1.5      # issue 9: the conformance run <= 1.5x the floor
@@ -505,7 +506,7 @@ def main(argv: list[str] | None = None) -> int:
     ap.add_argument("--what-if", type=lambda v: [w.strip() for w in v.split(",") if w.strip()], default=[],
                     metavar="LIST",
                     help="experimental: one more conformance pass with stand-ins for proposed fixes "
-                         "(comma-separated: bddscan; see bench/_whatif_plugin.py)")
+                         f"(comma-separated: {', '.join(sorted(WHATIF_KNOWN))}; see bench/_whatif_plugin.py)")
     ap.add_argument("--profile-run", action="store_true",
                     help="also run the conformance pass under cProfile and summarise it by package")
     ap.add_argument("--profile-out", type=Path, default=None, metavar="FILE",
@@ -522,7 +523,7 @@ def main(argv: list[str] | None = None) -> int:
     args.pytest_args = rest
     if args.repeat < 1:
         ap.error("--repeat must be >= 1")
-    bad = set(args.what_if) - {"bddscan"}
+    bad = set(args.what_if) - WHATIF_KNOWN
     if bad:
         ap.error(f"--what-if: unknown {', '.join(sorted(bad))}")
 
