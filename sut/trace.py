@@ -211,6 +211,14 @@ class Trace:
             return [events[i] for i in runs[0]]
         return [events[i] for i in sorted(i for run in runs for i in run)]
 
+    def kinds(self) -> set:
+        """Every kind the trace holds, as the index reads them (at C speed): the end-of-scenario check asks
+        whether each is a name at all."""
+        if type(self) is not Trace:                         # a subclass may stand for another's events: walk
+            return {ev.kind for ev in self._events}
+        self._catch_up()
+        return set(self._kind_set)
+
     def heads(self, kinds: Iterable[str], n: int) -> dict[str, list[TraceEvent]]:
         """The first n events of each of `kinds` present, in list order: a sample of every kind that costs a
         search of the kinds list per event taken, not a Python step per event held (a trace is mostly

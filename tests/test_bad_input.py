@@ -176,6 +176,7 @@ def test_ramp_needs_a_positive_rate_and_a_number(train) -> None:
     ("atp", lambda t: t.output("EB3R"), UnknownName, ["output", "EB2R"]),
     ("atp", lambda t: t.set_supply_voltage("VDX", 500), OutOfRange, ["supply voltage 500", "0-200 V"]),
     ("atp", lambda t: t.set_supply_voltage("DCU", 110), UnknownName, ["supply", "DCU", "VDX"]),
+    ("atp", lambda t: t.power_off("DCU"), UnknownName, ["supply", "DCU", "VDX"]),
     ("atp", lambda t: t.configure(sets=2), OutOfRange, ["train sets 2"]),
     ("atp", lambda t: t.set_input("carrier", 1800), OutOfRange, ["carrier 1800", "1700, 2000, 2300, 2600"]),
     ("atp", lambda t: t.set_input("speed", -5), OutOfRange, ["speed -5"]),
@@ -190,6 +191,9 @@ def test_ramp_needs_a_positive_rate_and_a_number(train) -> None:
     ("metro-tcn", lambda t: t.set_input("emergency operation", 1), OutOfRange,
      ["emergency operation switch 1", "True"]),
     (None, lambda t: t.set_supply_voltage("train 110V", 500), OutOfRange, ["supply voltage 500", "0 .. 220 V"]),
+    (None, lambda t: t.vibrate("car3.LCU", 0, 5, 10_000), OutOfRange, ["contact interruption 0", ">= 1"]),
+    (None, lambda t: t.vibrate("car3.LCU", 2_000, 5, 2_000), OutOfRange,
+     ["interruption period 2000", ">= 2001"]),
 ])
 def test_profile_bad_input_names_value_and_what_is_allowed(profile, call, error, words) -> None:
     driver = open_backend("reference", profile)

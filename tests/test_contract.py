@@ -201,3 +201,15 @@ def test_a_scenarios_end_holds_the_first_events_of_each_listed_kind_from_a_named
     assert guard.check_trace(Trace(events), per_kind=3) == 2
     with pytest.raises(ContractBreach, match="VDX loop.change at 0.009 ms has no field 'state'"):
         guard.check_trace(Trace(events), per_kind=4)
+
+
+@pytest.mark.parametrize("kind", [None, "", 7])
+def test_a_scenarios_end_refuses_an_event_whose_kind_is_no_name(kind) -> None:
+    # seed 12: the VDX's supply echo emitted with no kind passed every scenario (an unlisted kind is ignored,
+    # but a kind that is no name at all is a malformed trace, not another statement)
+    events = [TraceEvent(0, "VDX", "loop.change", {"state": "closed"}), TraceEvent(5, "VDX", kind, {"volts": 77.0})]
+    guard = _guarded(events)
+    with pytest.raises(ContractBreach, match=re.escape(f"the trace holds an event whose kind is {kind!r}, not a name "
+                                                       "(from 'VDX' at t=5 us, fields {'volts': 77.0})")):
+        guard.check_trace(Trace(events))
+    assert guard.check_trace(Trace(events[:1])) == 1

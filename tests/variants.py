@@ -10,6 +10,7 @@ from __future__ import annotations
 import re
 
 from sut.reference.crh2.backend import ReferenceTrain
+from sut.reference.crh2.ccu import Ccu
 from sut.reference.crh2.train import Train
 from sut.reference.crh2.vehicle import Vehicle
 from tests.wording import reword
@@ -765,6 +766,61 @@ class GrantLeftStanding(ReferenceTrain):
 
 
 FAULTY += [(GrantLeftStanding, "PRO-06", "F-NET-15")]
+
+
+class _BlamesUnheardFields(Ccu):
+    """The cab's CCU of ReportsBoardsItHasNoStatusFor."""
+    BULK_READABLE = True         # no state of its own (sut/reference/bulk.py)
+
+    def monitor_view(self, stale_us: int) -> dict:
+        view = super().monitor_view(stale_us)
+        source = self.monitor_source()
+        if source is not None:
+            blamed = {f"{node.name}.CPU3 failure" for node in self.train.ring.nodes
+                      if node is not source and node.number in source.heard and node.number not in source.last_status}
+            view["faults"] = sorted(set(view["faults"]) | blamed)
+        return view
+
+
+class _TrainBlamingUnheardFields(Train):
+    BULK_READABLE = True         # no state of its own (sut/reference/bulk.py)
+
+    def __init__(self, cfg) -> None:
+        super().__init__(cfg)
+        for ccu in self.ccus.values():
+            ccu.__class__ = _BlamesUnheardFields
+
+
+class ReportsBoardsItHasNoStatusFor(ReferenceTrain):
+    """PRO-02: a monitor fed by a system that has heard a node but holds none of its status fields (its own
+    CPU3 was down when they came) reports that node's boards failed until their next status data (make mutate
+    seed 12's survivors of ccu.py:260/264, which took None for the missing fields and crashed). Rejected by
+    F-DSP-01's "A system silent since power-up ...": no node is blamed once it is repaired."""
+    TRAIN = _TrainBlamingUnheardFields
+
+
+FAULTY += [(ReportsBoardsItHasNoStatusFor, "PRO-02", "F-DSP-01")]
+
+
+class AtpEmergencyOnlyThroughTheLoop(ReferenceAtp):
+    """ILK-08: fitted to a CRH2 set, the ATP's own emergency brake (a failed DEF self-test) reaches the train
+    only while the VDX holds the loop open; with the rig's command to the VDX released, the train runs
+    unbraked though the ATP still brakes (make mutate seed 12's survivor of atp/backend.py:79). Rejected by
+    F-ATP-16's scenario with the emergency-brake command to the VDX released."""
+
+    def _brake_to_train(self) -> None:
+        state = self.atp.s
+        if state.brake != "emergency" or self.vdx.loop == "open":
+            super()._brake_to_train()
+            return
+        state.brake = "none"                 # the ATP's own emergency, seen as no brake while the loop is closed
+        try:
+            super()._brake_to_train()
+        finally:
+            state.brake = "emergency"
+
+
+FAULTY += [(AtpEmergencyOnlyThroughTheLoop, "ILK-08", "F-ATP-16")]
 
 
 class _LastKeyedCommand(MetroTrain):

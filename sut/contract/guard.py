@@ -221,6 +221,14 @@ class ContractDriver:
         frames from a few emit sites. Returns how many were held."""
         if self._contract is None:
             return 0
+        # An event without a name for its kind is no statement in the contract's terms at all, nor one a
+        # user can select: a malformed trace, said as such (a kind is a string, as every entry's name is).
+        nameless = sorted((repr(k) for k in trace.kinds() if not isinstance(k, str) or not k))
+        if nameless:
+            first = next(ev for ev in trace if repr(ev.kind) == nameless[0])
+            raise ContractBreach(f"at the scenario's end: the trace holds an event whose kind is {nameless[0]}, not "
+                                 f"a name (from {first.source!r} at t={first.t} us, fields {dict(first.fields)}); "
+                                 "every event's kind is a non-empty string")
         held, check = 0, self._contract.check_event
         for kind, events in trace.heads(self._contract.events, per_kind).items():
             entry = self._contract.events[kind]

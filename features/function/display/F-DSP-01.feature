@@ -43,3 +43,15 @@ Feature: F-DSP-01 Status data of every node reaches both cab monitors
     And 150 ms pass
     Then the cab 1 monitor displays "main pipe pressure" between 699 and 701 within 150 ms
     And the cab 8 monitor displays "main pipe pressure" between 699 and 701 within 150 ms
+
+  @req:PRO-02 @req:TST-04
+  Scenario: F-DSP-01 A system silent since power-up is shown silent, and no longer within 150 ms of its repair
+    Given an 8-car CRH2 train set
+    And the driver has inserted the key in cab 1
+    And board "car1.CCU.sys1.CPU3" has failed
+    And the train has been powered up for 1000 ms
+    Then the cab 1 monitor shows "no status data from car1.CCU.sys1" and no other fault
+    When board "car1.CCU.sys1.CPU3" is repaired
+    And the cab 1 monitor is watched for 300 ms
+    Then the cab 1 monitor stopped showing "no status data from car1.CCU.sys1" within 150 ms
+    And the cab 1 monitor never showed a fault but "no status data from car1.CCU.sys1"
