@@ -591,6 +591,10 @@ def history_figures(runs: list[Run]) -> dict[str, float]:
     if kernel:
         figures |= {"kernel_run_s": kernel, "rest_s": conf.wall - kernel,
                     "rest_over_floor": (conf.wall - kernel) / floor.wall}
+    for what_if in runs[2:]:              # a stand-in's pass beside the conformance run it is read against
+        name = what_if.label.removeprefix("what-if: ")
+        figures |= {f"whatif.{name}.wall_s": what_if.wall, f"whatif.{name}.cpu_s": what_if.cpu,
+                    f"whatif.{name}.over_conformance_cpu": what_if.cpu / max(conf.cpu, 1e-9)}
     return figures
 
 
