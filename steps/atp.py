@@ -18,7 +18,7 @@ from pytest_bdd import given, parsers, then, when
 from sut.contract.declaration import ProfileDeclaration
 from sut.driver import TrainDriver
 from steps.analysis import describe, intervals, ms, us
-from steps import zh
+from steps import analysis, budgets, zh
 
 SECTION = re.compile(r"(?P<a>[\d.]+)-(?P<b>[\d.]+) m (?P<f>\d+) Hz")
 
@@ -487,6 +487,27 @@ def _(sut: TrainDriver) -> None:
 def _(sut: TrainDriver) -> None:
     # Any brake the ATP commands (maximum service or emergency): which one is the product's.
     assert sut.output("ATP brake") != "none", "the ATP commands no brake"
+
+
+@then(parsers.parse("{after:g} ms起列车按ATP的制动施加制动"))
+@then(parsers.parse("from {after:g} ms on the train brakes as the ATP commands"))
+@budgets.budgeted
+def _(sut: TrainDriver, declaration: ProfileDeclaration, t_action: int, after: float) -> None:
+    """ILK-08 on the fitted train (atp-crh2 contract): whichever brake the ATP chose, the train takes it. An
+    emergency brake applies the train's emergency brake; a maximum service brake raises every BCU's brake
+    command to full service (step 7), as in F-ATP-13."""
+    brake = sut.output("ATP brake")
+    assert brake != "none", "the ATP commands no brake"
+    if brake == "emergency":
+        assert sut.output("emergency brake") == "applied", \
+            f"the ATP brakes in emergency, and the train's emergency brake is {sut.output('emergency brake')}"
+        return
+    since = t_action + budgets.window_us(declaration, after)
+    for device in [d for d in analysis.command_devices(sut) if d.endswith(".BCU")]:
+        takes = sut.trace.select(kind="cmd.in", source=device, since=since)
+        assert takes, f"{device} received nothing"
+        odd = [ev for ev in takes if ev["brake"] != 7]
+        assert not odd, f"the ATP commands {brake}, and {device} received other brake steps: {analysis.describe(odd)}"
 
 
 # -- neutral section, linking (ATP-11, ATP-12) ------------------------------------------------------------------

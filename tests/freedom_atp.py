@@ -275,5 +275,28 @@ class BrakesWhileIsolatedVdx(ReferenceAtp):
         self.vdx = _IsolationReadingVdx(self.kernel, self._cfg.vdx, self._emit, on_loop=self._brake_to_train)
 
 
+# -- product-choice (atp, atp-crh2): which brake holds the train after a failed DEF self-test -------------------
+class _ServiceBrakeOnDefFault(OnboardAtp):
+    BULK_READABLE = True         # no state of its own (sut/reference/bulk.py)
+
+    def _set_brake(self, brake: str) -> None:
+        # Before its DEF self-test is done, the only emergency this ATP commands is a failed step's.
+        super()._set_brake("max service" if brake == "emergency" and not self.s.ready else brake)
+
+
+class DefFaultServiceBrakeAtp(ReferenceAtp):
+    """Freedom (a product's choice, atp and atp-crh2): after a failed DEF self-test this 200C ATP holds the train
+    with its maximum service brake, not the emergency brake (docs/decisions.md "A failed DEF self-test": which
+    brake is the product's). F-ATP-10 and F-ATP-16 accept it: on the fitted train every BCU then receives full
+    service, and the train's emergency brake stays released."""
+    FREEDOM_CLASS = "product-choice"
+    BULK_READABLE = True         # no state of its own (sut/reference/bulk.py)
+    EXERCISED_BY = "F-ATP-16"
+
+    def _build(self) -> None:
+        super()._build()
+        self.atp.__class__ = _ServiceBrakeOnDefFault
+
+
 FREEDOM: list[type] = [TaskTickAtp, LateFsVdx, SupplyToleranceVdx, CfskRecordsInChineseAtp, ReversedInstantAtp,
-                       ReversedInstantVdx, ModeAnnouncingDmiAtp, BrakesWhileIsolatedVdx]
+                       ReversedInstantVdx, ModeAnnouncingDmiAtp, BrakesWhileIsolatedVdx, DefFaultServiceBrakeAtp]
