@@ -1,7 +1,6 @@
 """The token protocol (PRO-03..05), status and block data (PRO-02, PRO-06), the ring itself (NET-03..09)."""
 from __future__ import annotations
 
-
 from pytest_bdd import parsers, then
 
 from sut.codecs import arcnet
