@@ -110,3 +110,16 @@ def test_a_mutant_that_crashes_where_the_reference_does_not_is_overturned() -> N
     record = check_mark(crash, budget=TINY, exact=False, shrink_s=5)
     assert record["verdict"] == "overturned", record
     assert record["difference"]["observable"] == "an error raised where the reference raises none", record
+
+
+def test_a_board_failed_before_power_up_and_repaired_reaches_what_no_later_fault_does() -> None:
+    # Seed 12: the crh2 monitor's default for a node heard but with none of its status fields held (its feeding
+    # system's CPU3 down when they came) was confirmed by every sequence that starts powered up; the "cold"
+    # draw fails boards before power-up and repairs them after, and finds the mutant's crash.
+    defaults = Mark("sut/reference/crh2/ccu.py", 'if not fields.get("ports", 3) & bit:',
+                    'if not fields.get("ports", None) & bit:', "a test's own")
+    record = check_mark(defaults, budget={"crh2": [({}, "cold", 10)]}, exact=False, shrink_s=5)
+    assert record["verdict"] == "overturned", record
+    seen = record["difference"]
+    assert seen["sequence"][0].startswith("fail(") and "power_on()" in seen["sequence"], seen
+    assert any(step.startswith("repair(") for step in seen["sequence"]), seen

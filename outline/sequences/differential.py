@@ -32,21 +32,36 @@ class Difference:
     a: Any
     b: Any
 
+    def calls(self) -> list[str]:
+        """The sequence as driver calls, power-up included where it comes (first, unless the sequence has it)."""
+        cold = any(a.method == "power_on" for a in self.sequence)
+        return ([] if cold else ["power_on()"]) + [str(a) for a in self.sequence]
+
     def __str__(self) -> str:
-        lines = ["power_on()"] + [str(a) for a in self.sequence]
+        lines = self.calls()
         shown = "\n".join(f"  {'>' if i == self.step else ' '} {line}" for i, line in enumerate(lines))
         return (f"the SUTs differ after {self.step} stimuli, in {self.what}:\n  A: {self.a!r}\n  B: {self.b!r}\n"
                 f"shortest sequence found (> marks the last stimulus before the difference):\n{shown}")
 
 
 def _looks(make: Factory, profile: str, sequence: list[Action], shared: dict[str, Any]):
+    """What the SUT shows at power-up and after each stimulus; a sequence that names power_on() has its
+    stimuli before it applied to the SUT unpowered, each seen only as done or refused."""
     driver = make()
+    cold = next((i for i, a in enumerate(sequence) if a.method == "power_on"), None)
+    for action in sequence[:cold] if cold is not None else ():
+        try:
+            action.apply(driver)
+        except Exception as error:      # noqa: BLE001  (a refusal is an observable like any other)
+            yield {"refused": type(error).__name__}
+            continue
+        yield {"before power-up": str(action)}
     driver.power_on()
     # The second SUT is looked at under the first one's names: which names a SUT lists is no behaviour.
     observer = Observer(profile, driver, shared.get("vehicle"))
     shared.setdefault("vehicle", observer.vehicle)
     yield observer.look()
-    for action in sequence:
+    for action in sequence[cold + 1:] if cold is not None else sequence:
         try:
             action.apply(driver)
         except Exception as error:      # noqa: BLE001  (a refusal is an observable like any other)

@@ -125,3 +125,19 @@ def actions(profile: str, driver: TrainDriver) -> st.SearchStrategy[Action]:
     time_passes = st.sampled_from(domains.ADVANCES_US).map(lambda us: Action("advance", (us,)))
     picks = [time_passes] + [st.one_of(family) for family in families.values() if family]
     return st.sampled_from(picks).flatmap(lambda family: family)
+
+
+def failed_at_power_up(profile: str, driver: TrainDriver) -> st.SearchStrategy[list[Action]]:
+    """Boards failed before power-up (one or two, the CPU3 of a node as likely as all its other boards
+    together: a node silent from the start), for a SUT that names its ring nodes' boards; [] otherwise. A
+    board dead at power-on never had a state to lose, which no fault after power-up reaches."""
+    contract = load_contract(profile)
+    if "fail" not in contract.methods:
+        return st.just([])
+    nodes = _names(driver, "ring_nodes")
+    boards = [f"{n}.{b}" for n in nodes for b in _names(driver, "boards", n)]
+    if not boards:
+        return st.just([])
+    cpu3 = [b for b in boards if b.endswith(".CPU3")]
+    board = st.one_of(st.sampled_from(cpu3), st.sampled_from(boards)) if cpu3 else st.sampled_from(boards)
+    return st.lists(board, min_size=1, max_size=2, unique=True).map(lambda bs: [Action("fail", (b,)) for b in bs])
