@@ -67,6 +67,16 @@ def expect_taken(sut: TrainDriver, devices: list[str], t_action: int, window: in
     budgets.within(sut, t_action, window, check)
 
 
+def expect_brake_step(sut: TrainDriver, since: int, step: int, why: str = "") -> None:
+    """From `since` on, every BCU took commands, and none but brake step `step`; `why` opens the failure (who
+    asked for that step)."""
+    for device in [d for d in command_devices(sut) if d.endswith(".BCU")]:
+        takes = sut.trace.select(kind="cmd.in", source=device, since=since)
+        assert takes, f"{device} received nothing"
+        odd = [ev for ev in takes if ev["brake"] != step]
+        assert not odd, f"{why}{device} received other brake steps: {describe(odd)}"
+
+
 def expect_period(times: Iterable[int], lo: float, hi: float, what: str, at_least: int = 3) -> None:
     """`what` happened at least `at_least` times and every gap between two lies in lo..hi ms."""
     times = list(times)

@@ -502,12 +502,8 @@ def _(sut: TrainDriver, declaration: ProfileDeclaration, t_action: int, after: f
         assert sut.output("emergency brake") == "applied", \
             f"the ATP brakes in emergency, and the train's emergency brake is {sut.output('emergency brake')}"
         return
-    since = t_action + budgets.window_us(declaration, after)
-    for device in [d for d in analysis.command_devices(sut) if d.endswith(".BCU")]:
-        takes = sut.trace.select(kind="cmd.in", source=device, since=since)
-        assert takes, f"{device} received nothing"
-        odd = [ev for ev in takes if ev["brake"] != 7]
-        assert not odd, f"the ATP commands {brake}, and {device} received other brake steps: {analysis.describe(odd)}"
+    analysis.expect_brake_step(sut, t_action + budgets.window_us(declaration, after), 7,
+                               why=f"the ATP commands {brake}, and ")
 
 
 # -- neutral section, linking (ATP-11, ATP-12) ------------------------------------------------------------------

@@ -345,6 +345,9 @@ def sut(sut_class: type[TrainDriver], request: pytest.FixtureRequest):
         if trace_dir:
             _write_trace(Path(trace_dir), request.node.nodeid, driver)
     finally:
+        # An item lives as long as the session: its stash must not keep this scenario's train (a ten-minute
+        # scenario's trace is ~0.7 GB).
+        del request.node.stash[_GUARD]
         driver.shutdown()
 
 
