@@ -353,7 +353,8 @@ def _(sut: TrainDriver, declaration: ProfileDeclaration, t_action: int, after: f
 def _cfsk_record(sut: TrainDriver, declaration: ProfileDeclaration, fields: str, since_ms: float | None = None) -> None:
     """ATP-05 lists the fields of a CFSK record, not their wording: the documented shape (contract `records`: a
     stamp, then one whitespace-separated word per field) with each field worded as the SUT declares it (form
-    texts `CFSK`, `code=<code>`, ...), in any order; with `since_ms`, among the records stamped from then on."""
+    texts `CFSK`, `code=<code>`, ...), in any order, all the fields asked in one record; with `since_ms`, among the
+    records stamped from then on."""
     marker = declaration.text("CFSK")
     records = [r for r in sut.records("ATP") if marker in r]
     assert records, f"no CFSK record (a line with {marker!r}): {sut.records('ATP')}"
@@ -367,11 +368,16 @@ def _cfsk_record(sut: TrainDriver, declaration: ProfileDeclaration, fields: str,
         earlier = records
         records = [r for r in records if float(r.split(" ", 1)[0]) >= since_ms]
         assert records, f"no CFSK record stamped from {since_ms} ms on: {earlier}"
+    wanted = {}
     for field in re.split(r",\s*|\s+and\s+", fields):
         key, _, value = field.strip().partition(" ")
-        word = _record_word(declaration, key, value.replace(" ", ""))
-        # The field itself, one word of the record, not the value anywhere in it.
-        assert any(word in r.split() for r in records), f"no CFSK record with {field!r} (declared as {word!r}): {records}"
+        wanted[field.strip()] = _record_word(declaration, key, value.replace(" ", ""))
+    # Every field in one record (ATP-05: a record holds them together), each a word of it, not the value anywhere
+    # in it.
+    if not any(all(word in r.split() for word in wanted.values()) for r in records):
+        best = max(records, key=lambda r: sum(word in r.split() for word in wanted.values()))
+        missing = [f"{field!r} (declared as {word!r})" for field, word in wanted.items() if word not in best.split()]
+        raise AssertionError(f"no CFSK record with {fields!r}; the closest lacks {', '.join(missing)}: {records}")
 
 
 # The CFSK record's fields (ATP-05) by the feature's key: the form's text identifier, and the unit the feature

@@ -180,6 +180,7 @@ def test_ramp_needs_a_positive_rate_and_a_number(train) -> None:
     ("atp", lambda t: t.configure(sets=2), OutOfRange, ["train sets 2"]),
     ("atp", lambda t: t.set_input("carrier", 1800), OutOfRange, ["carrier 1800", "1700, 2000, 2300, 2600"]),
     ("atp", lambda t: t.set_input("speed", -5), OutOfRange, ["speed -5"]),
+    ("atp", lambda t: t.set_input("speed", 350.5), OutOfRange, ["speed 350.5", "0..350"]),
     ("atp", lambda t: t.fail("CRN"), UnknownName, ["board", "CRN", "CFSK"]),
     ("atp", lambda t: t.monitor_order(1, "carrier set", "left"), OutOfRange, ["carrier set 'left'", "down or up"]),
     ("atp", lambda t: t.records("CCU"), UnknownName, ["recording unit", "ATP"]),

@@ -1103,6 +1103,38 @@ class CfskFaultsRecordedOnceAWhile(ReferenceAtp):
 FAULTY += [(CfskFaultsRecordedOnceAWhile, "ATP-05", "F-ATP-15")]
 
 
+class _RecordsTheLastCarrier(OnboardAtp):
+    """The ATP of FaultRecordNamesTheLastCarrier."""
+
+    def fail_cfsk(self, failed: bool) -> None:
+        self.last_carrier = self.cfsk.confirmed
+        super().fail_cfsk(failed)
+
+    def _record(self) -> None:
+        c = self.cfsk
+        if c.failed and c.confirmed is None and getattr(self, "last_carrier", None):
+            c.confirmed = self.last_carrier           # the carrier heard before the fault, as if still decoded
+            try:
+                super()._record()
+            finally:
+                c.confirmed = None
+            return
+        super()._record()
+
+
+class FaultRecordNamesTheLastCarrier(ReferenceAtp):
+    """ATP-05 with ATP-01: the record of a CFSK fault names the carrier confirmed before it failed, as if the
+    failed board still decoded it (make mutate seed 13's survivor of atp/onboard.py:199 named a carrier of 1 Hz).
+    Rejected by F-ATP-07's "A failed CFSK's record names no carrier" (a project decision: docs/decisions.md)."""
+
+    def _build(self) -> None:
+        super()._build()
+        self.atp = _RecordsTheLastCarrier(self.kernel, self._cfg.atp, self._emit, on_brake=self._brake_to_train)
+
+
+FAULTY += [(FaultRecordNamesTheLastCarrier, "ATP-05", "F-ATP-07")]
+
+
 class AtpOnABrakeForceBlindTrain(ReferenceAtp):
     """ILK-03 in the fitted train (atp-crh2): the ATP is the reference's, the CRH2 set it brakes is
     BrakeForceBlindToAtp, whose supervision ignores the ATP's maximum service brake. Rejected by F-ATP-13's
