@@ -71,10 +71,21 @@ def test_a_mark_is_keyed_by_its_text_and_a_record_by_the_budget(monkeypatch: pyt
     mark = Mark("sut/reference/bulk.py", "a = 1", "a = 2", "why")
     assert mark.key == Mark("sut/reference/bulk.py", "a = 1", "a = 2", "another wording").key
     assert mark.key != Mark("sut/reference/bulk.py", "a = 1", "a = 3", "why").key
-    report = {"marks": {mark.key: {"verdict": "confirmed", "budget": equivalence.budget_id()}}}
+    report = {"marks": {mark.key: {"verdict": "confirmed", "budget": equivalence.mark_budget(mark)}}}
     assert confirmed(report, mark)
     monkeypatch.setitem(equivalence.BUDGET, "vdx", [({}, "paced", 1)])
     assert not confirmed(report, mark)                   # checked in another budget: not evidence for this one
+
+
+def test_a_budget_change_to_one_profile_checks_again_only_the_marks_that_profile_runs(
+        monkeypatch: pytest.MonkeyPatch) -> None:
+    metro, atp, shared = (Mark(path, "a = 1", "a = 2", "why") for path in
+                          ("sut/reference/metro/tcds.py", "sut/reference/atp/onboard.py", "sut/reference/kernel.py"))
+    before = {m.path: equivalence.mark_budget(m) for m in (metro, atp, shared)}
+    monkeypatch.setitem(equivalence.BUDGET, "metro-tcn", [({}, "paced", 1)])
+    after = {m.path: equivalence.mark_budget(m) for m in (metro, atp, shared)}
+    assert after[atp.path] == before[atp.path]            # the ATP's marks keep their evidence
+    assert after[metro.path] != before[metro.path] and after[shared.path] != before[shared.path]
 
 
 def test_overturned_marks_move_out_of_the_marks_and_marks_naming_no_mutant_go(tmp_path: Path) -> None:

@@ -43,7 +43,7 @@ import sys
 import time
 from dataclasses import dataclass, field
 from pathlib import Path
-from typing import Any, Callable, Iterator
+from typing import Any, Callable, Iterable, Iterator
 
 ROOT = Path(__file__).resolve().parents[2]
 EQUIVALENTS = ROOT / "sut" / "reference" / "EQUIVALENT_MUTANTS.txt"
@@ -85,10 +85,17 @@ BUDGET: dict[str, list[tuple[dict[str, int], str, int]]] = {
 SHARED_PROFILES = ("crh2", "metro-tcn", "atp", "vdx")
 
 
-def budget_id() -> str:
-    """What a record was checked in: the budget, the seed and the sequence length. A record of another is
-    not evidence for this one."""
-    return hashlib.sha256(json.dumps([BUDGET, ACTIONS, SEED], sort_keys=True).encode()).hexdigest()[:12]
+def budget_id(profiles: Iterable[str] | None = None) -> str:
+    """What a record was checked in: the budget of the profiles given (None: all of it, for the report's heading
+    and the rule samples), the seed and the sequence length. A record of another is not evidence for this one."""
+    budget = BUDGET if profiles is None else {p: BUDGET[p] for p in sorted(set(profiles))}
+    return hashlib.sha256(json.dumps([budget, ACTIONS, SEED], sort_keys=True).encode()).hexdigest()[:12]
+
+
+def mark_budget(mark: "Mark") -> str:
+    """The budget a mark is checked in: that of the profiles its file runs in, so that a change to one
+    profile's budget checks again only the marks that profile runs."""
+    return budget_id(profiles_of(mark.path))
 
 
 def profiles_of(path: str) -> tuple[str, ...]:
@@ -492,7 +499,7 @@ def check_mark(mark: Mark, *, budget: dict | None = None, exact: bool | None = N
     overturned (the first that does, and how), or that it names no mutant."""
     started = time.monotonic()
     record: dict[str, Any] = {"where": mark.where, "before": mark.before, "after": mark.after,
-                              "reason": mark.reason, "budget": budget_id() if budget is None else "custom",
+                              "reason": mark.reason, "budget": mark_budget(mark) if budget is None else "custom",
                               "checked": datetime.date.today().isoformat()}
     sites = sites_of(mark, root, exact)
     record["mutants"] = [{"line": s.line, "function": s.function, **({"name": s.name} if s.name else {})}
@@ -513,7 +520,7 @@ def check_mark(mark: Mark, *, budget: dict | None = None, exact: bool | None = N
 def confirmed(report: dict[str, Any], mark: Mark) -> bool:
     """Whether the report holds the evidence for this mark, as it reads now, in the current budget."""
     record = report.get("marks", {}).get(mark.key)
-    return bool(record) and record.get("verdict") == "confirmed" and record.get("budget") == budget_id()
+    return bool(record) and record.get("verdict") == "confirmed" and record.get("budget") == mark_budget(mark)
 
 
 def load_report(path: Path | None = None) -> dict[str, Any]:
@@ -530,7 +537,7 @@ def _mark_job(mark: Mark) -> tuple[str, dict[str, Any]]:
         return mark.key, check_mark(mark)
     except Exception as error:                  # noqa: BLE001  (one mark's trouble must not end the sweep)
         return mark.key, {"where": mark.where, "before": mark.before, "after": mark.after, "reason": mark.reason,
-                          "budget": budget_id(), "verdict": "not checked", "error": _short(error)}
+                          "budget": mark_budget(mark), "verdict": "not checked", "error": _short(error)}
 
 
 # -- the marks made honest ---------------------------------------------------------------------------------
@@ -638,7 +645,7 @@ def main(argv: list[str] | None = None) -> int:
     report = load_report(args.out)
     report.setdefault("marks", {})
     todo = [m for m in marks if all(text in m.line() for text in args.mark)
-            and (args.all or args.mark or report["marks"].get(m.key, {}).get("budget") != budget_id()
+            and (args.all or args.mark or report["marks"].get(m.key, {}).get("budget") != mark_budget(m)
                  or report["marks"][m.key].get("verdict") not in VERDICTS)]
     print(f"equivalence: {len(todo)} of {len(marks)} marks to check (budget {budget_id()}, {args.jobs} jobs)",
           flush=True)
