@@ -181,6 +181,13 @@ def test_ramp_needs_a_positive_rate_and_a_number(train) -> None:
     ("atp", lambda t: t.set_input("carrier", 1800), OutOfRange, ["carrier 1800", "1700, 2000, 2300, 2600"]),
     ("atp", lambda t: t.set_input("speed", -5), OutOfRange, ["speed -5"]),
     ("atp", lambda t: t.set_input("speed", 350.5), OutOfRange, ["speed 350.5", "0..350"]),
+    ("atp", lambda t: t.set_input("speed", -0.5), OutOfRange, ["speed -0.5", "0..350"]),
+    ("atp", lambda t: t.set_input("amplitude", 10_000.5), OutOfRange, ["amplitude 10000.5", "0..10000"]),
+    ("atp", lambda t: t.set_input("amplitude", -0.5), OutOfRange, ["amplitude -0.5", "0..10000"]),
+    ("atp", lambda t: t.set_input("position", 1_000_000.5), OutOfRange, ["position 1000000.5", "..1e+06"]),
+    ("atp", lambda t: t.set_input("position", -1_000_000.5), OutOfRange, ["position -1000000.5", "-1e+06.."]),
+    ("atp", lambda t: t.set_supply_voltage("VDX", 200.5), OutOfRange, ["supply voltage 200.5", "0-200 V"]),
+    ("atp", lambda t: t.set_supply_voltage("VDX", -0.5), OutOfRange, ["supply voltage -0.5", "0-200 V"]),
     ("atp", lambda t: t.fail("CRN"), UnknownName, ["board", "CRN", "CFSK"]),
     ("atp", lambda t: t.monitor_order(1, "carrier set", "left"), OutOfRange, ["carrier set 'left'", "down or up"]),
     ("atp", lambda t: t.records("CCU"), UnknownName, ["recording unit", "ATP"]),
@@ -202,6 +209,23 @@ def test_profile_bad_input_names_value_and_what_is_allowed(profile, call, error,
         call(driver)
     for word in words:
         assert word in str(err.value)
+
+
+@pytest.mark.parametrize("name, value", [("speed", 0), ("speed", 350), ("amplitude", 0), ("amplitude", 10_000),
+                                         ("position", -1_000_000), ("position", 1_000_000), ("VDX supply", 0),
+                                         ("VDX supply", 200)])
+def test_the_atp_rig_takes_the_edges_of_its_ranges(name: str, value: float) -> None:
+    """The edges the refusals above name are inside: each range is what its error says, not narrower."""
+    driver = open_backend("reference", "atp")
+    driver.power_on()
+    if name == "VDX supply":
+        driver.set_supply_voltage("VDX", value)
+        taken = driver.trace.last(kind="env.supply", source="VDX")
+        assert taken is not None and taken["volts"] == value
+    else:
+        driver.set_input(name, value)
+        taken = driver.trace.last(kind="in.set", name=name)
+        assert taken is not None and taken["value"] == value
 
 
 def test_the_vdx_firmware_is_chosen_before_power_up() -> None:
