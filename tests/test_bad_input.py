@@ -161,6 +161,9 @@ def test_ramp_needs_a_positive_rate_and_a_number(train) -> None:
     ("metro-tcn", lambda t: t.set_input("car1.IO1.AI4", 1), OutOfRange, ["AI4", "DI01-DI28 or AI1-AI3"]),
     ("metro-tcn", lambda t: t.set_input("car2.IO1.AI1", 1), UnknownName, ["vehicle input", "car2.IO1.AI1"]),
     ("metro-tcn", lambda t: t.set_traction(1, 101), OutOfRange, ["traction demand 101", "0-100"]),
+    ("metro-tcn", lambda t: t.set_traction(1, -1), OutOfRange, ["traction demand -1", "0-100"]),
+    ("metro-tcn", lambda t: t.set_input("speed", 120.5), OutOfRange, ["speed 120.5", "0-120 km/h"]),
+    ("metro-tcn", lambda t: t.set_input("speed", -0.5), OutOfRange, ["speed -0.5", "0-120 km/h"]),
     ("metro-tcn", lambda t: t.insert_key(2), OutOfRange, ["cab 2", "1 or 6"]),
     ("metro-tcn", lambda t: t.cut_line("unit3.MVB", "A"), UnknownName, ["bus", "unit3.MVB", "unit2.MVB"]),
     ("metro-tcn", lambda t: t.cut_line("WTB", "C"), OutOfRange, ["line of WTB 'C'", "A or B"]),
@@ -226,6 +229,15 @@ def test_the_atp_rig_takes_the_edges_of_its_ranges(name: str, value: float) -> N
         driver.set_input(name, value)
         taken = driver.trace.last(kind="in.set", name=name)
         assert taken is not None and taken["value"] == value
+
+
+@pytest.mark.parametrize("value", [0, 120])
+def test_the_metro_takes_the_edges_of_its_speed_range(value: float) -> None:
+    driver = open_backend("reference", "metro-tcn")
+    driver.power_on()
+    driver.set_input("speed", value)
+    taken = driver.trace.last(kind="in.set", name="speed")
+    assert taken is not None and taken["value"] == value
 
 
 def test_the_vdx_firmware_is_chosen_before_power_up() -> None:
