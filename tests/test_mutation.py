@@ -102,9 +102,9 @@ def _evidence(tmp_path: Path, monkeypatch: pytest.MonkeyPatch, *marks: tuple[str
     """reports/equivalence.json, as if the checker had confirmed these marks in the current budget."""
     from outline.sequences import equivalence
     report = tmp_path / "equivalence.json"
-    report.write_text(json.dumps({"marks": {equivalence.Mark(*m, "").key: {
-        "verdict": "confirmed", "budget": equivalence.mark_budget(equivalence.Mark(*m, ""))} for m in marks}}),
-        encoding="utf-8")
+    confirmed = [equivalence.Mark(*m, "") for m in marks]
+    report.write_text(json.dumps({"marks": {mark.key: {"verdict": "confirmed", "budget": equivalence.mark_budget(mark)}
+                                            for mark in confirmed}}), encoding="utf-8")
     monkeypatch.setattr(equivalence, "REPORT", report)
 
 

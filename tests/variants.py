@@ -1106,13 +1106,17 @@ FAULTY += [(CfskFaultsRecordedOnceAWhile, "ATP-05", "F-ATP-15")]
 class _RecordsTheLastCarrier(OnboardAtp):
     """The ATP of FaultRecordNamesTheLastCarrier."""
 
+    def __init__(self, *args, **kwargs) -> None:
+        super().__init__(*args, **kwargs)
+        self.last_carrier: tuple[int, str] | None = None
+
     def fail_cfsk(self, failed: bool) -> None:
         self.last_carrier = self.cfsk.confirmed
         super().fail_cfsk(failed)
 
     def _record(self) -> None:
         c = self.cfsk
-        if c.failed and c.confirmed is None and getattr(self, "last_carrier", None):
+        if c.failed and c.confirmed is None and self.last_carrier:
             c.confirmed = self.last_carrier           # the carrier heard before the fault, as if still decoded
             try:
                 super()._record()
