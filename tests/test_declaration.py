@@ -170,11 +170,14 @@ def test_the_reference_declares_every_profile_it_implements(cls: type) -> None:
 @pytest.mark.parametrize("cls", [c for c in [ReferenceAtp, *IN_BAND, *FREEDOM] if issubclass(c, ReferenceAtp)],
                          ids=lambda c: c.__name__)
 def test_an_atp_declares_the_parameters_it_has(cls: type) -> None:
-    """The declaration is a claim: the ATP's own figures (rated_limits) must be what it declares, or the
-    features would compute their edges for another train."""
+    """The declaration is a claim: the ATP's own figures (its configuration: the atp contract asks no SUT to
+    repeat them, so this reads the reference's own) must be what it declares, or the features would compute
+    their edges for another train."""
     declared = of_backend(cls).of("atp")
-    actual = cls().rated_limits()
-    for name in ("d_sen_m", "position_uncertainty_m", "decode_delay_ms", "cfsk_period_ms"):
+    atp = cls()._cfg.atp
+    actual = {"d_sen_m": atp.d_sen_m, "position_uncertainty_m": atp.position_uncertainty_m,
+              "decode_delay_ms": atp.decode_delay_us / 1000, "cfsk_period_ms": atp.cfsk_period_us / 1000}
+    for name in actual:
         assert declared.parameter(name) == actual[name], f"{cls.__name__} declares {name}={declared.parameter(name)}, " \
                                                           f"has {actual[name]}"
 

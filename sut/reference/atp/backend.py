@@ -8,8 +8,8 @@ emergency-brake interface of the CTCS3-300T (VDX-01..06, `vdx.py`). Names:
   `pass_balise`; boards `CFSK`, `MTORE` (`fail`/`repair`);
 - ATP outputs: `ATP mode` (SB FS PS CS SL AM), `ATP brake` (none, max service, emergency), `ATO allowed`,
   `door enable`, `PSD permission` (granted/withheld), `neutral section` (passing/none), `CFSK carrier set`;
-  `records("ATP")` the CFSK records; `monitor(1)` the DMI messages; `rated_limits()` the declared D_Sen,
-  decode delay, position uncertainty and CFSK comparison period;
+  `records("ATP")` the CFSK records; `monitor(1)` the DMI messages (no `rated_limits()`: the ATP's figures
+  are its declaration's, sut/reference/declaration.yaml, which the atp contract does not ask it to repeat);
 - VDX inputs: `ATP emergency brake` (the ATP's brake command to the VDX, bool), `ATP isolation switch`
   (bool), `VDX firmware` (`old` or `new`, before power-up);
 - supplies: `VDX` (its 110 V input, which also feeds the FS output), `train 110V`;
@@ -303,12 +303,6 @@ class ReferenceAtp(PickledState, TrainDriver):
         return list(self.atp.records)
 
     # -- supply ----------------------------------------------------------------------------------
-    def rated_limits(self) -> dict[str, Any]:
-        v, a = self._cfg.vdx, self._cfg.atp
-        return {"supply_v": (v.supply_lo * v.nominal_v, v.supply_hi * v.nominal_v), "nominal_v": v.nominal_v,
-                "d_sen_m": a.d_sen_m, "position_uncertainty_m": a.position_uncertainty_m,
-                "decode_delay_ms": a.decode_delay_us / 1000, "cfsk_period_ms": a.cfsk_period_us / 1000}
-
     def set_supply_voltage(self, supply: str, volts: float) -> None:
         if supply not in SUPPLIES:
             raise UnknownName("supply", supply, SUPPLIES)
