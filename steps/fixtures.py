@@ -322,13 +322,18 @@ def pytest_bdd_before_step(request, feature, scenario, step, step_func) -> None:
         recorder.step = step_index.pattern_of(step_func, step.type)
 
 
+def open_driver(sut_class: type[TrainDriver], profile: str | None, config: pytest.Config) -> TrainDriver:
+    """A fresh SUT of the profile: behind the run's snapshot journal where the backend is deterministic (a
+    scenario's train, and each random sequence's: they all start with the same power-up)."""
+    if config.getoption("--no-snapshots") or not sut_class.DETERMINISTIC:
+        return sut_class.open(profile)
+    return SnapshotDriver(sut_class, profile, config.stash[_SNAPSHOTS])
+
+
 @pytest.fixture
 def sut(sut_class: type[TrainDriver], request: pytest.FixtureRequest):
     profile = _profile_for(request.node, sut_class)
-    if request.config.getoption("--no-snapshots") or not sut_class.DETERMINISTIC:
-        driver = sut_class.open(profile)
-    else:
-        driver = SnapshotDriver(sut_class, profile, request.config.stash[_SNAPSHOTS])
+    driver = open_driver(sut_class, profile, request.config)
     recorder = request.config.stash.get(_RECORDER, None)
     if recorder is not None:
         recorder.item = ",".join(str(a) for m in request.node.iter_markers("item") for a in m.args) or "?"

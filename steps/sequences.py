@@ -16,7 +16,7 @@ from outline.sequences.judge import search
 from sut.contract import load as load_contract
 from sut.contract.guard import ContractDriver
 from sut.driver import TrainDriver
-from steps.fixtures import _RECORDER, _declared, _profile_for
+from steps.fixtures import _RECORDER, _declared, _profile_for, open_driver
 
 
 def pytest_addoption(parser: pytest.Parser) -> None:
@@ -51,7 +51,7 @@ def _(sut_class: type[TrainDriver], request: pytest.FixtureRequest, sequence_bud
     examples, seed = sequence_budget
     # The SUT's declaration, where it has one: the texts and parameters an invariant reads (None otherwise).
     _, declaration = _declared(request.node, sut_class, request.config)
-    violation = search(lambda: sut_class.open(profile), invariant, examples=examples, seed=seed,
+    violation = search(lambda: open_driver(sut_class, profile, request.config), invariant, examples=examples, seed=seed,
                        guard=lambda driver: ContractDriver(driver, profile, contract, recorder),
                        declaration=declaration)
     if violation is not None:

@@ -15,6 +15,7 @@ from outline.plugin.stepdefs import definitions_in_modules, step_problem
 from steps import STEP_MODULES
 from sut.backends import resolve
 from sut.contract import declaration as declarations
+from sut.snapshot import SnapshotCache, SnapshotDriver
 from tests.variants import CarrierAfterOneComparison, IsolationIgnored, SeparationWithoutRapidBrake
 
 DEFINITIONS = definitions_in_modules(STEP_MODULES)
@@ -95,3 +96,17 @@ def test_every_invariant_names_requirements_a_feature_verifies() -> None:
     text = "".join(p.read_text(encoding="utf-8") for p in Path("features").rglob("*.feature"))
     for invariant in INVARIANTS:
         assert f"after every stimulus of every sequence, {invariant.name}\n" in text, invariant
+
+
+def test_sequences_behind_the_snapshot_journal_find_what_fresh_trains_find() -> None:
+    """The scenarios run each sequence behind the run's snapshot journal (steps/fixtures.open_driver): every
+    sequence starts with the same power-up, restored instead of simulated. The same seed must give the same
+    verdict and the same shrunk sequence as on fresh trains."""
+    cache = SnapshotCache()
+    invariant = _invariant("ILK-01")
+    fresh = search(lambda: SeparationWithoutRapidBrake.open("crh2"), invariant, examples=25, seed=0)
+    journaled = search(lambda: SnapshotDriver(SeparationWithoutRapidBrake, "crh2", cache), invariant,
+                       examples=25, seed=0)
+    assert fresh is not None and journaled is not None
+    assert journaled.gherkin() == fresh.gherkin()
+    assert cache.restored > 0, cache.summary()
