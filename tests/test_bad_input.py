@@ -202,6 +202,7 @@ def test_ramp_needs_a_positive_rate_and_a_number(train) -> None:
     ("metro-tcn", lambda t: t.set_input("emergency operation", 1), OutOfRange,
      ["emergency operation switch 1", "True"]),
     (None, lambda t: t.set_supply_voltage("train 110V", 500), OutOfRange, ["supply voltage 500", "0 .. 220 V"]),
+    (None, lambda t: t.set_temperature("train", 125.5), OutOfRange, ["temperature 125.5", "-60 .. 125 degC"]),
     (None, lambda t: t.vibrate("car3.LCU", 0, 5, 10_000), OutOfRange, ["contact interruption 0", ">= 1"]),
     (None, lambda t: t.vibrate("car3.LCU", 2_000, 5, 2_000), OutOfRange,
      ["interruption period 2000", ">= 2001"]),
