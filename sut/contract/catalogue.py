@@ -78,13 +78,11 @@ class EventKind:
         # contract's word, not the reference's spelling of it).
         self.valued = {n: tuple(spec["values"]) for n, spec in self.fields.items() if spec.get("values")}
         # ... and a field of a declared type holds a value of that type (a number may be an integer), or null
-        # where its entry says `nullable: true` (a path-1 field of a path-2 command).
-        self.typed = {n: TYPES[spec["type"]] for n, spec in self.fields.items() if spec.get("type") in TYPES}
-        self.nullable = frozenset(n for n, spec in self.fields.items() if spec.get("nullable"))
+        # where its entry says `nullable: true` (a path-1 field of a path-2 command): per typed field (name,
+        # plain types, full test, None allowed), one tuple walked per event.
+        self.checks = tuple((n, PLAIN_TYPES[spec["type"]], TYPES[spec["type"]], bool(spec.get("nullable")))
+                            for n, spec in self.fields.items() if spec.get("type") in TYPES)
         self.required_set = frozenset(self.required)
-        # (name, plain types, full test, None allowed) per typed field: one tuple walked per event.
-        self.checks = tuple((n, PLAIN_TYPES[self.fields[n]["type"]], test, n in self.nullable)
-                            for n, test in self.typed.items())
         # A run hands steps ~1.8 M events from a few hundred sources: a source's verdict is worked out once.
         self._source_ok: dict[str, bool] = {}
 
