@@ -61,3 +61,13 @@ Feature: F-CTL-16 Redundant MVB I/O modules: module 1 while its life signal is s
     When "car1.IO1" fails
     And 300 ms pass
     Then every VVVF applies 0 % traction within 100 ms
+
+  @req:TCN-07 @req:RED-07
+  Scenario: F-CTL-16 A digital input held at 1 on module 2 drives the train once module 1's life signal is 0
+    Given the direction switch of cab 1 is at neutral
+    And a wiring fault holds the forward input of "car1.IO2" at 1
+    And the train has been powered up for 1000 ms
+    Then every VVVF applies 0 % traction
+    When "car1.IO1" fails
+    And 300 ms pass
+    Then every VVVF applies 60 % traction within 100 ms
