@@ -26,6 +26,17 @@ Feature: F-ATP-06 C019: a release just before the FS self-test, by firmware and 
     And C019 comes at 137 V for every offset it comes at 120 V, and for more
     And every FS self-test sampled at 6 V or more raised C019 and none below
 
+  # Near the edge of C019 a release a quarter of a millisecond later moves the sample across 6 V: there a
+  # self-test's verdict tests the threshold itself, not only which side of it the coil's fall lands.
+  @req:VDX-05 @req:VDX-03
+  Scenario: F-ATP-06 Old firmware near the edge of C019: each self-test's verdict follows its own sample against 6 V
+    Given the VDX runs the old firmware
+    And the train has been powered up for 1000 ms
+    And the ATP has released the emergency brake
+    When 11 s pass
+    And the release is swept from 24 to 32 ms in 0.25 ms steps before an FS self-test at 110, 120 and 137 V
+    Then every FS self-test sampled at 6 V or more raised C019 and none below
+
   # The article's window, measured with a sample 1 ms in; it holds its 19.795 ms measurement too (a coil released
   # later is more charged, so C019 at 20 ms means C019 at 19.795 ms).
   @req:VDX-05 @informative
