@@ -80,3 +80,24 @@ def test_of_a_free_text_the_contract_fixes_in_part_only_that_part_is_compared() 
         "line A: master frame check sequence failed at raw[2]: received 0xba, computed 0x71",
         "line A: bad FCS", "line B: bad FCS", "no line named")}
     assert list(seen.values()) == ["line A", "line A", "line B", "no line named"]
+
+
+def test_of_a_number_the_contract_fixes_to_a_resolution_only_whole_steps_of_it_are_compared() -> None:
+    from outline.sequences.observe import Observer
+    observer = Observer("atp", ReferenceAtp.open("atp"))
+    assert "at_m" in observer._listed("carrier.inconsistent")
+    # atp.yaml: the position of a carrier inconsistency is read to the centimetre; a finer stamp is the SUT's
+    at = [observer._compared("carrier.inconsistent", "at_m", m) for m in (1234.5671, 1234.567, 1234.5749, 1235.0)]
+    assert at[0] == at[1] == at[2] != at[3]
+    observer._listed("balise")
+    assert observer._compared("balise", "at_m", 1234.5671) == 1234.5671     # no resolution given: as it is
+
+
+def test_a_resolution_on_a_field_that_is_no_number_is_an_error_naming_the_entry(tmp_path) -> None:
+    from sut.contract import ContractFileError
+    from sut.contract.catalogue import parse
+    bad = tmp_path / "x.yaml"
+    bad.write_text("profile: x\nevents:\n  a.b:\n    fields:\n      f: {type: string, resolution: 0.1}\n",
+                   encoding="utf-8")
+    with pytest.raises(ContractFileError, match=r"x.yaml: events.a.b.fields.f.resolution: a number above 0"):
+        parse(bad)

@@ -3,7 +3,7 @@ every output, reading and lamp the contract names, each cab's monitor, the recor
 counters, rated_limits(), and the trace events of the kinds the contract lists since the last look: their
 time, source and the fields the contract lists for the kind (a field it does not list is the implementer's
 own: no conforming SUT owes it, so two SUTs do not differ by it; of a free text the contract fixes only in part,
-that part). An answer that is an error is seen as its
+that part; of a number the contract fixes to a resolution, the number in steps of it). An answer that is an error is seen as its
 error's class: two SUTs that refuse alike do not differ."""
 from __future__ import annotations
 
@@ -75,6 +75,7 @@ class Observer:
         self.contract_kinds = contract.events
         self.fields: dict[str, frozenset[str] | None] = {}     # by kind seen: the fields compared, None: not listed
         self.fixed: dict[str, dict[str, re.Pattern]] = {}       # by kind seen: the fields fixed only in part
+        self.resolution: dict[str, dict[str, float]] = {}       # by kind seen: the numbers fixed to a step
         self.seen = 0
 
     def _listed(self, kind: str) -> frozenset[str] | None:
@@ -84,11 +85,19 @@ class Observer:
             self.fields[kind] = frozenset(f for e in entries for f in e.fields) if entries else None
             self.fixed[kind] = {f: re.compile(str(spec["fixed"])) for e in entries for f, spec in e.fields.items()
                                 if "fixed" in spec}
+            self.resolution[kind] = {f: float(spec["resolution"]) for e in entries for f, spec in e.fields.items()
+                                     if "resolution" in spec}
         return self.fields[kind]
 
     def _compared(self, kind: str, name: str, value: Any) -> Any:
         """What of a field is compared: where the contract fixes only part of a free text (`fixed`, a regular
-        expression), that part; the rest is the implementation's wording."""
+        expression), that part; the rest is the implementation's wording. Where it fixes a number only to a
+        resolution (`resolution`), the number in whole steps of it: two SUTs that state it to a finer grain do
+        not differ (a value at the middle of a step may still read as a difference: the safe side)."""
+        step = self.resolution[kind].get(name)
+        if step is not None and isinstance(value, (int, float)) and not isinstance(value, bool) \
+                and math.isfinite(value):
+            return round(value / step)
         pattern = self.fixed[kind].get(name)
         found = pattern.match(value) if pattern is not None and isinstance(value, str) else None
         return found.group(0) if found else value

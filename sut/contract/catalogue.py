@@ -238,6 +238,11 @@ def parse(path: Path) -> Contract:
                     re.compile(str(fspec["fixed"]))
                 except re.error as exc:
                     raise _fail(path, f"events.{kind}.fields.{fname}.fixed", f"a regular expression ({exc})") from None
+            if "resolution" in fspec and not (fspec.get("type") == "number"
+                                              and isinstance(fspec["resolution"], (int, float))
+                                              and not isinstance(fspec["resolution"], bool) and fspec["resolution"] > 0):
+                raise _fail(path, f"events.{kind}.fields.{fname}.resolution",
+                            "a number above 0, on a field of type number")
             fields[str(fname)] = fspec
         events[str(kind)] = EventKind(str(kind), str(spec.get("source", "")), str(spec.get("when", "")),
                                       str(spec.get("count", "")), fields, list(spec.get("requirements") or []))
