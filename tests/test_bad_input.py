@@ -106,6 +106,16 @@ def test_composition_is_fixed_once_the_train_exists(train) -> None:
         train.configure(sets=2)
 
 
+def test_configure_without_arguments_keeps_the_interfaces_defaults() -> None:
+    # sut/driver.py: configure(*, sets=1, cars_per_set=8); a backend's own defaults must be the same.
+    for given, cars in (({}, 8), ({"sets": 2}, 16), ({"cars_per_set": 4}, 4)):
+        train = open_backend("reference", "crh2")
+        train.configure(**given)
+        train.power_on()
+        lcus = [n for n in train.ring_nodes() if n.endswith(".LCU")]          # one LCU a car
+        assert len(lcus) == cars, (given, train.ring_nodes())
+
+
 def test_unknown_backend() -> None:
     with pytest.raises(UnknownName, match="no SUT backend named 'rig42'"):
         resolve("rig42")
