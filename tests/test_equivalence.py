@@ -50,7 +50,52 @@ def test_the_checker_overturns_a_changed_threshold_and_confirms_a_change_nothing
     assert seen["profile"] == "vdx" and seen["sequence"][0] == "power_on()"
     assert any("set_supply_voltage('VDX'" in step for step in seen["sequence"]), seen
     unseen = check_mark(UNSEEN, budget=TINY, exact=False)
-    assert unseen["verdict"] == "confirmed" and unseen["sequences"] == 300, unseen
+    assert unseen["verdict"] == "confirmed" and unseen["sequences"] == 300 and unseen["reached"] > 0, unseen
+
+
+def _reach_of(original: str, mutated: str, *calls: str) -> int:
+    """How often the changed statement of `mutated` (against `original`) ran while `calls` were evaluated."""
+    start = next(i for i, (a, b) in enumerate(zip(original, mutated)) if a != b)
+    tail = next(i for i, (a, b) in enumerate(zip(original[::-1], mutated[::-1])) if a != b)
+    site = equivalence.Site("m.py", 0, "f", "", "", original, start, len(original) - tail,
+                            mutated[start:len(mutated) - tail])
+    assert site.source == mutated
+    reach = equivalence.Reach()
+    scope = {equivalence.REACH_NAME: reach}
+    exec(equivalence.instrumented(site.source, "m.py", *equivalence.changed_at(site)), scope)
+    for call in calls:
+        eval(call, scope)
+    return reach.count
+
+
+def test_the_checker_counts_how_often_the_changed_statement_ran() -> None:
+    # A branch the calls never take is not reached, whatever its change; a continuation line counts with its
+    # statement; a default counts when the function is called, not when it is defined.
+    branch = "def f(x):\n    if x:\n        y = {}\n        return y\n    return 0\n"
+    assert _reach_of(branch.format(1), branch.format(2), "f(False)", "f(0)") == 0
+    assert _reach_of(branch.format(1), branch.format(2), "f(True)", "f(False)", "f(3)") == 2
+    call = "def g(a):\n    return max(a,\n               {})\n"
+    assert _reach_of(call.format(1), call.format(2), "g(5)", "g(6)", "g(7)") == 3
+    default = "class C:\n    def h(self, n={}):\n        \"\"\"Its doc.\"\"\"\n        return n\n"
+    assert _reach_of(default.format(1), default.format(2)) == 0
+    assert _reach_of(default.format(1), default.format(2), "C().h()", "C().h(4)", "C.h.__doc__ == 'Its doc.' or 1/0") \
+        == 2
+    handler = "def k(x):\n    try:\n        return 1 / x\n    except ZeroDivisionError:\n        return {}\n"
+    assert _reach_of(handler.format(1), handler.format(2), "k(1)") == 0
+    assert _reach_of(handler.format(1), handler.format(2), "k(0)", "k(0)") == 2
+
+
+def test_an_unreached_mark_is_no_evidence_and_moves_out_with_the_overturned(tmp_path: Path) -> None:
+    marks = tmp_path / "EQUIVALENT_MUTANTS.txt"
+    kept, far = (Mark("sut/reference/bulk.py", f"a = {n}", f"a = {n + 1}", "why") for n in (1, 2))
+    marks.write_text(f"{kept.line()}\n{far.line()}\n", encoding="utf-8")
+    report = {"marks": {kept.key: {"verdict": "confirmed"},
+                        far.key: {"verdict": "unreached", "unreached": {"line": 9, "function": "f"}}}}
+    overturned = tmp_path / "OVERTURNED_MUTANTS.txt"
+    assert equivalence.move_overturned(report, marks, overturned) == (1, 0)
+    assert marks.read_text(encoding="utf-8") == f"{kept.line()}\n"
+    assert "unreached, no sequence ran the changed statement (line 9 of f)" in overturned.read_text(encoding="utf-8")
+    assert not confirmed({"marks": {far.key: {"verdict": "unreached", "budget": equivalence.mark_budget(far)}}}, far)
 
 
 def test_a_mark_is_built_in_every_function_that_says_its_line_or_only_in_the_one_it_names(tmp_path: Path) -> None:

@@ -69,7 +69,10 @@ PROFILES = ("crh2", "metro-tcn", "atp", "vdx", "atp-crh2")
 # 2026-11-26, ~60 CPU-minutes, ~30 min on two free cores (`make equivalence`, JOBS=2).
 ACTIONS = 8
 # A record with another verdict (an error of the checker, a mark not checked) is run again next time.
-VERDICTS = ("confirmed", "overturned", "names no mutant")
+VERDICTS = ("confirmed", "overturned", "unreached", "names no mutant")
+# What the checker's evidence is (part of the budget's identity: a record made under another is checked again):
+# since 2026-11-28 a mark is confirmed only where the stimuli ran its mutated statement at least once.
+EVIDENCE = "reached"
 SHRINK_S = 20.0
 SEED = 0
 BUDGET: dict[str, list[tuple[dict[str, int], str, int]]] = {
@@ -89,7 +92,7 @@ def budget_id(profiles: Iterable[str] | None = None) -> str:
     """What a record was checked in: the budget of the profiles given (None: all of it, for the report's heading
     and the rule samples), the seed and the sequence length. A record of another is not evidence for this one."""
     budget = BUDGET if profiles is None else {p: BUDGET[p] for p in sorted(set(profiles))}
-    return hashlib.sha256(json.dumps([budget, ACTIONS, SEED], sort_keys=True).encode()).hexdigest()[:12]
+    return hashlib.sha256(json.dumps([budget, ACTIONS, SEED, EVIDENCE], sort_keys=True).encode()).hexdigest()[:12]
 
 
 def mark_budget(mark: "Mark") -> str:
@@ -308,11 +311,88 @@ def sites_of(mark: Mark, root: Path = ROOT, exact: bool | None = None) -> list[S
 
 # -- a mutant beside the reference ------------------------------------------------------------------------
 
-class _Changed(importlib.abc.MetaPathFinder, importlib.abc.Loader):
-    """Imports one module of the copy from a changed source."""
+class Reach:
+    """How often the mutated statement ran: a mark is evidence only where the stimuli reached its change
+    (a branch no sequence takes shows no difference whatever it does)."""
 
-    def __init__(self, name: str, path: Path, source: str) -> None:
+    def __init__(self) -> None:
+        self.count = 0
+
+    def __call__(self) -> None:
+        self.count += 1
+
+
+REACH_NAME = "__checker_reached__"      # dunder at both ends: not mangled inside a class body
+
+
+def _span(node: Any) -> tuple[tuple[int, int], tuple[int, int]]:
+    """Where a statement (with its decorators), an except clause or a match case starts and ends."""
+    import ast
+    if isinstance(node, ast.match_case):
+        start, last = node.pattern, node.body[-1]
+    else:
+        start, last = min([node, *getattr(node, "decorator_list", ())], key=lambda n: (n.lineno, n.col_offset)), node
+    return (start.lineno, start.col_offset), (last.end_lineno, last.end_col_offset)
+
+
+def _innermost_statement(tree: Any, line: int, column: int) -> tuple[Any, list] | None:
+    """(statement, the block it is in) of the deepest statement whose span holds (line, column)."""
+    import ast
+    found, owners = None, [tree]
+    while owners:
+        owner, owners = owners[0], []
+        for _name, value in ast.iter_fields(owner):
+            for item in value if isinstance(value, list) else ():
+                if isinstance(item, (ast.stmt, ast.excepthandler, ast.match_case)):
+                    start, end = _span(item)
+                    if start <= (line, column) <= end:
+                        if isinstance(item, ast.stmt):
+                            found = (item, value)
+                        owners = [item]
+    return found
+
+
+def instrumented(source: str, path: str, line: int, column: int) -> Any:
+    """The module's code with a call of REACH_NAME() just before the statement that holds (line, column),
+    the first changed character of a mutant; in a function's header (a default, a decorator) as the first
+    statement of its body: a default is used when the function is called. Line numbers stay as they are."""
+    import ast
+    tree = ast.parse(source, path)
+    hit = _innermost_statement(tree, line, column) or _innermost_statement(
+        tree, line, len(source.splitlines()[line - 1]) - len(source.splitlines()[line - 1].lstrip()))
+    if hit is None:
+        raise ValueError(f"{path}:{line}:{column}: no statement there to count the mutant's reach")
+    statement, body = hit
+    call = ast.Expr(ast.Call(ast.Name(REACH_NAME, ast.Load()), [], []))
+    in_header = isinstance(statement, (ast.FunctionDef, ast.AsyncFunctionDef)) and statement.body \
+        and (line, column) < (statement.body[0].lineno, statement.body[0].col_offset)
+    if in_header:
+        first = statement.body[0]
+        docstring = isinstance(first, ast.Expr) and isinstance(first.value, ast.Constant) \
+            and isinstance(first.value.value, str) and len(statement.body) > 1
+        statement.body.insert(1 if docstring else 0, ast.copy_location(call, statement.body[1 if docstring else 0]))
+    else:
+        body.insert(body.index(statement), ast.copy_location(call, statement))
+    return compile(ast.fix_missing_locations(tree), path, "exec")
+
+
+def changed_at(site: "Site") -> tuple[int, int]:
+    """(line, column) of the mutant's first changed character in its module's source."""
+    original, source = site.original, site.source
+    at, stop = site.start, min(len(original), len(source))
+    while at < stop and original[at] == source[at]:
+        at += 1
+    return source.count("\n", 0, at) + 1, at - (source.rfind("\n", 0, at) + 1)
+
+
+class _Changed(importlib.abc.MetaPathFinder, importlib.abc.Loader):
+    """Imports one module of the copy from a changed source; where `reach` is given with the position of
+    the change, the statement there counts its runs into it."""
+
+    def __init__(self, name: str, path: Path, source: str, reach: Reach | None = None,
+                 at: tuple[int, int] | None = None) -> None:
         self.name, self.path, self.source, self.loaded = name, path, source, False
+        self.reach, self.at = reach, at
 
     def find_spec(self, fullname: str, path: Any = None, target: Any = None) -> Any:
         if fullname != self.name:
@@ -325,21 +405,28 @@ class _Changed(importlib.abc.MetaPathFinder, importlib.abc.Loader):
     def exec_module(self, module: Any) -> None:
         module.__file__ = str(self.path)
         self.loaded = True
-        exec(compile(self.source, str(self.path), "exec"), module.__dict__)
+        if self.reach is not None and self.at is not None:
+            module.__dict__[REACH_NAME] = self.reach
+            code = instrumented(self.source, str(self.path), *self.at)
+        else:
+            code = compile(self.source, str(self.path), "exec")
+        exec(code, module.__dict__)
 
 
 def _ours(name: str) -> bool:
     return name == PACKAGE or name.startswith(PACKAGE + ".")
 
 
-def trains_with(path: str, source: str) -> dict[str, type]:
+def trains_with(path: str, source: str, reach: Reach | None = None,
+                at: tuple[int, int] | None = None) -> dict[str, type]:
     """The reference trains by profile (sut/reference/profiles.py's TRAINS) of a copy of the reference in
-    which `path` reads `source`. The reference already imported stays as it was."""
+    which `path` reads `source` (its statement at `at` counting its runs into `reach`, where given). The
+    reference already imported stays as it was."""
     import sut
     importlib.import_module(f"{PACKAGE}.profiles")            # the reference itself, before the swap
     saved = {name: sys.modules.pop(name) for name in list(sys.modules) if _ours(name)}
     attribute = getattr(sut, "reference")
-    finder = _Changed(path.removesuffix(".py").replace("/", "."), ROOT / path, source)
+    finder = _Changed(path.removesuffix(".py").replace("/", "."), ROOT / path, source, reach, at)
     sys.meta_path.insert(0, finder)
     try:
         trains = dict(importlib.import_module(f"{PACKAGE}.profiles").TRAINS)
@@ -455,8 +542,9 @@ def check_site(site: Site, profiles: tuple[str, ...], budget: dict[str, list[tup
     from .differential import search
     from sut.reference.profiles import TRAINS
 
+    reach = Reach()
     try:
-        mutant = trains_with(site.path, site.source)
+        mutant = trains_with(site.path, site.source, reach, changed_at(site))
     except Exception as error:                  # noqa: BLE001  (a mutant that does not import: seen at once)
         return {"verdict": "overturned", "difference": {"profile": None, "observable": "import",
                                                           "reference": "imports", "mutant": _short(error)}}
@@ -479,18 +567,20 @@ def check_site(site: Site, profiles: tuple[str, ...], budget: dict[str, list[tup
                     return {"verdict": "error", "sequences": tried, "difference": {
                         "profile": profile, "composition": composition, "drawn": drawn,
                         "observable": "the checker itself", "reference": _short(own), "mutant": _short(error)}}
-                return {"verdict": "overturned", "sequences": tried + examples, "difference": {
+                return {"verdict": "overturned", "sequences": tried + examples, "reached": reach.count, "difference": {
                     "profile": profile, "composition": composition, "drawn": drawn,
                     "observable": "an error raised where the reference raises none",
                     "reference": "none", "mutant": _short(error)}}
             tried += examples
             if difference is not None:
-                return {"verdict": "overturned", "sequences": tried, "difference": {
+                return {"verdict": "overturned", "sequences": tried, "reached": reach.count, "difference": {
                     "profile": profile, "composition": composition, "drawn": drawn,
                     "after_stimuli": difference.step,
                     "observable": difference.what, "reference": _short(difference.a), "mutant": _short(difference.b),
                     "sequence": _runs(difference.calls())}}
-    return {"verdict": "confirmed", "sequences": tried}
+    # No difference where the change never ran is no evidence of anything: the mark stays unproven (its
+    # mutants count as survivors) until the stimuli reach it.
+    return {"verdict": "confirmed" if reach.count else "unreached", "sequences": tried, "reached": reach.count}
 
 
 def check_mark(mark: Mark, *, budget: dict | None = None, exact: bool | None = None,
@@ -510,6 +600,10 @@ def check_mark(mark: Mark, *, budget: dict | None = None, exact: bool | None = N
         result = check_site(site, profiles_of(site.path), BUDGET if budget is None else budget, **options)
         record["verdict"] = result["verdict"]
         record["sequences"] = record.get("sequences", 0) + result.get("sequences", 0)
+        record["reached"] = record.get("reached", 0) + result.get("reached", 0)
+        if result["verdict"] == "unreached":
+            record["unreached"] = {"line": site.line, "function": site.function}
+            break
         if result["verdict"] != "confirmed":
             record["difference"] = {"line": site.line, **result["difference"]}
             break
@@ -544,10 +638,12 @@ def _mark_job(mark: Mark) -> tuple[str, dict[str, Any]]:
 
 def move_overturned(report: dict[str, Any], marks_file: Path | None = None,
                     overturned: Path | None = None) -> tuple[int, int]:
-    """Take each mark the report overturned out of the marks (one line each, the rest untouched) and note it
-    in OVERTURNED_MUTANTS.txt with what the checker saw: outline/mutate/mutation.py no longer leaves its mutants
-    out, so they count as survivors until a scenario kills them. A mark that names no mutant (its line is
-    no longer in the code) goes too. (moved, dropped)."""
+    """Take each mark the report overturned, or found unreached (no sequence of the budget ran its changed
+    statement: no evidence either way), out of the marks (one line each, the rest untouched) and note it in
+    OVERTURNED_MUTANTS.txt with what the checker saw: outline/mutate/mutation.py no longer leaves its mutants
+    out, so they count as survivors until a scenario kills them (or, unreached, until stimuli that reach it
+    confirm a mark made again). A mark that names no mutant (its line is no longer in the code) goes too.
+    (moved, dropped)."""
     marks_file, overturned = marks_file or EQUIVALENTS, overturned or OVERTURNED
     records = report.get("marks", {})
     kept, moved, dropped = [], [], 0
@@ -559,6 +655,12 @@ def move_overturned(report: dict[str, Any], marks_file: Path | None = None,
             if verdict == "overturned":
                 moved.append((mark, records[mark.key]["difference"]))
                 continue
+            if verdict == "unreached":
+                where = records[mark.key].get("unreached", {})
+                moved.append((mark, {"profile": "every profile of its budget", "observable": "unreached",
+                                     "reference": f"no sequence ran the changed statement (line {where.get('line')} "
+                                                  f"of {where.get('function')})", "mutant": "no evidence"}))
+                continue
             if verdict == "names no mutant":
                 dropped += 1
                 continue
@@ -568,7 +670,8 @@ def move_overturned(report: dict[str, Any], marks_file: Path | None = None,
     marks_file.write_text("".join(kept), encoding="utf-8")
     header = ("# Marks of EQUIVALENT_MUTANTS.txt that the differential checker overturned (make equivalence,\n"
               "# reports/equivalence.json): a difference from the reference at the driver interface, so not\n"
-              "# equivalent. outline/mutate/mutation.py does not leave them out: they are survivors until a scenario\n"
+              "# equivalent; or found unreached: no sequence of its budget ran the changed statement, so no evidence.\n"
+              "# outline/mutate/mutation.py does not leave them out: they are survivors until a scenario\n"
               "# kills them. One per line:\n"
               "#   path | original line | mutated line | profile: observable, reference -> mutant\n")
     text = overturned.read_text(encoding="utf-8") if overturned.exists() else header
@@ -601,13 +704,25 @@ def summary(report: dict[str, Any], marks: list[Mark]) -> str:
                      "; ".join(d.get("sequence", [])[1:])[:300]]
             lines.append("| " + " | ".join(c.replace("|", "\\|").replace("\n", " ") for c in cells) + " |")
         lines.append("")
+    unreached = [r for r in records.values() if r["verdict"] == "unreached"]
+    if unreached:
+        lines += ["## Unreached marks (no evidence: counted as survivors)", "",
+                  "No sequence of the budget ran the changed statement, so finding no difference says nothing.", "",
+                  "| mark | function | sequences |", "| --- | --- | --- |"]
+        for r in sorted(unreached, key=lambda r: (r["where"], r["before"])):
+            u = r.get("unreached", {})
+            cells = [f"{r['where']}:{u.get('line')} `{r['before']}` -> `{r['after']}`", str(u.get("function")),
+                     str(r.get("sequences"))]
+            lines.append("| " + " | ".join(c.replace("|", "\\|").replace("\n", " ") for c in cells) + " |")
+        lines.append("")
     rules = report.get("rules")
     if rules:
         lines += [f"## Rule-based exclusions (sample of {rules['asked']} a rule, seed {rules['seed']})", "",
-                  "| rule | mutants it passes over | checked | confirmed | overturned |", "| --- | --- | --- | --- | --- |"]
+                  "| rule | mutants it passes over | checked | confirmed | overturned | unreached |",
+                  "| --- | --- | --- | --- | --- | --- |"]
         for reason, counts in sorted(rules["per_rule"].items()):
             lines.append(f"| {reason} | {counts['mutants']} | {counts['checked']} | {counts['confirmed']} | "
-                         f"{counts['overturned']} |")
+                         f"{counts['overturned']} | {counts.get('unreached', 0)} |")
         lines.append("")
         for r in rules["mutants"]:
             if r["verdict"] == "overturned":

@@ -89,7 +89,7 @@ def main(argv: list[str] | None = None) -> int:
         results += [r for r in kept.get("mutants", []) if r["rule"] not in args.rule]
     per_rule: dict[str, dict[str, int]] = {}
     for reason, sites in by_rule.items():
-        per_rule[reason] = {"mutants": len(sites), "checked": 0, "confirmed": 0, "overturned": 0}
+        per_rule[reason] = {"mutants": len(sites), "checked": 0, "confirmed": 0, "overturned": 0, "unreached": 0}
     for r in results:
         if r["rule"] in per_rule:
             per_rule[r["rule"]]["checked"] += 1
@@ -99,7 +99,9 @@ def main(argv: list[str] | None = None) -> int:
                                          key=lambda r: (r["rule"], r["path"], r["line"], r["after"]))}
     equivalence.write_report(report, args.out)
     overturned = sum(c["overturned"] for c in per_rule.values())
-    print(f"rule_check: {overturned} of {len(results)} overturned; {args.out} ({time.monotonic() - started:.0f} s)")
+    unreached = sum(c.get("unreached", 0) for c in per_rule.values())
+    print(f"rule_check: {overturned} of {len(results)} overturned, {unreached} unreached; {args.out} "
+          f"({time.monotonic() - started:.0f} s)")
     return 0
 
 

@@ -230,8 +230,11 @@ def _metro_driving(cab: int) -> list[Action]:
             Action("advance_ms", (1000,), "1000 ms pass")]
 
 
-# The ATP under full supervision at 80 km/h, the carrier of its track circuit on the rails.
-ATP_SUPERVISING = [_generator(1700, "L"), _atp_position(500.0, 80.0), _track_balise(domains.ATP_EOAS[-1]),
+# The ATP under full supervision at 80 km/h, the carrier of its track circuit on the rails. First its DEF
+# self-test runs out (ATP-08: within 22 s of power-up): until then the CFSK compares nothing, and a sequence
+# that starts at once never meets a confirmed carrier (the checker found every mark behind one unreached).
+ATP_SUPERVISING = [Action("advance_ms", (22000,), "22000 ms pass"),
+                   _generator(1700, "L"), _atp_position(500.0, 80.0), _track_balise(domains.ATP_EOAS[-1]),
                    Action("advance_ms", (1000,), "1000 ms pass")]
 
 # Where a sequence starts (drawn, and shrunk towards the first): at rest, or a cab driving: a sequence from
