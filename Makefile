@@ -84,6 +84,7 @@ mutate: $(VENV_STAMP) $(MUTATE_STAMP) ## mutation testing of the references (MUT
 # ~30 min on two cores for every mark (the budget: outline/sequences/equivalence.py); a mark already checked in
 # the current budget is not run again unless ALL=1.
 equivalence: $(VENV_STAMP) $(MUTATE_STAMP) ## the differential checker on each mark of sut/reference/EQUIVALENT_MUTANTS.txt not yet checked (ALL=1: every mark) and on PER_RULE=6 mutants of each rule-based exclusion: reports/equivalence.json/.md; an overturned mark moves to OVERTURNED_MUTANTS.txt
+	$(PY) -m outline.sequences.replay --if-stale
 	$(PY) -m outline.sequences.equivalence --move $(if $(ALL),--all) $(if $(filter auto,$(JOBS)),,--jobs $(JOBS))
 	$(PY) -m outline.sequences.rule_check --per-rule $(or $(PER_RULE),6) $(if $(filter auto,$(JOBS)),,--jobs $(JOBS))
 

@@ -22,6 +22,7 @@ from sut.contract.guard import ContractDriver, Recorder
 from sut.driver import TrainDriver
 from sut.snapshot import SnapshotCache, SnapshotDriver
 from outline.plugin import step_index
+from outline.sequences import replay
 from steps import report
 from steps.diagram import Bound
 from steps import verdicts
@@ -58,6 +59,10 @@ def pytest_addoption(parser: pytest.Parser) -> None:
                     help="write down every method, name, event kind and field the steps ask of the SUT, by "
                          "profile, to FILE (JSON; with xdist one FILE.<worker> each): the catalogue test "
                          "compares it with sut/contract/<profile>.yaml")
+    group.addoption("--record-stimuli", default=None, metavar="DIR",
+                    help="write each scenario's calls that act on the train (its stimuli, in order, as the "
+                         "snapshot journal saw them) to DIR/<worker>.pickle: the differential checker replays "
+                         "them on a mutant its own random sequences never reach (outline/sequences/replay.py)")
     group.addoption("--trace-dir", default=None, metavar="DIR",
                     help="also write each scenario's whole trace to DIR/<test id>.csv (to compare runs: two "
                          "runs of one SUT, in-process against remote, serial against -n auto)")
@@ -349,6 +354,10 @@ def sut(sut_class: type[TrainDriver], request: pytest.FixtureRequest):
         trace_dir = request.config.getoption("--trace-dir")
         if trace_dir:
             _write_trace(Path(trace_dir), request.node.nodeid, driver)
+        stimuli_dir = request.config.getoption("--record-stimuli")
+        if stimuli_dir and isinstance(driver, SnapshotDriver):
+            replay.write(Path(stimuli_dir), request.config, request.node.nodeid, profile, driver.stimuli,
+                         passed=not failed)
     finally:
         # An item lives as long as the session: its stash must not keep this scenario's train (a ten-minute
         # scenario's trace is ~0.7 GB).

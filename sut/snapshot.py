@@ -320,9 +320,11 @@ class SnapshotDriver:
         self._pending: list[tuple[int, str, tuple, dict]] = []   # deferred calls: (node, name, args, kwargs)
         self._driver: TrainDriver | None = None
         self._live = True                                # the journal still describes the driver
+        self.stimuli: list[tuple[str, tuple, dict]] = []  # every call that acts on the train, in order
 
     # -- the journal -----------------------------------------------------------------------------
     def _call(self, name: str, args: tuple, kwargs: dict) -> Any:
+        self.stimuli.append((name, args, kwargs))
         if self._live:
             try:
                 entry = (name, args, tuple(sorted(kwargs.items())))

@@ -179,3 +179,39 @@ def test_a_board_failed_before_power_up_and_repaired_reaches_what_no_later_fault
     seen = record["difference"]
     assert seen["sequence"][0].startswith("fail(") and "power_on()" in seen["sequence"], seen
     assert any(step.startswith("repair(") for step in seen["sequence"]), seen
+
+
+def test_a_change_no_random_sequence_reaches_is_reached_by_replaying_the_scenarios(
+        tmp_path: Path, monkeypatch: pytest.MonkeyPatch) -> None:
+    # C019's fault event: three paced VDX sequences never release the brake a few ms before a self-test at
+    # 137 V with the old firmware; F-ATP-06's scenarios do, and their recorded stimuli reach it.
+    import subprocess
+    import sys
+    from outline.sequences import replay
+    corpus = tmp_path / "stimuli"
+    run = subprocess.run([sys.executable, "-m", "pytest", "features", "-q", "-p", "no:xdist", "-p", "no:cacheprovider",
+                          "--item", "F-ATP-06", "--record-stimuli", str(corpus)],
+                         cwd=equivalence.ROOT, capture_output=True, text=True)
+    assert run.returncode == 0, run.stdout[-2000:]
+    monkeypatch.setattr(replay, "CORPUS", corpus)
+    c019 = Mark("sut/reference/atp/vdx.py",
+                'self._emit("VDX", "fault.C019", text="C019: FS output did not go low in its self-test")',
+                'self._emit("VDX", "fault.C020", text="C019: FS output did not go low in its self-test")', "a test's own")
+    record = check_mark(c019, budget={"vdx": [({}, "paced", 3)]}, exact=False, shrink_s=1)
+    assert record["verdict"] == "overturned", record
+    assert record["difference"]["drawn"].startswith("replay of features/test_outline.py::test_fatp06"), record
+    assert record["replay"]["reaching"], record
+
+
+def test_records_the_random_sequences_decided_carry_over_to_new_replay_counts_and_unreached_ones_replay(
+        monkeypatch: pytest.MonkeyPatch) -> None:
+    done, open_, replayed = (Mark("sut/reference/atp/vdx.py", f"a = {n}", f"a = {n + 1}", "why") for n in (1, 2, 3))
+    old = equivalence.mark_random_budget(done)
+    report = {"marks": {done.key: {"verdict": "confirmed", "budget": old},
+                        open_.key: {"verdict": "unreached", "budget": old},
+                        replayed.key: {"verdict": "confirmed", "budget": old, "replay": {"reaching": ["x"]}}}}
+    monkeypatch.setattr(equivalence, "REPLAY_PROBES", equivalence.REPLAY_PROBES + 1)
+    assert equivalence.carry_over(report, [done, open_, replayed]) == [open_]
+    assert confirmed(report, done)                                   # decided by the random sequences alone
+    assert not confirmed(report, replayed)                           # its replay ran with other counts
+    assert not confirmed(report, open_)

@@ -72,7 +72,7 @@ ACTIONS = 8
 VERDICTS = ("confirmed", "overturned", "unreached", "names no mutant")
 # What the checker's evidence is (part of the budget's identity: a record made under another is checked again):
 # since 2026-11-28 a mark is confirmed only where the stimuli ran its mutated statement at least once.
-EVIDENCE = "reached"
+EVIDENCE = "reached"          # then, for what the budget never reached, the scenarios replayed (REPLAY_*)
 SHRINK_S = 20.0
 SEED = 0
 BUDGET: dict[str, list[tuple[dict[str, int], str, int]]] = {
@@ -88,17 +88,50 @@ BUDGET: dict[str, list[tuple[dict[str, int], str, int]]] = {
 SHARED_PROFILES = ("crh2", "metro-tcn", "atp", "vdx")
 
 
+def _random_budget(profiles: Iterable[str] | None) -> list:
+    budget = BUDGET if profiles is None else {p: BUDGET[p] for p in sorted(set(profiles))}
+    return [budget, ACTIONS, SEED, EVIDENCE]
+
+
 def budget_id(profiles: Iterable[str] | None = None) -> str:
     """What a record was checked in: the budget of the profiles given (None: all of it, for the report's heading
-    and the rule samples), the seed and the sequence length. A record of another is not evidence for this one."""
-    budget = BUDGET if profiles is None else {p: BUDGET[p] for p in sorted(set(profiles))}
-    return hashlib.sha256(json.dumps([budget, ACTIONS, SEED, EVIDENCE], sort_keys=True).encode()).hexdigest()[:12]
+    and the rule samples), the seed, the sequence length and the replay's counts. A record of another is not
+    evidence for this one."""
+    return hashlib.sha256(json.dumps([*_random_budget(profiles), REPLAY_PROBES, REPLAY_REACHING],
+                                     sort_keys=True).encode()).hexdigest()[:12]
+
+
+def random_budget_id(profiles: Iterable[str] | None = None) -> str:
+    """The random sequences' part of budget_id (the identity records had before the replay stage): a record
+    confirmed or overturned by them alone is the same evidence under any replay counts."""
+    return hashlib.sha256(json.dumps(_random_budget(profiles), sort_keys=True).encode()).hexdigest()[:12]
 
 
 def mark_budget(mark: "Mark") -> str:
     """The budget a mark is checked in: that of the profiles its file runs in, so that a change to one
     profile's budget checks again only the marks that profile runs."""
     return budget_id(profiles_of(mark.path))
+
+
+def mark_random_budget(mark: "Mark") -> str:
+    return random_budget_id(profiles_of(mark.path))
+
+
+def carry_over(report: dict[str, Any], marks: list["Mark"]) -> list["Mark"]:
+    """Records made under the current random sequences but other replay counts: those the sequences decided
+    (confirmed, reached; overturned; names no mutant) are the same evidence now and take the current budget;
+    the unreached ones are returned, for the replay alone."""
+    replay_only = []
+    for mark in marks:
+        record = report.get("marks", {}).get(mark.key)
+        if not record or record.get("budget") == mark_budget(mark) \
+                or record.get("random_budget", record.get("budget")) != mark_random_budget(mark):
+            continue
+        if record["verdict"] == "unreached":
+            replay_only.append(mark)
+        elif record["verdict"] in ("confirmed", "overturned", "names no mutant") and "replay" not in record:
+            record["budget"], record["random_budget"] = mark_budget(mark), mark_random_budget(mark)
+    return replay_only
 
 
 def profiles_of(path: str) -> tuple[str, ...]:
@@ -536,9 +569,12 @@ def _short(value: Any, limit: int = 600) -> str:
 
 
 def check_site(site: Site, profiles: tuple[str, ...], budget: dict[str, list[tuple[dict[str, int], str, int]]],
-               *, actions: int = ACTIONS, seed: int = SEED, shrink_s: float | None = SHRINK_S) -> dict[str, Any]:
+               *, actions: int = ACTIONS, seed: int = SEED, shrink_s: float | None = SHRINK_S,
+               replay_only: bool = False) -> dict[str, Any]:
     """Drive the reference and the mutant side by side in each profile and composition of the budget: the
-    first difference, or none."""
+    first difference, or none; where none of it ran the change, the scenarios replayed (replay_scenarios).
+    `replay_only`: the budget's sequences already ran for this mutant and never reached it (a record that
+    says so): the replay alone."""
     from .differential import search
     from sut.reference.profiles import TRAINS
 
@@ -549,7 +585,7 @@ def check_site(site: Site, profiles: tuple[str, ...], budget: dict[str, list[tup
         return {"verdict": "overturned", "difference": {"profile": None, "observable": "import",
                                                           "reference": "imports", "mutant": _short(error)}}
     tried = 0
-    for profile in profiles:
+    for profile in () if replay_only else profiles:
         for composition, drawn, examples in budget.get(profile, []):
             def against(other: type) -> Any:
                 return search(_factory(TRAINS[profile], profile, composition), _factory(other, profile, composition),
@@ -578,9 +614,60 @@ def check_site(site: Site, profiles: tuple[str, ...], budget: dict[str, list[tup
                     "after_stimuli": difference.step,
                     "observable": difference.what, "reference": _short(difference.a), "mutant": _short(difference.b),
                     "sequence": _runs(difference.calls())}}
-    # No difference where the change never ran is no evidence of anything: the mark stays unproven (its
-    # mutants count as survivors) until the stimuli reach it.
-    return {"verdict": "confirmed" if reach.count else "unreached", "sequences": tried, "reached": reach.count}
+    if reach.count:
+        return {"verdict": "confirmed", "sequences": tried, "reached": reach.count}
+    # No difference where the change never ran is no evidence of anything: the scenarios' own stimuli next,
+    # and if they do not reach it either the mark stays unproven (its mutants count as survivors).
+    replayed = replay_scenarios(mutant, profiles, reach)
+    return {**replayed, "sequences": tried}
+
+
+# The replay stage (replay.py), only for a mark the random budget never reached: per profile, the recorded
+# scenarios cheapest first (by the train time they ask for), each run on the mutant alone to see whether it
+# reaches the change (at most REPLAY_PROBES of them), and the first REPLAY_REACHING that do replayed on the
+# reference and the mutant side by side. Counts, not seconds: the same evidence on any machine.
+REPLAY_PROBES = 80
+REPLAY_REACHING = 3
+
+
+def replay_scenarios(mutant: dict[str, type], profiles: tuple[str, ...], reach: Reach,
+                     corpus: Path | None = None) -> dict[str, Any]:
+    from .differential import first_difference
+    from . import replay
+    from sut.reference.profiles import TRAINS
+
+    scenarios = replay.load(corpus or replay.CORPUS)
+    if not scenarios:
+        return {"verdict": "unreached", "reached": 0, "replay": {"corpus": "none recorded"}}
+    probed, reaching = 0, []
+    for profile in profiles:
+        for scenario in scenarios.get(profile, [])[:REPLAY_PROBES]:
+            if len(reaching) >= REPLAY_REACHING:
+                break
+            probed += 1
+            before = reach.count
+            driver = mutant[profile].open(profile)
+            try:
+                for action in scenario.actions():
+                    action.apply(driver)
+            except Exception:                   # noqa: BLE001  (how far it got is what counts here)
+                pass
+            finally:
+                driver.shutdown()
+            if reach.count == before:
+                continue
+            reaching.append(scenario.nodeid)
+            difference = first_difference(_factory(TRAINS[profile], profile, {}),
+                                          _factory(mutant[profile], profile, {}), profile, scenario.actions())
+            if difference is not None:
+                return {"verdict": "overturned", "reached": reach.count, "difference": {
+                    "profile": profile, "composition": {}, "drawn": f"replay of {scenario.nodeid}",
+                    "after_stimuli": difference.step, "observable": difference.what,
+                    "reference": _short(difference.a), "mutant": _short(difference.b),
+                    "sequence": _runs(difference.calls())},
+                    "replay": {"probed": probed, "reaching": reaching}}
+    return {"verdict": "confirmed" if reaching else "unreached", "reached": reach.count,
+            "replay": {"probed": probed, "reaching": reaching}}
 
 
 def check_mark(mark: Mark, *, budget: dict | None = None, exact: bool | None = None,
@@ -591,6 +678,8 @@ def check_mark(mark: Mark, *, budget: dict | None = None, exact: bool | None = N
     record: dict[str, Any] = {"where": mark.where, "before": mark.before, "after": mark.after,
                               "reason": mark.reason, "budget": mark_budget(mark) if budget is None else "custom",
                               "checked": datetime.date.today().isoformat()}
+    if budget is None:
+        record["random_budget"] = mark_random_budget(mark)
     sites = sites_of(mark, root, exact)
     record["mutants"] = [{"line": s.line, "function": s.function, **({"name": s.name} if s.name else {})}
                          for s in sites]
@@ -601,6 +690,8 @@ def check_mark(mark: Mark, *, budget: dict | None = None, exact: bool | None = N
         record["verdict"] = result["verdict"]
         record["sequences"] = record.get("sequences", 0) + result.get("sequences", 0)
         record["reached"] = record.get("reached", 0) + result.get("reached", 0)
+        if "replay" in result:
+            record["replay"] = result["replay"]
         if result["verdict"] == "unreached":
             record["unreached"] = {"line": site.line, "function": site.function}
             break
@@ -626,9 +717,10 @@ def load_report(path: Path | None = None) -> dict[str, Any]:
 
 # -- running them ------------------------------------------------------------------------------------------
 
-def _mark_job(mark: Mark) -> tuple[str, dict[str, Any]]:
+def _mark_job(job: tuple[Mark, bool]) -> tuple[str, dict[str, Any]]:
+    mark, replay_only = job
     try:
-        return mark.key, check_mark(mark)
+        return mark.key, check_mark(mark, replay_only=replay_only)
     except Exception as error:                  # noqa: BLE001  (one mark's trouble must not end the sweep)
         return mark.key, {"where": mark.where, "before": mark.before, "after": mark.after, "reason": mark.reason,
                           "budget": mark_budget(mark), "verdict": "not checked", "error": _short(error)}
@@ -759,7 +851,8 @@ def main(argv: list[str] | None = None) -> int:
     marks = read_marks()
     report = load_report(args.out)
     report.setdefault("marks", {})
-    todo = [m for m in marks if all(text in m.line() for text in args.mark)
+    replay_only = set(m.key for m in carry_over(report, marks)) if not args.all else set()
+    todo = [(m, m.key in replay_only) for m in marks if all(text in m.line() for text in args.mark)
             and (args.all or args.mark or report["marks"].get(m.key, {}).get("budget") != mark_budget(m)
                  or report["marks"][m.key].get("verdict") not in VERDICTS)]
     print(f"equivalence: {len(todo)} of {len(marks)} marks to check (budget {budget_id()}, {args.jobs} jobs)",

@@ -23,17 +23,21 @@ class Action:
     args: tuple
     sentence: str = field(default="", compare=False)
     more: tuple = ()          # further (method, args) calls the same sentence makes ("to 60 % traction": two)
+    kwargs: tuple = ()        # the first call's keyword arguments, as sorted items (a replayed configure(sets=2))
 
     @property
     def calls(self) -> tuple[tuple[str, tuple], ...]:
         return ((self.method, self.args), *self.more)
 
     def apply(self, driver: TrainDriver) -> None:
-        for method, args in self.calls:
+        getattr(driver, self.method)(*self.args, **dict(self.kwargs))
+        for method, args in self.more:
             getattr(driver, method)(*args)
 
     def __str__(self) -> str:
-        return "; ".join(f"{method}({', '.join(map(repr, args))})" for method, args in self.calls)
+        first = [*map(repr, self.args), *(f"{k}={v!r}" for k, v in self.kwargs)]
+        return "; ".join([f"{self.method}({', '.join(first)})",
+                          *(f"{method}({', '.join(map(repr, args))})" for method, args in self.more)])
 
 
 def _expand(pattern: str, names: list[str]) -> list[str]:
