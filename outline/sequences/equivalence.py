@@ -781,10 +781,15 @@ def summary(report: dict[str, Any], marks: list[Mark]) -> str:
         verdicts[record["verdict"]] = verdicts.get(record["verdict"], 0) + 1
     lines = ["# Equivalent mutants, checked (make equivalence)", "",
              f"Budget {budget_id()}: per profile, (composition, how drawn, sequences) {json.dumps(BUDGET)}; up "
-             f"to {ACTIONS} stimuli a sequence, seed {SEED} (outline/sequences/equivalence.py).", "",
+             f"to {ACTIONS} stimuli a sequence, seed {SEED}; for a mark they never reach, the conformance scenarios' "
+             f"recorded stimuli replayed (the first {REPLAY_REACHING} of at most {REPLAY_PROBES} that reach it, "
+             "outline/sequences/replay.py) (outline/sequences/equivalence.py).", "",
              "Marks checked: " + ", ".join(f"{n} {v}" for v, n in sorted(verdicts.items())) + f"; {len(marks)} "
              f"marks in sut/reference/EQUIVALENT_MUTANTS.txt now, "
-             f"{sum(confirmed(report, m) for m in marks)} of them confirmed.", ""]
+             f"{sum(confirmed(report, m) for m in marks)} of them confirmed ("
+             f"{sum(confirmed(report, m) and bool(records[m.key].get('replay')) for m in marks)} reached only by "
+             "replaying the scenarios' stimuli). A confirmation needs the change reached: a mark no stimulus "
+             "reached is unreached, no evidence.", ""]
     overturned = [r for r in records.values() if r["verdict"] == "overturned"]
     if overturned:
         lines += ["## Overturned marks", "", "| mark | profile | observable | reference | mutant | sequence |",
