@@ -11,7 +11,7 @@ from typing import Any, Callable
 
 from sut.reference.atp.backend import ReferenceAtp
 from sut.reference.atp.onboard import OnboardAtp
-from sut.reference.atp.vdx import VdxInterface
+from sut.reference.atp.vdx import POSTPONE, VdxInterface
 
 MS = 1000
 
@@ -298,5 +298,36 @@ class DefFaultServiceBrakeAtp(ReferenceAtp):
         self.atp.__class__ = _ServiceBrakeOnDefFault
 
 
+# -- product-choice (vdx): VDX-06's postponement counted from when the test was due ------------------------------
+class _PostponeFromDue(VdxInterface):
+    BULK_READABLE = True         # no state of its own (sut/reference/bulk.py)
+
+    def _selftest_due(self) -> None:
+        if not self.fs_on or self.testing:
+            return
+        since = self.kernel.now - (self.released_at or 0)
+        postpone = (self.cfg.postpone_us or POSTPONE)[self.firmware]
+        if since < postpone:
+            self._emit("VDX", "selftest.postpone", by_ms=postpone / 1000, since_release_ms=since / 1000)
+            self._test_timer = self.kernel.call_later(postpone, self._selftest)
+        else:
+            self._selftest()
+
+
+class PostponeFromDueVdx(ReferenceAtp):
+    """Freedom (a reading the article leaves to the product, vdx): "postpones a self-test that coincides with a
+    release by 16 ms" (VDX-06) read as 16 ms (48 ms) after the test was due, not after the release as the
+    reference reads it. F-ATP-06 takes either: from the postponement after the release to the due time plus
+    the postponement."""
+    FREEDOM_CLASS = "product-choice"
+    BULK_READABLE = True         # no state of its own (sut/reference/bulk.py)
+    EXERCISED_BY = "F-ATP-06"
+
+    def _build(self) -> None:
+        super()._build()
+        self.vdx.__class__ = _PostponeFromDue
+
+
 FREEDOM: list[type] = [TaskTickAtp, LateFsVdx, SupplyToleranceVdx, CfskRecordsInChineseAtp, ReversedInstantAtp,
-                       ReversedInstantVdx, ModeAnnouncingDmiAtp, BrakesWhileIsolatedVdx, DefFaultServiceBrakeAtp]
+                       ReversedInstantVdx, ModeAnnouncingDmiAtp, BrakesWhileIsolatedVdx, DefFaultServiceBrakeAtp,
+                       PostponeFromDueVdx]

@@ -1222,7 +1222,8 @@ FREEDOM_CLASSES = {
     "record-wording": "another record wording in the documented shape",
     "io-map": "another I/O map and port layout",
     "optional-feature": "an optional feature a product may add (a standstill holding brake)",
-    "product-choice": "a choice a project decision leaves to the product (which brake a failed DEF test holds)",
+    "product-choice": "a choice the articles or a project decision leave to the product (which brake a failed DEF "
+                      "test holds; from when VDX-06's postponement counts)",
 }
 for _variant, _freedom in ((ChineseDmiAtp, "localized-texts"), (TaskTickVdx, "task-tick"),
                            (ChineseDisplayMetro, "localized-texts"), (ChineseMonitorCrh2, "localized-texts"),

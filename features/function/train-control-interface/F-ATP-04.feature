@@ -32,6 +32,18 @@ Feature: F-ATP-04 VDX emergency-brake loop: EB1R and EB2R in series, the isolati
     And relay EB1R is energised
     And the FS output reads below 6 V
 
+  # Fail-safe (VDX-01): EB2R is de-energised for a brake, so a VDX that loses its own supply can energise it no
+  # more, and the loop opens whatever the ATP last commanded.
+  @req:VDX-01
+  Scenario: F-ATP-04 The VDX's supply switched off while released: EB2R drops and the loop opens
+    Given the ATP has released the emergency brake
+    When 100 ms pass
+    And the supply "VDX" is switched off
+    And 100 ms pass
+    Then the emergency-brake loop is open
+    And relay EB2R is de-energised
+    And the FS output reads below 6 V
+
   @req:VDX-01
   Scenario: F-ATP-04 The isolation switch bypasses both relays
     When the ATP isolation switch is turned on
