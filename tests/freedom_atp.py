@@ -11,7 +11,7 @@ from typing import Any, Callable
 
 from sut.reference.atp.backend import ReferenceAtp
 from sut.reference.atp.onboard import OnboardAtp
-from sut.reference.atp.vdx import POSTPONE, VdxInterface
+from sut.reference.atp.vdx import VdxInterface
 
 MS = 1000
 
@@ -302,16 +302,8 @@ class DefFaultServiceBrakeAtp(ReferenceAtp):
 class _PostponeFromDue(VdxInterface):
     BULK_READABLE = True         # no state of its own (sut/reference/bulk.py)
 
-    def _selftest_due(self) -> None:
-        if not self.fs_on or self.testing:
-            return
-        since = self.kernel.now - (self.released_at or 0)
-        postpone = (self.cfg.postpone_us or POSTPONE)[self.firmware]
-        if since < postpone:
-            self._emit("VDX", "selftest.postpone", by_ms=postpone / 1000, since_release_ms=since / 1000)
-            self._test_timer = self.kernel.call_later(postpone, self._selftest)
-        else:
-            self._selftest()
+    def _postponed_by(self, postpone: int, since: int) -> int:
+        return postpone
 
 
 class PostponeFromDueVdx(ReferenceAtp):
