@@ -657,8 +657,16 @@ def replay_scenarios(mutant: dict[str, type], profiles: tuple[str, ...], reach: 
             if reach.count == before:
                 continue
             reaching.append(scenario.nodeid)
-            difference = first_difference(_factory(TRAINS[profile], profile, {}),
-                                          _factory(mutant[profile], profile, {}), profile, scenario.actions())
+            reference = _factory(TRAINS[profile], profile, {})
+            try:
+                difference = first_difference(reference, _factory(mutant[profile], profile, {}), profile,
+                                              scenario.actions())
+            except Exception as error:          # noqa: BLE001  (raised outside a driver call: as check_site)
+                first_difference(reference, reference, profile, scenario.actions())   # the checker's own fault?
+                return {"verdict": "overturned", "reached": reach.count, "difference": {
+                    "profile": profile, "composition": {}, "drawn": f"replay of {scenario.nodeid}",
+                    "observable": "an error raised where the reference raises none", "reference": "none",
+                    "mutant": _short(error)}, "replay": {"probed": probed, "reaching": reaching}}
             if difference is not None:
                 return {"verdict": "overturned", "reached": reach.count, "difference": {
                     "profile": profile, "composition": {}, "drawn": f"replay of {scenario.nodeid}",
