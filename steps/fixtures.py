@@ -344,7 +344,12 @@ def sut(sut_class: type[TrainDriver], request: pytest.FixtureRequest):
         recorder.item = ",".join(str(a) for m in request.node.iter_markers("item") for a in m.args) or "?"
     guard = ContractDriver(driver, profile or "", load_contract(profile or ""), recorder)
     request.node.stash[_GUARD] = (guard, driver)
-    yield guard
+    stimuli_dir = request.config.getoption("--record-stimuli")
+    lines = replay.Lines().start() if stimuli_dir else None
+    try:
+        yield guard
+    finally:
+        ran = lines.stop() if lines is not None else {}
     outcome = [getattr(request.node, f"_crh2_{phase}", None) for phase in ("setup", "call")]
     failed = any(r is not None and r.failed for r in outcome)
     whole = failed or request.config.getoption("--whole-trace") == "all"
@@ -354,10 +359,9 @@ def sut(sut_class: type[TrainDriver], request: pytest.FixtureRequest):
         trace_dir = request.config.getoption("--trace-dir")
         if trace_dir:
             _write_trace(Path(trace_dir), request.node.nodeid, driver)
-        stimuli_dir = request.config.getoption("--record-stimuli")
         if stimuli_dir and isinstance(driver, SnapshotDriver):
             replay.write(Path(stimuli_dir), request.config, request.node.nodeid, profile, driver.stimuli,
-                         passed=not failed)
+                         passed=not failed, lines=ran)
     finally:
         # An item lives as long as the session: its stash must not keep this scenario's train (a ten-minute
         # scenario's trace is ~0.7 GB).

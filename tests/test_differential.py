@@ -101,3 +101,56 @@ def test_a_resolution_on_a_field_that_is_no_number_is_an_error_naming_the_entry(
                    encoding="utf-8")
     with pytest.raises(ContractFileError, match=r"x.yaml: events.a.b.fields.f.resolution: a number above 0"):
         parse(bad)
+
+
+class RecordsEverything(ReferenceTrain):
+    """A backend that skips nothing in a soak (TrainDriver's own: a rig simply waits), records every event and
+    emits no time.skip: conforming (crh2.yaml, time.skip)."""
+    BULK_READABLE = True  # pragma: no mutate
+
+    def _soak(self, us: int, sample_every_us: int | None) -> None:
+        self._advance(us)
+
+
+def test_where_a_backend_skips_in_a_soak_is_its_own_choice_and_what_it_leaves_behind_is_compared() -> None:
+    from outline.sequences.differential import _looks, first_difference
+    from outline.sequences.stimuli import Action
+    soak = [Action("insert_key", (1,)), Action("soak", (30_000_000,), kwargs=(("sample_every_us", 10_000_000),))]
+    # Looked at raw, the two differ: the reference skipped steady stretches and said so with time.skip.
+    raw = [list(_looks(make, "crh2", soak, {}))[-1] for make in (opener("reference", "crh2"), RecordsEverything.open)]
+    assert raw[0]["skipped stretches"] and not raw[1]["skipped stretches"]
+    assert len(raw[0]["events"]) < len(raw[1]["events"])
+    # Compared: the stretches one of them skipped left out on both sides, and nothing else differs.
+    assert first_difference(opener("reference", "crh2"), RecordsEverything.open, "crh2", soak) is None
+    # What a skip leaves behind still is: a ring link cut in the middle of the soak's steady stretch.
+    cut = [*soak, Action("cut_link", ("car3.LCU", "car4.LCU")), Action("soak", (30_000_000,))]
+    assert first_difference(opener("reference", "crh2"), RecordsEverything.open, "crh2", cut) is None
+
+
+def test_an_event_inside_a_stretch_either_side_skipped_is_left_out_and_time_skip_with_it() -> None:
+    from outline.sequences.observe import SKIPPED, comparable
+    a = {"now us": 9, SKIPPED: [(2, 6)], "events": [(1, "x", "k", {}), (3, "x", "k", {}), (6, "train", "time.skip", {}),
+                                                    (7, "x", "k", {})]}
+    b = {"now us": 9, SKIPPED: [], "events": [(1, "x", "k", {}), (3, "x", "k", {}), (4, "x", "k", {}),
+                                              (7, "x", "k", {})]}
+    assert comparable(a, b) == ({"now us": 9, "events": [(1, "x", "k", {}), (7, "x", "k", {})]},
+                                {"now us": 9, "events": [(1, "x", "k", {}), (7, "x", "k", {})]})
+    # a stretch is (frm, to]: an event at its start was recorded by both and is compared, one at its end not
+    b["events"][0] = (2, "x", "k", {})
+    assert comparable(a, b)[0] != comparable(a, b)[1]
+    b["events"][0], b["events"][2] = (1, "x", "k", {}), (6, "x", "k", {})
+    assert comparable(a, b)[0] == comparable(a, b)[1]
+
+
+@pytest.mark.parametrize("wanted", ["soak", "group2"])
+def test_the_checkers_stimuli_hold_long_runs_and_a_command_boards_cpu_groups(wanted: str) -> None:
+    # A soak is a backend's own way through (bulk.run), and a CPU group's failure (FS-01) its own fault: the
+    # contract lists both, so the checker's stimuli must hold them or no mark behind them is ever reached.
+    from hypothesis import find, settings
+    from outline.sequences.stimuli import actions
+    driver = ReferenceTrain.open("crh2")
+    driver.power_on()
+    method = "soak" if wanted == "soak" else "fail"
+    found = find(actions("crh2", driver), lambda a: a.method == method and wanted in str(a),
+                 settings=settings(database=None, max_examples=5000))
+    assert found.method == method, found

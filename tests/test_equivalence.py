@@ -197,10 +197,40 @@ def test_a_change_no_random_sequence_reaches_is_reached_by_replaying_the_scenari
     c019 = Mark("sut/reference/atp/vdx.py",
                 'self._emit("VDX", "fault.C019", text="C019: FS output did not go low in its self-test")',
                 'self._emit("VDX", "fault.C020", text="C019: FS output did not go low in its self-test")', "a test's own")
+    # Each recording holds the lines of the references its scenario ran: those that ran the fault event's
+    # line are probed first, so no probe is spent on one that does not reach it.
+    line = next(i for i, text in enumerate((equivalence.ROOT / c019.path).read_text().splitlines(), 1)
+                if '"fault.C019"' in text)
+    recorded = replay.load(corpus)["vdx"]
+    assert any(r.covers(c019.path, line) for r in recorded) and not all(r.covers(c019.path, line) for r in recorded)
     record = check_mark(c019, budget={"vdx": [({}, "paced", 3)]}, exact=False, shrink_s=1)
     assert record["verdict"] == "overturned", record
     assert record["difference"]["drawn"].startswith("replay of features/test_outline.py::test_fatp06"), record
     assert record["replay"]["reaching"], record
+    assert record["replay"]["probed"] == len(record["replay"]["reaching"]), record
+
+
+def _site(source: str, old: str, new: str) -> equivalence.Site:
+    start = source.index(old)
+    return equivalence.Site("sut/reference/x.py", source.count("\n", 0, start) + 1, "f", old, new,
+                            original=source, start=start, end=start + len(old), text=new)
+
+
+def test_the_reach_is_counted_at_the_statement_a_line_coverage_names() -> None:
+    source = 'def f(a=1):\n    """doc"""\n    x = (a +\n         2)\n    return x\n'
+    assert equivalence.counted_line(_site(source, "2)", "3)")) == 3     # a continuation line: its statement's
+    assert equivalence.counted_line(_site(source, "a=1", "a=2")) == 3   # a default: the body's first after the doc
+
+
+def test_a_rule_that_says_the_reference_never_runs_the_code_is_confirmed_by_no_stimulus_running_it() -> None:
+    from outline.sequences.rule_check import NEVER_RUN_RULES, judged
+    unreached = {"verdict": "unreached", "reached": 0}
+    assert judged("faulty-variant branch", unreached)["verdict"] == "confirmed"
+    assert judged("faulty-variant branch", unreached)["never_run"] is True
+    assert judged("unread field", unreached) == unreached      # run but unread: no evidence
+    assert judged("faulty-variant branch", {"verdict": "confirmed", "reached": 4})["never_run"] is False
+    assert judged("decided by the switches", {"verdict": "overturned"}) == {"verdict": "overturned"}
+    assert set(NEVER_RUN_RULES) == {"decided by the switches", "faulty-variant branch", "only a faulty variant calls it"}
 
 
 def test_records_the_random_sequences_decided_carry_over_to_new_replay_counts_and_unreached_ones_replay(

@@ -175,7 +175,8 @@ def test_mutmut_mutates_the_references_and_runs_the_features_with_the_kill_recor
     # snapshots off only while mutmut maps who reaches what (the plugin's pytest_configure), on for each mutant
     assert "--no-snapshots" not in mutmut["pytest_add_cli_args"]
     assert {"steps/", "features/", "outline/", "conftest.py"} <= set(mutmut["also_copy"])
-    assert config["project"]["optional-dependencies"]["mutate"] == ["mutmut==3.8.1"]
+    # coverage (which mutmut needs too): the lines each recorded scenario ran, for the checker's replay order
+    assert config["project"]["optional-dependencies"]["mutate"] == ["mutmut==3.8.1", "coverage"]
 
 
 def test_the_plugin_notes_the_scenario_that_killed_a_mutant(tmp_path: Path) -> None:

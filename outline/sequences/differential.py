@@ -18,7 +18,7 @@ from hypothesis import strategies as st
 from sut.backends import resolve
 from sut.driver import TrainDriver
 
-from .observe import Observer
+from .observe import Observer, comparable
 from .stimuli import Action, actions
 
 Factory = Callable[[], TrainDriver]
@@ -74,6 +74,7 @@ def first_difference(make_a: Factory, make_b: Factory, profile: str, sequence: l
     shared: dict[str, Any] = {}
     for step, (a, b) in enumerate(zip(_looks(make_a, profile, sequence, shared),
                                       _looks(make_b, profile, sequence, shared))):
+        a, b = comparable(a, b)
         if a != b:
             # A refusal on one side only is the difference itself, not a missing look to compare field by field.
             what = "refused" if ("refused" in a) != ("refused" in b) else \

@@ -21,6 +21,12 @@ DIRECTIONS = ("neutral", "forward", "reverse")
 # How long time runs between stimuli (us): a millisecond at a time, where relays and pulses are judged (3, 6,
 # 8 ms), a poll, a cycle, a supervision bound, a long wait. The observables are looked at after each.
 ADVANCES_US = (1_000, 2_000, 3_000, 5_000, 10_000, 50_000, 120_000, 500_000, 2_000_000, 10_000_000)
+# Long runs (soak), one time passing in SOAK_ODDS + 1: half a minute to ten, sampled once at the end or every
+# 10 s or 1 min (a crh2 set soaks ten minutes in ~1 s of CPU; a mutant that keeps a backend from skipping costs
+# ten minutes frame by frame, ~30 s).
+SOAKS_US = (30_000_000, 120_000_000, 600_000_000)
+SOAK_SAMPLES_US = (None, 10_000_000, 60_000_000)
+SOAK_ODDS = 7
 # Integer inputs by unit: a digital input without one is 0/1; an analogue raw count spans 0..100 %.
 INTEGER_RANGES = {None: (0, 1), "Hz": (1650, 2650)}
 RAW_COUNT = (0, 10_000)

@@ -385,28 +385,43 @@ def _innermost_statement(tree: Any, line: int, column: int) -> tuple[Any, list] 
     return found
 
 
-def instrumented(source: str, path: str, line: int, column: int) -> Any:
-    """The module's code with a call of REACH_NAME() just before the statement that holds (line, column),
-    the first changed character of a mutant; in a function's header (a default, a decorator) as the first
-    statement of its body: a default is used when the function is called. Line numbers stay as they are."""
+def _counted(tree: Any, source: str, path: str, line: int, column: int) -> tuple[Any, list]:
+    """(statement, its block): the statement REACH_NAME() goes before, for a change at (line, column): the one
+    that holds it, or in a function's header (a default, a decorator) the first of its body after a
+    docstring (a default is used when the function is called)."""
     import ast
-    tree = ast.parse(source, path)
     hit = _innermost_statement(tree, line, column) or _innermost_statement(
         tree, line, len(source.splitlines()[line - 1]) - len(source.splitlines()[line - 1].lstrip()))
     if hit is None:
         raise ValueError(f"{path}:{line}:{column}: no statement there to count the mutant's reach")
     statement, body = hit
-    call = ast.Expr(ast.Call(ast.Name(REACH_NAME, ast.Load()), [], []))
     in_header = isinstance(statement, (ast.FunctionDef, ast.AsyncFunctionDef)) and statement.body \
         and (line, column) < (statement.body[0].lineno, statement.body[0].col_offset)
     if in_header:
         first = statement.body[0]
         docstring = isinstance(first, ast.Expr) and isinstance(first.value, ast.Constant) \
             and isinstance(first.value.value, str) and len(statement.body) > 1
-        statement.body.insert(1 if docstring else 0, ast.copy_location(call, statement.body[1 if docstring else 0]))
-    else:
-        body.insert(body.index(statement), ast.copy_location(call, statement))
+        return statement.body[1 if docstring else 0], statement.body
+    return statement, body
+
+
+def instrumented(source: str, path: str, line: int, column: int) -> Any:
+    """The module's code with a call of REACH_NAME() just before the statement that holds (line, column),
+    the first changed character of a mutant (_counted). Line numbers stay as they are."""
+    import ast
+    tree = ast.parse(source, path)
+    statement, body = _counted(tree, source, path, line, column)
+    call = ast.Expr(ast.Call(ast.Name(REACH_NAME, ast.Load()), [], []))
+    body.insert(body.index(statement), ast.copy_location(call, statement))
     return compile(ast.fix_missing_locations(tree), path, "exec")
+
+
+def counted_line(site: "Site") -> int:
+    """The line of the statement whose runs count as the mutant's reach (_counted): where a line coverage of
+    the reference shows whether a scenario ran it."""
+    import ast
+    line, column = changed_at(site)
+    return _counted(ast.parse(site.source, site.path), site.source, site.path, line, column)[0].lineno
 
 
 def changed_at(site: "Site") -> tuple[int, int]:
@@ -618,7 +633,7 @@ def check_site(site: Site, profiles: tuple[str, ...], budget: dict[str, list[tup
         return {"verdict": "confirmed", "sequences": tried, "reached": reach.count}
     # No difference where the change never ran is no evidence of anything: the scenarios' own stimuli next,
     # and if they do not reach it either the mark stays unproven (its mutants count as survivors).
-    replayed = replay_scenarios(mutant, profiles, reach)
+    replayed = replay_scenarios(mutant, profiles, reach, where=(site.path, counted_line(site)))
     return {**replayed, "sequences": tried}
 
 
@@ -631,7 +646,9 @@ REPLAY_REACHING = 3
 
 
 def replay_scenarios(mutant: dict[str, type], profiles: tuple[str, ...], reach: Reach,
-                     corpus: Path | None = None) -> dict[str, Any]:
+                     corpus: Path | None = None, where: tuple[str, int] | None = None) -> dict[str, Any]:
+    """`where`: (path, line) of the statement that counts the reach (counted_line); the scenarios whose
+    recording ran that line are probed first, then the rest, each lot cheapest first."""
     from .differential import first_difference
     from . import replay
     from sut.reference.profiles import TRAINS
@@ -641,7 +658,10 @@ def replay_scenarios(mutant: dict[str, type], profiles: tuple[str, ...], reach: 
         return {"verdict": "unreached", "reached": 0, "replay": {"corpus": "none recorded"}}
     probed, reaching = 0, []
     for profile in profiles:
-        for scenario in scenarios.get(profile, [])[:REPLAY_PROBES]:
+        ordered = scenarios.get(profile, [])
+        if where is not None:
+            ordered = sorted(ordered, key=lambda scenario: not scenario.covers(*where))     # stable
+        for scenario in ordered[:REPLAY_PROBES]:
             if len(reaching) >= REPLAY_REACHING:
                 break
             probed += 1
@@ -823,11 +843,18 @@ def summary(report: dict[str, Any], marks: list[Mark]) -> str:
     rules = report.get("rules")
     if rules:
         lines += [f"## Rule-based exclusions (sample of {rules['asked']} a rule, seed {rules['seed']})", "",
-                  "| rule | mutants it passes over | checked | confirmed | overturned | unreached |",
-                  "| --- | --- | --- | --- | --- | --- |"]
+                  "Of a rule that says the reference never runs the code (a switch's untaken side, a function only "
+                  "such code calls), a mutant no stimulus and no replayed scenario ran is confirmed: that is the "
+                  "rule's claim (\"never run\"). Of the others (run, but nobody reads it), unreached is no evidence.",
+                  "",
+                  "| rule | mutants it passes over | checked | confirmed | of them never run | overturned | unreached |",
+                  "| --- | --- | --- | --- | --- | --- | --- |"]
+        never = {}
+        for r in rules["mutants"]:
+            never[r["rule"]] = never.get(r["rule"], 0) + bool(r.get("never_run"))
         for reason, counts in sorted(rules["per_rule"].items()):
             lines.append(f"| {reason} | {counts['mutants']} | {counts['checked']} | {counts['confirmed']} | "
-                         f"{counts['overturned']} | {counts.get('unreached', 0)} |")
+                         f"{never.get(reason, 0)} | {counts['overturned']} | {counts.get('unreached', 0)} |")
         lines.append("")
         for r in rules["mutants"]:
             if r["verdict"] == "overturned":

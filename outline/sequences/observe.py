@@ -39,6 +39,27 @@ def _plain(value: Any) -> Any:
     return value
 
 
+SKIPPED = "skipped stretches"
+
+
+def comparable(a: dict[str, Any], b: dict[str, Any]) -> tuple[dict[str, Any], dict[str, Any]]:
+    """Two looks as they are compared: the stretches either SUT skipped (time.skip: "a backend that records
+    everything emits none", so whether and where one skips is its own choice) left out of both event lists,
+    time.skip itself too. A stretch is (frm, to]: what happens at frm was recorded, at to not. What the skip leaves behind is still compared: the state after it, the counters
+    (which count skipped traffic), every event outside it."""
+    windows = [*a.get(SKIPPED, ()), *b.get(SKIPPED, ())]
+
+    def kept(look: dict[str, Any]) -> dict[str, Any]:
+        look = {k: v for k, v in look.items() if k != SKIPPED}
+        if "events" in look and windows:
+            look["events"] = [ev for ev in look["events"] if ev[2] != "time.skip"
+                              and not any(frm < ev[0] <= to for frm, to in windows)]
+        elif "events" in look:
+            look["events"] = [ev for ev in look["events"] if ev[2] != "time.skip"]
+        return look
+    return kept(a), kept(b)
+
+
 class Observer:
     """Looks at one driver of `profile`; `look()` answers what it shows now and the contract's trace events
     since the previous look."""
@@ -107,6 +128,9 @@ class Observer:
         shown["now us"] = self.driver.now_us
         events = self.driver.trace[self.seen:]
         self.seen += len(events)
+        # Where a backend skipped steady traffic it records nothing (time.skip, listed or not): what is not
+        # recorded there is no behaviour (comparable() leaves that stretch out on both sides).
+        shown[SKIPPED] = [(ev.fields["frm"], ev.fields["to"]) for ev in events if ev.kind == "time.skip"]
         shown["events"] = [(ev.t, ev.source, ev.kind,
                             _plain({k: self._compared(ev.kind, k, v) for k, v in ev.fields.items() if k in listed}))
                            for ev in events if (listed := self._listed(ev.kind)) is not None]

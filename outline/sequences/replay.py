@@ -11,7 +11,7 @@ from __future__ import annotations
 
 import os
 import pickle
-from dataclasses import dataclass
+from dataclasses import dataclass, field
 from pathlib import Path
 from typing import Any, Iterator
 
@@ -25,6 +25,12 @@ class Recorded:
     profile: str
     calls: tuple[tuple[str, tuple, tuple], ...]   # (method, args, sorted kwargs items)
     passed: bool
+    # The lines of the references it ran itself, by path: what a snapshot restored for it was run by another
+    # scenario. Only an order for the probes: the reach counter decides.
+    lines: dict[str, frozenset[int]] = field(default_factory=dict, compare=False)
+
+    def covers(self, path: str, line: int) -> bool:
+        return line in self.lines.get(path, ())
 
     @property
     def simulated_us(self) -> int:
@@ -49,12 +55,42 @@ def _worker(config: Any) -> str:
     return worker or "main"
 
 
-def write(folder: Path, config: Any, nodeid: str, profile: str | None, stimuli: list, *, passed: bool) -> None:
+class Lines:
+    """Which lines of the references run while it is on (coverage.py's C tracer, which mutmut, and so `make
+    equivalence`, brings; without it nothing is recorded and the replay probes cheapest first). About a third
+    more time for a recording run."""
+    REFERENCES = ROOT / "sut" / "reference"
+
+    def __init__(self) -> None:
+        try:
+            import coverage
+        except ImportError:
+            self._coverage = None
+            return
+        self._coverage = coverage.Coverage(data_file=None, include=[f"{self.REFERENCES}/*"], config_file=False)
+        # a scenario whose every call a snapshot restored runs no line: nothing to warn about
+        self._coverage.set_option("run:disable_warnings", ["no-data-collected"])
+
+    def start(self) -> "Lines":
+        if self._coverage is not None:
+            self._coverage.start()
+        return self
+
+    def stop(self) -> dict[str, frozenset[int]]:
+        if self._coverage is None:
+            return {}
+        self._coverage.stop()
+        data = self._coverage.get_data()
+        return {Path(f).relative_to(ROOT).as_posix(): frozenset(data.lines(f) or ()) for f in data.measured_files()}
+
+
+def write(folder: Path, config: Any, nodeid: str, profile: str | None, stimuli: list, *, passed: bool,
+          lines: dict[str, frozenset[int]] | None = None) -> None:
     """Append one scenario's stimuli to this worker's file (pickled: the arguments keep their types)."""
     folder.mkdir(parents=True, exist_ok=True)
     calls = tuple((name, tuple(args), tuple(sorted(kwargs.items()))) for name, args, kwargs in stimuli)
     with open(folder / f"{_worker(config)}.pickle", "ab") as out:
-        pickle.dump(Recorded(nodeid, profile or "", calls, passed), out)
+        pickle.dump(Recorded(nodeid, profile or "", calls, passed, lines or {}), out)
 
 
 def _records(path: Path) -> Iterator[Recorded]:

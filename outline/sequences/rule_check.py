@@ -45,10 +45,27 @@ def draw(by_rule: dict[str, list[Site]], per_rule: int, seed: int) -> list[tuple
             for site in rng.sample(by_rule[reason], min(per_rule, len(by_rule[reason])))]
 
 
+# The rules whose claim is that the reference never runs the code (a behaviour switch's untaken side, a function
+# only such code calls): for them, "no stimulus of the budget and no conformance scenario ran it" is the
+# evidence itself, where for the others (run, but nobody reads it) it is none. One that ran and showed no
+# difference is still confirmed (equivalent after all), with the rule's premise noted as broken.
+NEVER_RUN_RULES = ("decided by the switches", "faulty-variant branch", "only a faulty variant calls it")
+
+
+def judged(reason: str, result: dict[str, Any]) -> dict[str, Any]:
+    if reason not in NEVER_RUN_RULES:
+        return result
+    if result["verdict"] == "unreached":
+        return {**result, "verdict": "confirmed", "never_run": True}
+    if result["verdict"] == "confirmed":
+        return {**result, "never_run": False}
+    return result
+
+
 def _job(job: tuple[str, Site]) -> dict[str, Any]:
     reason, site = job
     started = time.monotonic()
-    result = check_site(site, profiles_of(site.path), equivalence.BUDGET)
+    result = judged(reason, check_site(site, profiles_of(site.path), equivalence.BUDGET))
     return {"rule": reason, "name": site.name, "path": site.path, "line": site.line, "before": site.before,
             "after": site.after, **result, "seconds": round(time.monotonic() - started, 1)}
 

@@ -109,6 +109,8 @@ def actions(profile: str, driver: TrainDriver) -> st.SearchStrategy[Action]:
     options = families.setdefault("faults", [])
     nodes = _names(driver, "ring_nodes") if has("fail") or has("cut_link") else []
     boards = [f"{n}.{b}" for n in nodes for b in _names(driver, "boards", n)] if has("fail") else []
+    # A command board's two CPU groups fail one at a time (FS-01): the contract names them beside the boards.
+    boards += [f"{b}.group{g}" for b in boards if b.endswith((".TXC", ".RXC")) for g in (1, 2)]
     for method in ("fail", "repair"):
         if boards and has(method):
             options.append(st.sampled_from(boards).map(lambda b, m=method: Action(m, (b,))))
@@ -127,6 +129,12 @@ def actions(profile: str, driver: TrainDriver) -> st.SearchStrategy[Action]:
         options.append(st.tuples(st.sampled_from(supplies), volts).map(lambda a: Action("set_supply_voltage", a)))
     # (one_of flattens nested one_ofs into one uniform choice: a family is picked by sampled_from instead)
     time_passes = st.sampled_from(domains.ADVANCES_US).map(lambda us: Action("advance", (us,)))
+    if has("soak"):
+        # Now and then a long run (TST-02): a soak is a way of its own through a backend (bulk.run samples and
+        # jumps where an advance copies every period), which advances never reach.
+        long_run = st.tuples(st.sampled_from(domains.SOAKS_US), st.sampled_from(domains.SOAK_SAMPLES_US)).map(
+            lambda a: Action("soak", (a[0],), kwargs=(("sample_every_us", a[1]),)))
+        time_passes = st.sampled_from([time_passes] * domains.SOAK_ODDS + [long_run]).flatmap(lambda kind: kind)
     picks = [time_passes] + [st.one_of(family) for family in families.values() if family]
     return st.sampled_from(picks).flatmap(lambda family: family)
 
