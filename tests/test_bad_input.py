@@ -248,3 +248,14 @@ def test_the_vdx_firmware_is_chosen_before_power_up() -> None:
     driver.power_on()
     with pytest.raises(SutError, match="before power-up"):
         driver.set_input("VDX firmware", "old")
+
+
+@pytest.mark.parametrize("body, kind", [(b"[1]", "array"), (b'"cmd"', "string"), (b"true", "boolean"),
+                                        (b"null", "null"), (b"42", "number"), (b"-0.5e3", "number")])
+def test_a_wtb_telegram_that_is_no_json_object_is_refused_naming_what_json_it_is(body: bytes, kind: str) -> None:
+    # A corrupt frame gets a clear error too: a body with a good frame check sequence that is JSON but no object.
+    from sut.codecs.arcnet import crc16_x25
+    from sut.reference.metro.bus import FrameError
+    from sut.reference.metro.ports import wtb_decode
+    with pytest.raises(FrameError, match=f"^WTB telegram is a JSON {kind}, not an object$"):
+        wtb_decode(body + crc16_x25(body).to_bytes(2, "little"))

@@ -30,7 +30,7 @@ from sut.driver import TrainDriver
 from sut.snapshot import PickledState
 from sut.errors import OutOfRange, SutError, UnknownName
 from sut.reference.atp.config import POSTPONE, AtpConfig
-from sut.reference.atp.onboard import CARRIER_SETS, OnboardAtp
+from sut.reference.atp.onboard import CARRIER_SETS, PERMISSIONS, OnboardAtp
 from sut.reference.atp.vdx import VdxInterface
 from sut.reference.crh2.backend import ReferenceTrain
 from sut.reference import bulk
@@ -247,7 +247,7 @@ class ReferenceAtp(PickledState, TrainDriver):
             return atp.s.mode
         if name == "ATP brake":
             return atp.s.brake
-        if name in ("ATO allowed", "door enable", "PSD permission"):
+        if name in PERMISSIONS:
             return "granted" if atp.permission(name) else "withheld"
         if name == "neutral section":
             return "passing" if atp.neutral_command else "none"

@@ -14,6 +14,7 @@ from sut.reference.atp.config import Atp
 from sut.reference.kernel import Kernel
 
 CARRIER_SETS = {"down": (1700, 2300), "up": (2000, 2600)}   # ZPW-2000: down line 1700/2300, up line 2000/2600
+PERMISSIONS = ("ATO allowed", "door enable", "PSD permission")   # outputs granted or withheld (ATP-10)
 KNOWN_PACKETS = ("CTCS-1", "MA", "ETCS-68", "ETCS-46", "line direction", "default", "stop point", "linking")
 
 
@@ -276,15 +277,12 @@ class OnboardAtp:
             self._set_mode("CS")
 
     def permission(self, name: str) -> bool:
+        """One of PERMISSIONS; another name is a KeyError of the lookup (the backend asks only these)."""
         s = self.s
-        if name == "ATO allowed":
-            return s.mode in ("FS", "AM") and s.brake == "none"
         in_window = self.in_stop_window()
-        if name == "door enable":
-            return in_window
-        if name == "PSD permission":
-            return in_window and s.stop_point is not None and s.stop_point[1]
-        raise KeyError(name)
+        return {"ATO allowed": s.mode in ("FS", "AM") and s.brake == "none",
+                "door enable": in_window,
+                "PSD permission": in_window and s.stop_point is not None and s.stop_point[1]}[name]
 
     def in_stop_window(self) -> bool:
         sp = self.s.stop_point
