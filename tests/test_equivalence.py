@@ -225,11 +225,13 @@ def test_the_reach_is_counted_at_the_statement_a_line_coverage_names() -> None:
 def test_a_rule_that_says_the_reference_never_runs_the_code_is_confirmed_by_no_stimulus_running_it() -> None:
     from outline.sequences.rule_check import NEVER_RUN_RULES, judged
     unreached = {"verdict": "unreached", "reached": 0}
-    assert judged("faulty-variant branch", unreached)["verdict"] == "confirmed"
-    assert judged("faulty-variant branch", unreached)["never_run"] is True
-    assert judged("unread field", unreached) == unreached      # run but unread: no evidence
-    assert judged("faulty-variant branch", {"verdict": "confirmed", "reached": 4})["never_run"] is False
-    assert judged("decided by the switches", {"verdict": "overturned"}) == {"verdict": "overturned"}
+    assert judged("faulty-variant branch", unreached, False)["verdict"] == "confirmed"
+    assert judged("faulty-variant branch", unreached, False)["never_run"] is True
+    assert judged("faulty-variant branch", unreached, True) == unreached       # the conformance run ran it
+    assert judged("faulty-variant branch", unreached, None) == unreached       # recorded without lines
+    assert judged("unread field", unreached, False) == unreached               # run but unread: no evidence
+    assert judged("faulty-variant branch", {"verdict": "confirmed", "reached": 4}, None)["never_run"] is False
+    assert judged("decided by the switches", {"verdict": "overturned"}, None) == {"verdict": "overturned"}
     assert set(NEVER_RUN_RULES) == {"decided by the switches", "faulty-variant branch", "only a faulty variant calls it"}
 
 
@@ -245,3 +247,22 @@ def test_records_the_random_sequences_decided_carry_over_to_new_replay_counts_an
     assert confirmed(report, done)                                   # decided by the random sequences alone
     assert not confirmed(report, replayed)                           # its replay ran with other counts
     assert not confirmed(report, open_)
+
+
+@pytest.mark.parametrize("ran, verdict", [(False, "confirmed"), (True, "unreached"), (None, "unreached")])
+def test_a_mark_that_says_the_reference_never_runs_its_line_is_confirmed_only_where_nothing_ran_it(
+        tmp_path: Path, monkeypatch: pytest.MonkeyPatch, ran: bool | None, verdict: str) -> None:
+    # A C019 that does not latch (c019_latches, off in the reference): only a faulty variant runs the line.
+    from outline.sequences import replay
+    monkeypatch.setattr(replay, "CORPUS", tmp_path)                       # no scenarios to replay
+    seen = []
+    monkeypatch.setattr(equivalence, "replay_ran_anywhere", lambda path, line: seen.append((path, line)) or ran)
+    mark = Mark("sut/reference/atp/vdx.py::VdxInterface._selftest_end", "self.c019 = False", "self.c019 = None",
+                f"{equivalence.NEVER_RUN} only the faulty variant whose C019 does not latch runs it")
+    record = check_mark(mark, budget={"vdx": [({}, "paced", 3)]}, exact=False, shrink_s=1)
+    assert record["verdict"] == verdict, record
+    assert record.get("never_run", False) is (ran is False)
+    assert seen and seen[0][0] == "sut/reference/atp/vdx.py"
+    # a mark that does not say so: unreached whatever the recorded run ran
+    plain = Mark(mark.where, mark.before, mark.after, "only the faulty variant whose C019 does not latch runs it")
+    assert check_mark(plain, budget={"vdx": [({}, "paced", 3)]}, exact=False, shrink_s=1)["verdict"] == "unreached"

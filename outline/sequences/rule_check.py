@@ -46,16 +46,18 @@ def draw(by_rule: dict[str, list[Site]], per_rule: int, seed: int) -> list[tuple
 
 
 # The rules whose claim is that the reference never runs the code (a behaviour switch's untaken side, a function
-# only such code calls): for them, "no stimulus of the budget and no conformance scenario ran it" is the
-# evidence itself, where for the others (run, but nobody reads it) it is none. One that ran and showed no
-# difference is still confirmed (equivalent after all), with the rule's premise noted as broken.
+# only such code calls): for them, "no stimulus of the budget, no replayed scenario and no line of the recorded
+# conformance run ran it" is the evidence itself (as for a mark saying equivalence.NEVER_RUN), where for the
+# others (run, but nobody reads it) it is none. One that ran and showed no difference is still confirmed
+# (equivalent after all), with the rule's premise noted as broken.
 NEVER_RUN_RULES = ("decided by the switches", "faulty-variant branch", "only a faulty variant calls it")
 
 
-def judged(reason: str, result: dict[str, Any]) -> dict[str, Any]:
+def judged(reason: str, result: dict[str, Any], ran_anywhere: bool | None) -> dict[str, Any]:
+    """`ran_anywhere`: whether the recorded conformance run ran the line (None: not recorded with lines)."""
     if reason not in NEVER_RUN_RULES:
         return result
-    if result["verdict"] == "unreached":
+    if result["verdict"] == "unreached" and ran_anywhere is False:
         return {**result, "verdict": "confirmed", "never_run": True}
     if result["verdict"] == "confirmed":
         return {**result, "never_run": False}
@@ -65,7 +67,11 @@ def judged(reason: str, result: dict[str, Any]) -> dict[str, Any]:
 def _job(job: tuple[str, Site]) -> dict[str, Any]:
     reason, site = job
     started = time.monotonic()
-    result = judged(reason, check_site(site, profiles_of(site.path), equivalence.BUDGET))
+    result = check_site(site, profiles_of(site.path), equivalence.BUDGET)
+    if result["verdict"] == "unreached":
+        result = judged(reason, result, equivalence.replay_ran_anywhere(site.path, equivalence.counted_line(site)))
+    else:
+        result = judged(reason, result, None)
     return {"rule": reason, "name": site.name, "path": site.path, "line": site.line, "before": site.before,
             "after": site.after, **result, "seconds": round(time.monotonic() - started, 1)}
 

@@ -260,9 +260,7 @@ class ReferenceAtp(PickledState, TrainDriver):
     def reading(self, name: str) -> float:
         if name == "FS output voltage":
             return self.vdx.supply_v if self.vdx.eb2r.powered else 0.0
-        if name == "position":
-            return round(self.atp.position_m, 3)
-        raise UnknownName("reading", name, ["FS output voltage", "position"])
+        raise UnknownName("reading", name, ["FS output voltage"])
 
     # -- the ATP's faults, balises, DMI and records ---------------------------------------------------
     def fail(self, board: str) -> None:
