@@ -181,6 +181,10 @@ def test_ramp_needs_a_positive_rate_and_a_number(train) -> None:
     ("metro-tcn", lambda t: t.fail("car2.CCU"), UnknownName, ["car2.CCU", "car2.VCU"]),
     ("metro-tcn", lambda t: t.fail("car2.VCU.VMS"), UnknownName, ["car2.VCU.VMS"]),
     ("metro-tcn", lambda t: t.records("car2.VVVF"), UnknownName, ["CCU or VCU", "car2.VVVF"]),
+    ("metro-tcn", lambda t: t.boards("car2.CCU"), UnknownName, ["CCU or VCU", "'car2.CCU'", "car2.VCU"]),
+    ("metro-tcn", lambda t: t.reading("car2.VVVF.brake"), UnknownName,
+     ["reading", "'car2.VVVF.brake'", "car2.VVVF.traction", "speed"]),
+    (None, lambda t: t.interrupt_supply("car9.LCU", 1000), UnknownName, ["power supply", "'car9.LCU'", "car8.LCU"]),
     ("metro-tcn", lambda t: t.configure(sets=1, cars_per_set=8), OutOfRange, ["1 x 8 cars", "6 cars"]),
     ("metro-tcn", lambda t: t.ring_nodes(), SutError, ["does not implement ring_nodes()", "metro-tcn"]),
     ("atp", lambda t: t.set_input("VDX firmware", "beta"), OutOfRange, ["VDX firmware 'beta'", "old or new"]),
@@ -259,3 +263,9 @@ def test_a_wtb_telegram_that_is_no_json_object_is_refused_naming_what_json_it_is
     from sut.reference.metro.ports import wtb_decode
     with pytest.raises(FrameError, match=f"^WTB telegram is a JSON {kind}, not an object$"):
         wtb_decode(body + crc16_x25(body).to_bytes(2, "little"))
+
+
+def test_an_unknown_profile_of_the_reference_is_named_with_those_it_has() -> None:
+    with pytest.raises(UnknownName, match=r"no profile of the reference named 'metro'; did you mean metro-tcn\?; "
+                                          r"known: atp, atp-crh2, crh2, metro-tcn, vdx"):
+        open_backend("reference", "metro")

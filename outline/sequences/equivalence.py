@@ -861,8 +861,9 @@ def summary(report: dict[str, Any], marks: list[Mark]) -> str:
     if rules:
         lines += [f"## Rule-based exclusions (sample of {rules['asked']} a rule, seed {rules['seed']})", "",
                   "Of a rule that says the reference never runs the code (a switch's untaken side, a function only "
-                  "such code calls), a mutant no stimulus and no replayed scenario ran is confirmed: that is the "
-                  "rule's claim (\"never run\"). Of the others (run, but nobody reads it), unreached is no evidence.",
+                  "such code calls), a mutant no stimulus, no replayed scenario and no line of the recorded conformance "
+                  "run ran is confirmed: that is the rule's claim (\"never run\"). Of the others (run, but nobody "
+                  "reads it: a self-description, a read-back, a usage error's words), unreached is no evidence.",
                   "",
                   "| rule | mutants it passes over | checked | confirmed | of them never run | overturned | unreached |",
                   "| --- | --- | --- | --- | --- | --- | --- |"]
