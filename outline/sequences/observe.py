@@ -45,17 +45,16 @@ SKIPPED = "skipped stretches"
 def comparable(a: dict[str, Any], b: dict[str, Any]) -> tuple[dict[str, Any], dict[str, Any]]:
     """Two looks as they are compared: the stretches either SUT skipped (time.skip: "a backend that records
     everything emits none", so whether and where one skips is its own choice) left out of both event lists,
-    time.skip itself too. A stretch is (frm, to]: what happens at frm was recorded, at to not. What the skip leaves behind is still compared: the state after it, the counters
-    (which count skipped traffic), every event outside it."""
+    time.skip itself too. A stretch is (frm, to]: what happens at frm was recorded, at to not. What the skip
+    leaves behind is still compared: the state after it, the counters (which count skipped traffic), every
+    event outside it."""
     windows = [*a.get(SKIPPED, ()), *b.get(SKIPPED, ())]
 
     def kept(look: dict[str, Any]) -> dict[str, Any]:
         look = {k: v for k, v in look.items() if k != SKIPPED}
-        if "events" in look and windows:
+        if "events" in look:
             look["events"] = [ev for ev in look["events"] if ev[2] != "time.skip"
                               and not any(frm < ev[0] <= to for frm, to in windows)]
-        elif "events" in look:
-            look["events"] = [ev for ev in look["events"] if ev[2] != "time.skip"]
         return look
     return kept(a), kept(b)
 
