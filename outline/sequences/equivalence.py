@@ -711,6 +711,14 @@ def replay_ran_anywhere(path: str, line: int) -> bool | None:
     return replay.ran_anywhere(path, line)
 
 
+def never_run(result: dict[str, Any], ran_anywhere: bool | None) -> dict[str, Any]:
+    """An unreached result confirmed as never run where the recorded conformance run did not run the line
+    either (ran_anywhere False; None: recorded without lines, no evidence); any other result as it is."""
+    if result["verdict"] == "unreached" and ran_anywhere is False:
+        return {**result, "verdict": "confirmed", "never_run": True}
+    return result
+
+
 def check_mark(mark: Mark, *, budget: dict | None = None, exact: bool | None = None,
                root: Path = ROOT, **options: Any) -> dict[str, Any]:
     """The record of one mark: confirmed (none of its mutants differs from the reference in the budget) or
@@ -728,10 +736,10 @@ def check_mark(mark: Mark, *, budget: dict | None = None, exact: bool | None = N
         record["verdict"] = "names no mutant"
     for site in sites:
         result = check_site(site, profiles_of(site.path), BUDGET if budget is None else budget, **options)
-        if result["verdict"] == "unreached" and mark.reason.startswith(NEVER_RUN) \
-                and replay_ran_anywhere(site.path, counted_line(site)) is False:
-            result = {**result, "verdict": "confirmed"}
-            record["never_run"] = True
+        if result["verdict"] == "unreached" and mark.reason.startswith(NEVER_RUN):
+            result = never_run(result, replay_ran_anywhere(site.path, counted_line(site)))
+            if result.get("never_run"):
+                record["never_run"] = True
         record["verdict"] = result["verdict"]
         record["sequences"] = record.get("sequences", 0) + result.get("sequences", 0)
         record["reached"] = record.get("reached", 0) + result.get("reached", 0)

@@ -119,17 +119,23 @@ def load(folder: Path = CORPUS) -> dict[str, list[Recorded]]:
     return _LOADED[key]
 
 
+_RAN: dict[str, dict[str, set[int]] | None] = {}
+
+
 def ran_anywhere(path: str, line: int, folder: Path = CORPUS) -> bool | None:
     """Whether any recorded scenario ran that line of the references, passed or not (the union of their
     lines is the whole conformance run's: what a snapshot restored for one was run by the one that stored
-    it); None where nothing was recorded with its lines."""
-    seen = False
-    for path_ in sorted(folder.glob("*.pickle")) if folder.is_dir() else ():
-        for record in _records(path_):
-            seen = seen or bool(record.lines)
-            if record.covers(path, line):
-                return True
-    return False if seen else None
+    it); None where nothing was recorded with its lines. The union is read once per folder."""
+    key = str(folder)
+    if key not in _RAN:
+        union: dict[str, set[int]] = {}
+        for file in sorted(folder.glob("*.pickle")) if folder.is_dir() else ():
+            for record in _records(file):
+                for where, lines in record.lines.items():
+                    union.setdefault(where, set()).update(lines)
+        _RAN[key] = union or None
+    union = _RAN[key]
+    return None if union is None else line in union.get(path, ())
 
 
 def recorded(folder: Path = CORPUS) -> bool:
@@ -140,6 +146,7 @@ def clear(folder: Path = CORPUS) -> None:
     for path in folder.glob("*.pickle") if folder.is_dir() else ():
         os.remove(path)
     _LOADED.pop(str(folder), None)
+    _RAN.pop(str(folder), None)
 
 
 def stale(folder: Path = CORPUS) -> bool:

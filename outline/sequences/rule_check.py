@@ -57,21 +57,18 @@ def judged(reason: str, result: dict[str, Any], ran_anywhere: bool | None) -> di
     """`ran_anywhere`: whether the recorded conformance run ran the line (None: not recorded with lines)."""
     if reason not in NEVER_RUN_RULES:
         return result
-    if result["verdict"] == "unreached" and ran_anywhere is False:
-        return {**result, "verdict": "confirmed", "never_run": True}
     if result["verdict"] == "confirmed":
         return {**result, "never_run": False}
-    return result
+    return equivalence.never_run(result, ran_anywhere)
 
 
 def _job(job: tuple[str, Site]) -> dict[str, Any]:
     reason, site = job
     started = time.monotonic()
     result = check_site(site, profiles_of(site.path), equivalence.BUDGET)
-    if result["verdict"] == "unreached":
-        result = judged(reason, result, equivalence.replay_ran_anywhere(site.path, equivalence.counted_line(site)))
-    else:
-        result = judged(reason, result, None)
+    ran = equivalence.replay_ran_anywhere(site.path, equivalence.counted_line(site)) \
+        if result["verdict"] == "unreached" and reason in NEVER_RUN_RULES else None
+    result = judged(reason, result, ran)
     return {"rule": reason, "name": site.name, "path": site.path, "line": site.line, "before": site.before,
             "after": site.after, **result, "seconds": round(time.monotonic() - started, 1)}
 
