@@ -369,6 +369,28 @@ def test_the_metro_advances_in_bulk_with_the_same_state_and_trace(jumps: list[in
     assert len(jumps) >= 3, jumps
 
 
+@pytest.mark.cost(20)
+def test_frame_by_frame_module_1_stays_in_use_as_its_life_signal_wraps() -> None:
+    """RED-07 past the 16-bit wrap of the life signal (65535 refreshes, 131 s at the reference's 2 ms), which a
+    bulk advance carries over without encoding: F-CTL-16's 18 minutes pass the wrap only on a SUT that runs
+    them frame by frame (a rig; `LifeSignalWrapsThroughZero`, which declares no bulk, is rejected there).
+    Module 2, held at 30 % by a wiring fault, must never be taken while module 1 lives."""
+    train = ReferenceMetro()
+    train.power_on()
+    train.insert_key(1)
+    train.set_direction(1, "forward")
+    train.set_brake(1, 0)
+    train.set_traction(1, 60)
+    train.set_input("car1.IO2.AI1", 3000)            # the reference's I/O map: traction on AI1, 10000 counts
+    train.advance(S)
+    before = {node: train.records(node) for node in ("car1.CCU", "car6.CCU")}
+    with frame_by_frame():
+        train.advance(131 * S)
+    raised = [r for node, had in before.items() for r in train.records(node)[len(had):]]
+    assert not raised
+    assert {train.reading(f"car{c}.VVVF.traction") for c in (2, 3, 4, 5)} == {60.0}
+
+
 def test_the_metro_steady_period_is_its_round_of_status_polls() -> None:
     # 8 devices per unit polled one per 1 ms basic period, 25 ms WTB cycle: 200 ms; twice that outlasts every
     # time the model compares with but the 1 s message give-up, which a timer marks instead.

@@ -642,6 +642,38 @@ class GatewaylessCcuKeepsItsMvb(ReferenceMetro):
             node.__class__ = _KeepsTheMvbWithoutAGateway
 
 
+class DisplayShowsASilentBus(ReferenceMetro):
+    """TCN-08 (docs/decisions.md, "A display whose bus master is silent"): a DU whose unit has no live bus
+    master keeps showing what the last one knew, mode and WTB master as if the train were still so."""
+
+    def monitor(self, cab: int) -> dict:
+        train = self._train
+        seg = train.segments[1 if cab == 1 else 2]
+        master = train.nodes[seg.master]
+        if train.devices[f"car{cab}.DU"].failed or master.alive:
+            return super().monitor(cab)
+        return {"faults": [r.text for r in master.known], "mode": train.modes[seg.unit],
+                "WTB master": train.wtb_master, "blank": False}
+
+
+class _LifeWrapsThroughZero(MetroTrain):
+    def _io_port(self, module):
+        port = super()._io_port(module)
+        return port if module.failed else IoPort(port.di, port.ai, module.life % 0x10000)
+
+
+class LifeSignalWrapsThroughZero(ReferenceMetro):
+    """RED-07: module 1's life signal counts 1..65535 and then 0, so every 65536th refresh says "not alive"
+    and the unit's master loses module 1 for a period: the drives drop to 0 % traction and full brake for
+    2 ms. A bulk advance carries the count over a jump without encoding it, so only a frame-by-frame run past
+    the wrap sees this, as a rig would: the train class declares no bulk (BULK_READABLE), so it runs so, and
+    F-CTL-16's 18 minutes cost about three minutes of wall time."""
+
+    def __init__(self) -> None:
+        super().__init__()
+        self._train = _LifeWrapsThroughZero(self._train.cfg)
+
+
 class BriskMetro(ReferenceMetro):
     """In band: a 20 ms WTB cycle, quicker takeovers, I/O and command ports every 4 ms, longer sink and
     gateway supervision."""
@@ -672,6 +704,8 @@ FAULTY += [
     (StatusPolledAtOneAddress, "TCN-05", "F-NET-24"),
     (BackupVcuHoldsTheCcuCommand, "RED-05", "F-NET-34"),
     (GatewaylessCcuKeepsItsMvb, "RED-05", "F-NET-34"),
+    (DisplayShowsASilentBus, "TCN-08", "F-DSP-05"),
+    (LifeSignalWrapsThroughZero, "RED-07", "F-CTL-16"),
     (PacketsFromNodeOne, "NET-10", "F-NET-26"),
     (MainCircuitResetsItself, "ILK-06", "F-VSD-02"),
     (BrakeForceTripClearsItself, "ILK-03", "F-ILK-03"),

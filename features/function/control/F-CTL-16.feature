@@ -32,6 +32,18 @@ Feature: F-CTL-16 Redundant MVB I/O modules: module 1 while its life signal is s
     And the cab 1 display shows "inputs from car1.IO2"
     And "car6.CCU" holds a record "inputs from car1.IO2"
 
+  # A living module's life signal is always set, also where a count of refreshes wraps: 16 bits of a port
+  # refreshed at most every 16 ms (the period the contract allows) wrap within 18 minutes.
+  @req:RED-07 @req:TCN-06
+  Scenario: F-CTL-16 Module 1 stays in use for 18 minutes, through any wrap of its life signal
+    Given a wiring fault holds the traction demand input of "car1.IO2" at 30 %
+    And the train has been powered up for 1000 ms
+    When the driver moves the master controller of cab 1 to 60 % traction
+    And 18 min pass
+    Then no VVVF or BECU changes what it applies
+    And every VVVF applies 60 % traction
+    And the cab 1 display does not show "inputs from"
+
   @req:RED-07
   Scenario: F-CTL-16 With module 2's inputs the train follows the master controller
     Given the train has been powered up for 1000 ms

@@ -242,8 +242,10 @@ class ReferenceMetro(PickledState, TrainDriver):
         train = self._train
         seg = train.segments[1 if cab == 1 else 2]
         du = train.devices[f"car{cab}.DU"]
-        master = train.nodes.get(seg.master) if seg.master else None
-        if du.failed or master is None or not master.alive:
+        master = train.nodes[seg.master]
+        # The DU hears the train only through its unit's bus master (TCN-04): with that master silent it has
+        # nothing current to show (docs/decisions.md, "A display whose bus master is silent").
+        if du.failed or not master.alive:
             return {"faults": [], "mode": None, "WTB master": None, "blank": True}
         return {"faults": [r.text if r.origin == master.name else f"{r.origin}: {r.text}" for r in master.known],
                 "mode": train.modes[seg.unit], "WTB master": train.wtb_master, "blank": False}

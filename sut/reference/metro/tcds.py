@@ -69,7 +69,7 @@ class MvbSegment:
         self.unit = unit
         self.bus = bus
         self.ranks = ranks
-        self.master: str | None = ranks[0]
+        self.master: str = ranks[0]     # the last to master the bus; never none
         self.last_master_t = 0
         self.devices = devices
         self.ios = ios
@@ -188,8 +188,8 @@ class MetroTrain:
 
     def _mvb_period_now(self, unit: int) -> None:
         seg = self.segments[unit]
-        master = self.nodes.get(seg.master) if seg.master else None
-        if master is None or not master.masters_mvb:
+        master = self.nodes[seg.master]
+        if not master.masters_mvb:
             return
         t = self.cfg.timing
         k = self.kernel.now // t.mvb_basic_period_us
@@ -387,8 +387,8 @@ class MetroTrain:
             before, self.modes[unit] = self.modes[unit], mode
             self.emit(f"unit{unit}", "mode.change", mode=mode)
             if mode == "train network failure" and before != "power-up":
-                master = self.nodes.get(seg.master) if seg.master else None
-                if master is not None and master.alive:
+                master = self.nodes[seg.master]
+                if master.alive:
                     self._raise(master, "train network failure: braking to a stop")
         active = next((c for c in CAB_CARS if self.desk[c]["key"]), None)
         # The order within one instant is the product's (MetroBehaviour.sinks_last_first, tests/freedom_metro.py).
