@@ -263,6 +263,56 @@ def _(sut: TrainDriver, t_action: int, node: str) -> None:
                            f"behind {analysis.describe(ahead)}")
 
 
+@then("被分析链路上每个节点一次只发送一帧")
+@then("on the analysed links one frame at a time leaves each node")
+def _(sut: TrainDriver, declaration: ProfileDeclaration, t_action: int) -> None:
+    """NET-07, NET-06: a node's transmitter puts one frame at a time on a fibre (frames are not pre-empted,
+    and two at once garble each other): on each analysed span and direction a frame starts no earlier than
+    the one before it ended (to the declared timing resolution)."""
+    tick = declaration.parameter("timing_resolution_us")
+    by_way: dict[tuple[str, str], list] = {}
+    for ev in _tapped(sut, t_action):
+        by_way.setdefault((ev.source, ev["frm"]), []).append(ev)
+    for (span, frm), frames in by_way.items():
+        frames.sort(key=lambda ev: ev["start_us"])
+        for before, after in zip(frames, frames[1:]):
+            assert after["start_us"] >= before["end_us"] - tick, (
+                f"on {span} {frm} started a {after['frame']} frame at {ms(after['start_us'])} while its "
+                f"{before['frame']} frame of {ms(before['start_us'])} lasted until {ms(before['end_us'])}")
+
+
+@then(parsers.parse('被分析链路上"{node}"发往"{to}"的状态帧和数据块帧都不会抢在到达已超过{bound:g} ms的命令帧之前发送'))
+@then(parsers.parse('on the analysed links no status or block frame leaves "{node}" for "{to}" ahead of a command '
+                    'that reached it more than {bound:g} ms before'))
+def _(sut: TrainDriver, declaration: ProfileDeclaration, t_action: int, node: str, to: str, bound: float) -> None:
+    """NET-06 for the commands a node passes on: a command seen arriving on an analysed span into `node`
+    must be on its way within PRO-01's pass-through (`bound`, + the declared timing resolution), or, if the
+    span toward `to` is busy then, be the next frame to start on it: no status or block frame may start on that
+    span between the moment the command was due to leave and the moment it leaves. The same command is known
+    on both spans by its bytes (a node passes a packet on unchanged); one already on the fibre finishes."""
+    tick = declaration.parameter("timing_resolution_us")
+    sent = _tapped(sut, t_action)
+    out = [ev for ev in sent if ev["frm"] == node and ev["to"] == to]
+    lower = [ev for ev in out if ev["frame"] in ("status", "block")]
+    leaving: dict[str, list[int]] = {}
+    for ev in out:
+        if ev["frame"] == "command":
+            leaving.setdefault(ev["hex"], []).append(ev["start_us"])
+    arriving = [ev for ev in sent if ev["to"] == node and ev["frm"] != to and ev["frame"] == "command"]
+    passed = 0
+    for came in arriving:
+        left = next((t for t in leaving.get(came["hex"], ()) if t > came["start_us"]), None)
+        if left is None:
+            continue
+        passed += 1
+        due = came["start_us"] + us(bound) + tick
+        ahead = [ev for ev in lower if due < ev["start_us"] < left]
+        assert not ahead, (f"a command that reached {node} at {ms(came['start_us'])} left for {to} only at "
+                           f"{ms(left)}, behind {analysis.describe(ahead)}")
+    assert passed and lower, (f"the analysers saw {passed} commands pass through {node} to {to} and {len(lower)} "
+                              f"status/block frames leave for it")
+
+
 @then(parsers.parse('"{node}"丢弃被损坏的{frame}帧'), converters={"frame": zh.frame})
 @then(parsers.parse('"{node}" discards the corrupted {frame} frame'))
 def _(sut: TrainDriver, t_action: int, node: str, frame: str) -> None:

@@ -7,11 +7,13 @@ subclass that changes parameters: the reference's code is never edited at run ti
 """
 from __future__ import annotations
 
+import heapq
 import re
 
 from sut.reference.crh2.backend import ReferenceTrain
 from sut.reference.crh2.ccu import Ccu
 from sut.reference.crh2.train import Train
+from sut.reference.crh2.ring import Ring
 from sut.reference.crh2.vehicle import Vehicle
 from tests.wording import reword
 from sut.reference.atp.backend import ReferenceAtp
@@ -769,6 +771,35 @@ class _OwnVehicle(ReferenceTrain):
         return train
 
 
+class _EagerRing(Ring):
+    def _enqueue(self, link, frame, hops):
+        # Every frame goes through the queue, served when the link frees (at once if it is free); but one that
+        # comes while the queue waits for that service, the link already free, takes the link first.
+        if link.queue and link.busy_until <= self.kernel.now:
+            self._start(link, frame, hops)
+            return
+        self._order += 1
+        heapq.heappush(link.queue, (frame.prio if self.by_priority else 0, self._order, frame, hops))
+        if link.timer is None:
+            link.timer = self.kernel.call_at(max(link.busy_until, self.kernel.now), self._link_free, link)
+
+
+class NewcomerAtTheFreeInstant(ReferenceTrain):
+    """NET-06, NET-07: every frame is queued and served when the link frees, but one that reaches a node at
+    the instant its outgoing fibre frees, while the queue there waits for that service, starts at once, and
+    the queue is served at the same instant: a status frame goes out on top of a command that was waiting
+    (the `_enqueue` mutant of seed 16). Rejected by F-NET-06's analysers on both sides of
+    car 1's LCU: one frame at a time, and the command first."""
+
+    @property
+    def train(self) -> Train:
+        fresh = self._train is None
+        train = super().train
+        if fresh:
+            train.ring.__class__ = _EagerRing
+        return train
+
+
 class ReverseRefused(_OwnVehicle):
     """ILK-08 (issue 31, item 4: a held-out fault, described): the direction condition reads "forward", not
     "forward or reverse", so with the direction switch at reverse traction is blocked and no notch reaches a
@@ -778,7 +809,7 @@ class ReverseRefused(_OwnVehicle):
     VEHICLE = _ForwardOnlyTraction
 
 
-FAULTY += [(ReverseRefused, "ILK-08", "F-ILK-08")]
+FAULTY += [(ReverseRefused, "ILK-08", "F-ILK-08"), (NewcomerAtTheFreeInstant, "NET-06", "F-NET-06")]
 
 
 class _GrantLeftAtNode1(Train):
