@@ -29,3 +29,12 @@ Feature: F-MIL-02 Mileage while the speed changes linearly
     And 18 s pass
     And 10 s pass
     Then the mileage is between 0.379 and 0.381 km
+
+  # A speed set while a ramp is under way ends the ramp there: the train holds the new speed.
+  @req:TST-04 @tentative
+  Scenario: F-MIL-02 A ramp cut short: 9 s accelerating at 2 km/h per second, then 10 s at 36 km/h cover 122.5 m
+    When the train speed goes from 0 km/h to 72 km/h at 2 km/h per second
+    And 9 s pass
+    And the train speed changes to 36 km/h
+    And 10 s pass
+    Then the mileage is between 0.1215 and 0.1235 km
