@@ -69,7 +69,7 @@ class MvbSegment:
         self.unit = unit
         self.bus = bus
         self.ranks = ranks
-        self.master: str = ranks[0]     # the last to master the bus; never none
+        self.master: str = ranks[0]     # the last node to master the bus: never None
         self.last_master_t = 0
         self.devices = devices
         self.ios = ios
