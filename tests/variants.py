@@ -757,10 +757,11 @@ class _ForwardOnlyTraction(Vehicle):
         return super()._permitted(emergency, rapid, doors) and (ccu is None or ccu.desk.direction == "forward")
 
 
-class _OwnVehicle(ReferenceTrain):
-    """A CRH2 train whose vehicle is of the class VEHICLE (a subclass of the reference's), from when the train
-    is built: the reference's code is not edited."""
+class _OwnParts(ReferenceTrain):
+    """A CRH2 train whose vehicle is of the class VEHICLE and whose ring of the class RING (subclasses of the
+    reference's), from when the train is built: the reference's code is not edited."""
     VEHICLE: type[Vehicle] = Vehicle
+    RING: type[Ring] = Ring
 
     @property
     def train(self) -> Train:
@@ -768,6 +769,7 @@ class _OwnVehicle(ReferenceTrain):
         train = super().train
         if fresh:
             train.vehicle.__class__ = self.VEHICLE
+            train.ring.__class__ = self.RING
         return train
 
 
@@ -784,23 +786,16 @@ class _EagerRing(Ring):
             link.timer = self.kernel.call_at(max(link.busy_until, self.kernel.now), self._link_free, link)
 
 
-class NewcomerAtTheFreeInstant(ReferenceTrain):
+class NewcomerAtTheFreeInstant(_OwnParts):
     """NET-06, NET-07: every frame is queued and served when the link frees, but one that reaches a node at
     the instant its outgoing fibre frees, while the queue there waits for that service, starts at once, and
     the queue is served at the same instant: a status frame goes out on top of a command that was waiting
     (the `_enqueue` mutant of seed 16). Rejected by F-NET-06's analysers on both sides of
     car 1's LCU: one frame at a time, and the command first."""
-
-    @property
-    def train(self) -> Train:
-        fresh = self._train is None
-        train = super().train
-        if fresh:
-            train.ring.__class__ = _EagerRing
-        return train
+    RING = _EagerRing
 
 
-class ReverseRefused(_OwnVehicle):
+class ReverseRefused(_OwnParts):
     """ILK-08 (issue 31, item 4: a held-out fault, described): the direction condition reads "forward", not
     "forward or reverse", so with the direction switch at reverse traction is blocked and no notch reaches a
     CI. Before, only F-CTL-11's "In reverse the driver's notch reaches every CI" (tagged CMD-05) drove in
@@ -1410,7 +1405,7 @@ class _PressureUnstatedAtPowerUp(Vehicle):
             del self.train.emit
 
 
-class PowerUpStatementWithoutPressure(_OwnVehicle):
+class PowerUpStatementWithoutPressure(_OwnParts):
     """CMD-02/ILK-01 (contract crh2.yaml, out.change: `pressure` a number): the optional statement of every
     output at power-up carries no pressure (make mutate seed 10's survivor of vehicle.py:196). No step selects
     those statements; a scenario's end holds every listed kind's first events to its entry."""
