@@ -96,6 +96,43 @@ def _(sut: TrainDriver, units: str) -> int:
     return sut.now_us
 
 
+# How many of its WTB polls a node may leave unanswered before the master records it as silent: the SUT's
+# declared count (form: wtb_silent_polls), else the contract's documented 3.
+WTB_SILENT_POLLS = 3
+
+
+@when(parsers.re(r'"(?P<node>[^"]+)"对WTB轮询连续不应答声明的次数(?:减(?P<less>\d+)次)?'), target_fixture="t_action")
+@when(parsers.re(r'"(?P<node>[^"]+)" leaves the declared count of WTB polls unanswered(?: less (?P<less>\d+))?'),
+      target_fixture="t_action")
+def _(sut: TrainDriver, declaration: ProfileDeclaration, node: str, less: str | None) -> int:
+    # The node fails just after a poll it answered and is repaired just after its last unanswered one, so the
+    # silence spans exactly that many polls whatever the WTB's cycle; it must answer the next poll again, or the
+    # scenario would test a longer silence than it says.
+    count = declaration.parameters.get("wtb_silent_polls", WTB_SILENT_POLLS) - int(less or 0)
+    assert count >= 0, f"{node} cannot leave {count} polls unanswered (declared wtb_silent_polls less {less})"
+
+    def polls_since(t: int) -> list:
+        return [p for p in _polls(sut, "WTB", t) if p["polled"] == node]
+
+    def run_until(t: int, answered: bool, n: int) -> None:
+        deadline = sut.now_us + (n + 1) * WTB_CYCLE_US + us(5)
+        while len([p for p in polls_since(t) if p["answered"] == answered]) < n:
+            assert sut.now_us < deadline, f"{node}: {n} {'answered' if answered else 'unanswered'} WTB polls " \
+                                          f"expected since {ms(t)}, saw {describe(polls_since(t))}"
+            sut.advance_ms(1)
+
+    run_until(sut.now_us, True, 1)
+    t_fail = sut.now_us
+    sut.fail(node)
+    run_until(t_fail, False, count)
+    sut.repair(node)
+    t_repair = sut.now_us
+    run_until(t_repair, True, 1)
+    late = [p for p in polls_since(t_repair) if not p["answered"]]
+    assert not late, f"{node} did not answer the WTB at once after its repair at {ms(t_repair)}: {describe(late)}"
+    return t_fail
+
+
 @given(parsers.parse('"{bus}"的线路{line:w}已被切断'))
 @given(parsers.parse('line {line:w} of "{bus}" is cut'))
 @when(parsers.parse('"{bus}"的线路{line:w}被切断'), target_fixture="t_action")

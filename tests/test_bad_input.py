@@ -116,6 +116,28 @@ def test_configure_without_arguments_keeps_the_interfaces_defaults() -> None:
         assert len(lcus) == cars, (given, train.ring_nodes())
 
 
+def test_a_silent_signal_generator_is_no_bad_input() -> None:
+    # The contract's carrier: a ZPW-2000 carrier or 0, the generator silent. Refusing 0 is a usage error of its own.
+    train = open_backend("reference", "atp")
+    train.set_input("carrier", 0)
+    assert train.input("carrier") == 0
+    train.shutdown()
+
+
+def test_a_vdx_supply_switched_off_twice_is_no_bad_input() -> None:
+    # power_off('VDX') again while it is off: nothing to switch, no error (the checker found a VDX that
+    # stopped its self-test cycle a second time and crashed).
+    train = open_backend("reference", "vdx")
+    train.power_on()
+    for _ in range(2):
+        train.power_off("VDX")
+        train.advance(1000)
+    train.restore_power("VDX")
+    train.advance(1000)
+    assert train.output("EB loop") in ("open", "closed")
+    train.shutdown()
+
+
 def test_unknown_backend() -> None:
     with pytest.raises(UnknownName, match="no SUT backend named 'rig42'"):
         resolve("rig42")
@@ -196,6 +218,9 @@ def test_ramp_needs_a_positive_rate_and_a_number(train) -> None:
     ("atp", lambda t: t.power_off("DCU"), UnknownName, ["supply", "DCU", "VDX"]),
     ("atp", lambda t: t.configure(sets=2), OutOfRange, ["train sets 2"]),
     ("atp", lambda t: t.set_input("carrier", 1800), OutOfRange, ["carrier 1800", "1700, 2000, 2300, 2600"]),
+    # 0 is the generator sending no carrier; 1 Hz is no carrier of either set (seed 18 took `value != 1` for
+    # `value != 0` and no scenario noticed).
+    ("atp", lambda t: t.set_input("carrier", 1), OutOfRange, ["carrier 1", "1700, 2000, 2300, 2600", "0 (none)"]),
     ("atp", lambda t: t.set_input("speed", -5), OutOfRange, ["speed -5"]),
     ("atp", lambda t: t.set_input("speed", 350.5), OutOfRange, ["speed 350.5", "0..350"]),
     ("atp", lambda t: t.set_input("speed", -0.5), OutOfRange, ["speed -0.5", "0..350"]),

@@ -1,6 +1,6 @@
 @item:F-NET-22 @profile:metro-tcn @req:TST-04
 Feature: F-NET-22 WTB master fallback: car 1 CCU, then car 2 VCU, then car 3 VCU
-  Requirements: RED-04 (primary), RED-05, TST-04.
+  Requirements: RED-04 (primary), RED-05, TCN-04, TST-04.
   Only the car 1 CCU sends WTB master frames; when it fails the car 2 VCU takes over, and when that fails
   too the car 3 VCU. Nothing in the other unit ever becomes WTB master, and the WTB stops only when all
   three have failed. Bounds chosen by the suite (the article gives none): a fallback completes within 10
@@ -73,3 +73,15 @@ Feature: F-NET-22 WTB master fallback: car 1 CCU, then car 2 VCU, then car 3 VCU
     And no WTB master frame comes from "car3.VCU", "car4.VCU", "car5.VCU", "car6.CCU"
     And "car6.CCU" holds the record "car1.CCU: no answer on WTB" exactly once
     And every VVVF applies 60 % traction
+
+  # The count is the SUT's declared wtb_silent_polls (the articles give none): held to its own word both ways.
+  @req:RED-04 @req:TCN-04 @tentative
+  Scenario: F-NET-22 A node is recorded as silent on the WTB after the declared count of unanswered polls, not one poll sooner
+    When "car4.VCU" leaves the declared count of WTB polls unanswered less 1
+    And 200 ms pass
+    Then "car1.CCU" holds no record "car4.VCU: no answer on WTB"
+    And "car6.CCU" holds no record "car4.VCU: no answer on WTB"
+    When "car4.VCU" leaves the declared count of WTB polls unanswered
+    And 200 ms pass
+    Then "car6.CCU" holds the record "car4.VCU: no answer on WTB" exactly once
+    And "car6.CCU" holds the record "car4.VCU: answering on WTB again" exactly once

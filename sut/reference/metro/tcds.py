@@ -112,9 +112,11 @@ class MetroTrain:
                     self.devices[name] = Device(name, car, kind)
         # Device address on its MVB: car number x 16 + place in the car (12-bit logical addresses).
         self.device_addresses = {}
-        for car in range(1, 7):
-            in_car = [d for d in self.devices.values() if d.car == car]
-            self.device_addresses.update({d.name: car * 16 + i for i, d in enumerate(in_car)})
+        placed: dict[int, int] = {}
+        for d in self.devices.values():
+            place = placed.get(d.car, 0)
+            self.device_addresses[d.name] = d.car * 16 + place
+            placed[d.car] = place + 1
         self.segments: dict[int, MvbSegment] = {}
         for unit, cars in UNIT_CARS.items():
             cab = cars[0] if unit == 1 else cars[-1]
