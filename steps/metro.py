@@ -9,6 +9,7 @@ names filled in, and the SUT's declaration says how it words that message (any l
 from __future__ import annotations
 
 import re
+from typing import Callable
 
 from pytest_bdd import given, parsers, then, when
 
@@ -96,41 +97,61 @@ def _(sut: TrainDriver, units: str) -> int:
     return sut.now_us
 
 
-# How many of its WTB polls a node may leave unanswered before the master records it as silent: the SUT's
-# declared count (form: wtb_silent_polls), else the contract's documented 3.
-WTB_SILENT_POLLS = 3
+# How many polls in a row a node (WTB) or a device (its unit's MVB status polls) may leave unanswered before
+# it is recorded as silent: the SUT's declared counts (form: wtb_silent_polls, status_silent_polls), else the
+# contract's documented 3. The articles give none (docs/decisions.md).
+SILENT_POLLS = 3
+STATUS_POLL_BOUND_US = 1_000_000    # only to stop a step waiting for a poll that never comes: TCN-04 gives no period
+
+
+def _silent_for(sut: TrainDriver, name: str, count: int, polls_since: Callable[[int], list],
+                answered: Callable[[object], bool], cycle_us: int, what: str) -> int:
+    """Fail `name` just after a poll it answered and repair it just after its `count`-th unanswered one, so the
+    silence spans exactly that many polls whatever the cycle; it must answer the next poll again, or the scenario
+    would test a longer silence than it says. The instant it failed."""
+    assert count >= 0, f"{name} cannot leave {count} {what} unanswered"
+
+    def run_until(t: int, want: bool, n: int) -> None:
+        deadline = sut.now_us + (n + 1) * cycle_us + us(5)
+        while len([p for p in polls_since(t) if answered(p) == want]) < n:
+            assert sut.now_us < deadline, f"{name}: {n} {'answered' if want else 'unanswered'} {what} expected " \
+                                          f"since {ms(t)}, saw {describe(polls_since(t))}"
+            sut.advance_ms(1)
+
+    run_until(sut.now_us, True, 1)
+    t_fail = sut.now_us
+    sut.fail(name)
+    run_until(t_fail, False, count)
+    sut.repair(name)
+    t_repair = sut.now_us
+    run_until(t_repair, True, 1)
+    late = [p for p in polls_since(t_repair) if not answered(p)]
+    assert not late, f"{name} did not answer its {what} at once after its repair at {ms(t_repair)}: {describe(late)}"
+    return t_fail
 
 
 @when(parsers.re(r'"(?P<node>[^"]+)"对WTB轮询连续不应答声明的次数(?:减(?P<less>\d+)次)?'), target_fixture="t_action")
 @when(parsers.re(r'"(?P<node>[^"]+)" leaves the declared count of WTB polls unanswered(?: less (?P<less>\d+))?'),
       target_fixture="t_action")
 def _(sut: TrainDriver, declaration: ProfileDeclaration, node: str, less: str | None) -> int:
-    # The node fails just after a poll it answered and is repaired just after its last unanswered one, so the
-    # silence spans exactly that many polls whatever the WTB's cycle; it must answer the next poll again, or the
-    # scenario would test a longer silence than it says.
-    count = declaration.parameters.get("wtb_silent_polls", WTB_SILENT_POLLS) - int(less or 0)
-    assert count >= 0, f"{node} cannot leave {count} polls unanswered (declared wtb_silent_polls less {less})"
+    count = declaration.parameters.get("wtb_silent_polls", SILENT_POLLS) - int(less or 0)
+    return _silent_for(sut, node, count, lambda t: [p for p in _polls(sut, "WTB", t) if p["polled"] == node],
+                       lambda p: p["answered"], WTB_CYCLE_US, "WTB polls")
 
-    def polls_since(t: int) -> list:
-        return [p for p in _polls(sut, "WTB", t) if p["polled"] == node]
 
-    def run_until(t: int, answered: bool, n: int) -> None:
-        deadline = sut.now_us + (n + 1) * WTB_CYCLE_US + us(5)
-        while len([p for p in polls_since(t) if p["answered"] == answered]) < n:
-            assert sut.now_us < deadline, f"{node}: {n} {'answered' if answered else 'unanswered'} WTB polls " \
-                                          f"expected since {ms(t)}, saw {describe(polls_since(t))}"
-            sut.advance_ms(1)
-
-    run_until(sut.now_us, True, 1)
-    t_fail = sut.now_us
-    sut.fail(node)
-    run_until(t_fail, False, count)
-    sut.repair(node)
-    t_repair = sut.now_us
-    run_until(t_repair, True, 1)
-    late = [p for p in polls_since(t_repair) if not p["answered"]]
-    assert not late, f"{node} did not answer the WTB at once after its repair at {ms(t_repair)}: {describe(late)}"
-    return t_fail
+@when(parsers.re(r'"(?P<device>[^"]+)"对状态轮询连续不应答声明的次数(?:减(?P<less>\d+)次)?'), target_fixture="t_action")
+@when(parsers.re(r'"(?P<device>[^"]+)" leaves the declared count of status polls unanswered(?: less (?P<less>\d+))?'),
+      target_fixture="t_action")
+def _(sut: TrainDriver, declaration: ProfileDeclaration, device: str, less: str | None) -> int:
+    # Its status polls are told by the address the master polls it at (the SUT's own address plan), read off a
+    # poll it answered (F_code 15, device status: TCN-04, TCN-06).
+    count = declaration.parameters.get("status_silent_polls", SILENT_POLLS) - int(less or 0)
+    status = [p for p in sut.trace.select(kind="mvb.msg") if p["f_code"] == 15 and p["responder"] == device]
+    assert status, f"no MVB master has polled {device} for its status and had an answer"
+    address, bus = status[-1]["address"], status[-1].source
+    return _silent_for(sut, device, count,
+                       lambda t: [p for p in _polls(sut, bus, t) if p["f_code"] == 15 and p["address"] == address],
+                       lambda p: p["responder"] == device, STATUS_POLL_BOUND_US, "status polls")
 
 
 @given(parsers.parse('"{bus}"的线路{line:w}已被切断'))

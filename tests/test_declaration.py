@@ -240,6 +240,19 @@ def test_a_metro_declares_the_io_map_it_has(cls: type) -> None:
         assert declared[name] == actual, f"{cls.__name__} declares {name}={declared[name]}, is wired {actual}"
 
 
+@pytest.mark.parametrize("cls", [c for c in [ReferenceMetro, *IN_BAND, *FREEDOM] if issubclass(c, ReferenceMetro)],
+                         ids=lambda c: c.__name__)
+def test_a_metro_declares_the_silent_polls_it_counts(cls: type) -> None:
+    from steps.metro import SILENT_POLLS     # what a declaration that names no count stands for
+    from sut.reference.metro.config import MetroConfig
+
+    declared = of_backend(cls).of("metro-tcn").parameters
+    counts = MetroConfig().with_timing(**cls.TIMING).timing.status_silence_polls
+    for name in ("wtb_silent_polls", "status_silent_polls"):
+        assert declared.get(name, SILENT_POLLS) == counts, f"{cls.__name__} declares {name}={declared.get(name)}, " \
+                                                           f"counts {counts}"
+
+
 @pytest.mark.parametrize("cls", [c for c in [ReferenceAtp, *IN_BAND, *FREEDOM]
                                  if issubclass(c, ReferenceAtp) and "vdx" in c.PROFILES], ids=lambda c: c.__name__)
 def test_a_vdx_measures_its_supply_within_its_declared_accuracy(cls: type) -> None:

@@ -38,3 +38,15 @@ Feature: F-DIA-04 Device status polled over the MVB and faults shown on both dis
     And 500 ms pass
     Then the cab 1 display shows "car3.VVVF: answering again"
     And "car6.CCU" holds the record "car3.VVVF: answering again" exactly once
+
+  # The count is the SUT's declared status_silent_polls (the articles give none): held to its own word both ways.
+  @req:TCN-04 @tentative
+  Scenario: F-DIA-04 A device is reported after the declared count of unanswered status polls, not one poll sooner
+    When "car3.VVVF" leaves the declared count of status polls unanswered less 1
+    And 200 ms pass
+    Then the cab 1 display does not show "car3.VVVF: no status data"
+    And "car6.CCU" holds no record "car3.VVVF: no status data"
+    When "car3.VVVF" leaves the declared count of status polls unanswered
+    And 200 ms pass
+    Then "car6.CCU" holds the record "car3.VVVF: no status data" exactly once
+    And "car6.CCU" holds the record "car3.VVVF: answering again" exactly once
