@@ -242,6 +242,9 @@ def test_ramp_needs_a_positive_rate_and_a_number(train) -> None:
      ["emergency operation switch 1", "True"]),
     (None, lambda t: t.set_supply_voltage("train 110V", 500), OutOfRange, ["supply voltage 500", "0 .. 220 V"]),
     (None, lambda t: t.set_temperature("train", 125.5), OutOfRange, ["temperature 125.5", "-60 .. 125 degC"]),
+    # A unit the environment does not know names the units it does (seed 19 made the list None).
+    (None, lambda t: t.set_temperature("car9.CCU", 20), UnknownName, ["unit", "'car9.CCU'", "car1.CCU.sys1", "train"]),
+    (None, lambda t: t.withstand_test("train", 1000, 1000), UnknownName, ["unit", "'train'", "car8.LCU"]),
     (None, lambda t: t.vibrate("car3.LCU", 0, 5, 10_000), OutOfRange, ["contact interruption 0", ">= 1"]),
     (None, lambda t: t.vibrate("car3.LCU", 2_000, 5, 2_000), OutOfRange,
      ["interruption period 2000", ">= 2001"]),

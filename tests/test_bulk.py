@@ -258,6 +258,20 @@ def test_the_atp_rig_agrees_both_ways_through_brake_demands_and_a_low_supply() -
     assert_same_rig(exact, fast)
 
 
+def test_the_atp_rig_s_sampled_soak_agrees_both_ways_and_shows_the_frame_by_frame_trace() -> None:
+    # An ATP rig keeps no free marks list of its own: a sample on a copy must still land in its trace (the
+    # checker found a bulk.py that extended None there).
+    exact, fast = atp_rig(), atp_rig()
+    with frame_by_frame():
+        exact.advance(2 * MIN)
+    fast.soak(2 * MIN, sample_every_us=10 * S)
+    assert_same_rig(exact, fast)
+    gaps = skipped(fast)
+    seen = [ev for ev in fast.trace if ev.kind not in ("time.skip", "bulk.report")]
+    assert gaps and len(seen) > 0, "the soak skipped nothing or showed nothing"
+    assert seen == [ev for ev in exact.trace if not any(frm < ev.t <= to for frm, to in gaps)]
+
+
 def test_the_atp_fitted_to_a_crh2_set_agrees_both_ways() -> None:
     exact, fast = atp_rig(fitted=True), atp_rig(fitted=True)
     with frame_by_frame():

@@ -23,6 +23,16 @@ Feature: H-PWR-02 A longer interruption of one CCU system: takeover, nothing los
     And "car1.CCU.sys1" puts no commands on the ring from 100 ms on
     And the maintenance view of cab 1 lists "car1.CCU.sys1.supply restarted"
 
+  @req:TST-02 @req:RED-01 @req:RED-02 @tentative
+  Scenario: H-PWR-02 A second interruption while CCU system 1 boots: it still comes back as standby once the supply holds
+    When the supply "car1.CCU.sys1" is interrupted for 100 ms
+    And 200 ms pass
+    And the supply "car1.CCU.sys1" is interrupted for 100 ms
+    And the cab 1 monitor is watched for 2000 ms
+    Then "car1.CCU.sys1" sends status data again within 1000 ms
+    And "car1.CCU.sys1" puts no commands on the ring from 100 ms on
+    And no CI or BCU goes without a command for more than 75 ms
+
   @req:TST-02 @req:RED-02 @req:PRO-06
   Scenario: H-PWR-02 The recorder loses no block data across the takeover
     When "car5.LCU" asks to send a 600-byte record as block data
