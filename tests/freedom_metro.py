@@ -109,6 +109,19 @@ class TaskTickMetro(ReferenceMetro):
 FREEDOM += [TaskTickMetro]
 
 
+# -- declared-parameters: its own counts of silent polls --------------------------------------------------------
+class OwnSilentPollsMetro(ReferenceMetro):
+    """Freedom (declared parameters): a node silent on the WTB and a device silent to its status polls are
+    reported after 5 polls, not 3 (the articles give no count), declared as wtb_silent_polls and
+    status_silent_polls 5 (tests/declarations/own-silent-polls-metro.yaml)."""
+    FREEDOM_CLASS = "declared-parameters"
+    DECLARATION = "tests/declarations/own-silent-polls-metro.yaml"
+    TIMING = {"status_silence_polls": 5}
+
+
+FREEDOM += [OwnSilentPollsMetro]
+
+
 # -- simultaneous-ordering: what changes at one instant, in another order ------------------------------------
 class SinksLastFirstMetro(ReferenceMetro):
     """Freedom (simultaneous ordering): a unit refreshes its VVVFs and BECUs in the reverse order, so what
