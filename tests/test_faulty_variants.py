@@ -173,3 +173,25 @@ def test_a_freedom_variant_exercises_its_freedom(variant: type, tmp_path: Path) 
     assert traces["reference"], f"{item} wrote no trace"
     assert traces["reference"] != traces["variant"], \
         f"{variant.__name__}: the traces of {item} are the reference's, so its freedom is never exercised there"
+
+
+def test_an_in_band_variant_of_the_atp02_edge_differs_where_the_features_do_not_look() -> None:
+    """TouchingSectionOutsideTheRange is accepted (above) and is not the reference: with the receiver range's
+    front exactly on a section boundary it finds the next section's carrier inconsistent, the reference
+    consistent. F-ATP-08 tests 0.1 m either side, so both readings of "overlapping" pass."""
+    from sut.backends import open_backend
+
+    shown = {}
+    for name in ("reference", "tests.variants:TouchingSectionOutsideTheRange"):
+        atp = open_backend(name, "atp")
+        atp.power_on()
+        atp.advance(22_000_000)                              # past the DEF start-up self-test
+        atp.set_input("speed", 0)
+        atp.set_input("position", 1000 - 5.0 + 3.0)          # Dmax = front + 5 m uncertainty - 3 m D_Sen = 1000 m
+        atp.pass_balise("2-1-1-1", [{"type": "CTCS-1", "sections": [(0.0, 1000.0, 1700), (1000.0, 1000.0, 2300)]},
+                                    {"type": "MA", "end_m": 3000}])
+        atp.set_input("carrier", 2300)
+        atp.set_input("low frequency code", "L")
+        atp.advance(500_000)
+        shown[name] = atp.monitor(1)["faults"]
+    assert shown == {"reference": [], "tests.variants:TouchingSectionOutsideTheRange": ["carrier inconsistent"]}

@@ -8,6 +8,7 @@ subclass that changes parameters: the reference's code is never edited at run ti
 from __future__ import annotations
 
 import heapq
+import math
 import re
 
 from sut.reference.crh2.backend import ReferenceTrain
@@ -1263,7 +1264,27 @@ class TaskTickVdx(ReferenceAtp):
     DECLARATION = "tests/declarations/task-tick-vdx.yaml"
 
 
-IN_BAND += [AnotherCoil, AnotherAtpRig]
+class _HalfOpenRange(OnboardAtp):
+    """The ATP of TouchingSectionOutsideTheRange."""
+    BULK_READABLE = True          # no state of its own: bulk.py reads it as it reads its base
+
+    def receiver_range(self) -> tuple[float, float]:
+        d_min, d_max = super().receiver_range()
+        return d_min, math.nextafter(d_max, -math.inf)
+
+
+class TouchingSectionOutsideTheRange(ReferenceAtp):
+    """In band: a track circuit that starts exactly at Dmax does not overlap the receiver range (ATP-02 says
+    "overlapping" and leaves a touching section open; seed 18's `start_m < d_max`). The features test the edge
+    0.1 m either side (F-ATP-08), not the one point where the two readings differ."""
+    BULK_READABLE = True
+
+    def _build(self) -> None:
+        super()._build()
+        self.atp = _HalfOpenRange(self.kernel, self._cfg.atp, self._emit, on_brake=self._brake_to_train)
+
+
+IN_BAND += [AnotherCoil, AnotherAtpRig, TouchingSectionOutsideTheRange]
 # Design freedoms a conforming product may take (issue 30), each with its own declaration: the whole suite
 # must accept them, as the in-band variants.
 FREEDOM = [ChineseDmiAtp, TaskTickVdx, ChineseDisplayMetro, ChineseMonitorCrh2, FarDeclaredAtp]
