@@ -125,8 +125,10 @@ def _silent_for(sut: TrainDriver, name: str, count: int, polls_since: Callable[[
     sut.repair(name)
     t_repair = sut.now_us
     run_until(t_repair, True, 1)
-    late = [p for p in polls_since(t_repair) if not answered(p)]
-    assert not late, f"{name} did not answer its {what} at once after its repair at {ms(t_repair)}: {describe(late)}"
+    # Counted from the failure, not the repair: the last unanswered poll may share the repair's instant.
+    missed = [p for p in polls_since(t_fail) if not answered(p)]
+    assert len(missed) == count, f"{name} did not answer its {what} at once after its repair at " \
+                                 f"{ms(t_repair)}: {len(missed)} unanswered, not {count}: {describe(missed)}"
     return t_fail
 
 
