@@ -137,7 +137,8 @@ def _silent_for(sut: TrainDriver, name: str, count: int, polls_since: Callable[[
       target_fixture="t_action")
 def _(sut: TrainDriver, declaration: ProfileDeclaration, node: str, less: str | None) -> int:
     count = declaration.parameters.get("wtb_silent_polls", SILENT_POLLS) - int(less or 0)
-    return _silent_for(sut, node, count, lambda t: [p for p in _polls(sut, "WTB", t) if p["polled"] == node],
+    return _silent_for(sut, node, count,
+                       lambda t: sut.trace.select(kind="wtb.msg", source="WTB", since=t, polled=node),
                        lambda p: p["answered"], WTB_CYCLE_US, "WTB polls")
 
 
@@ -148,11 +149,11 @@ def _(sut: TrainDriver, declaration: ProfileDeclaration, device: str, less: str 
     # Its status polls are told by the address the master polls it at (the SUT's own address plan), read off a
     # poll it answered (F_code 15, device status: TCN-04, TCN-06).
     count = declaration.parameters.get("status_silent_polls", SILENT_POLLS) - int(less or 0)
-    status = [p for p in sut.trace.select(kind="mvb.msg") if p["f_code"] == 15 and p["responder"] == device]
+    status = sut.trace.select(kind="mvb.msg", f_code=15, responder=device)
     assert status, f"no MVB master has polled {device} for its status and had an answer"
     address, bus = status[-1]["address"], status[-1].source
     return _silent_for(sut, device, count,
-                       lambda t: [p for p in _polls(sut, bus, t) if p["f_code"] == 15 and p["address"] == address],
+                       lambda t: sut.trace.select(kind="mvb.msg", source=bus, since=t, f_code=15, address=address),
                        lambda p: p["responder"] == device, STATUS_POLL_BOUND_US, "status polls")
 
 

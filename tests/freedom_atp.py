@@ -50,10 +50,7 @@ class TaskTickAtp(ReferenceAtp):
     2.2 s steps and 22 s and ATP-03's comparisons are met within the tick; held to 1 us, the DEF steps fail."""
     FREEDOM_CLASS = "task-tick"
     DECLARATION = "tests/declarations/task-tick-atp.yaml"
-
-    def _build(self) -> None:
-        super()._build()
-        self.atp = _TickedOnboard(self.kernel, self._cfg.atp, self._emit, on_brake=self._brake_to_train)
+    ONBOARD = _TickedOnboard
 
 
 # -- actuator-latency (vdx): the ATP's brake reaches the FS output later ----------------------------------
@@ -89,10 +86,7 @@ class LateFsVdx(ReferenceAtp):
     features measure the relay from the FS output going off, not from the command."""
     FREEDOM_CLASS = "actuator-latency"
     EXERCISED_BY = "F-ATP-04"
-
-    def _build(self) -> None:
-        super()._build()
-        self.vdx = _LateFsVdx(self.kernel, self._cfg.vdx, self._emit, on_loop=self._brake_to_train)
+    VDX_INTERFACE = _LateFsVdx
 
 
 # -- range-edge-tolerance (vdx): a supply measurement 0.3 % high -------------------------------------------
@@ -205,10 +199,7 @@ class ReversedInstantAtp(ReferenceAtp):
     reverse order (the brake before the inconsistency that caused it, the report before its comparison)."""
     FREEDOM_CLASS = "simultaneous-ordering"
     EXERCISED_BY = "F-ATP-08"
-
-    def _build(self) -> None:
-        super()._build()
-        self.atp = _ReversedOnboard(self.kernel, self._cfg.atp, self._emit, on_brake=self._brake_to_train)
+    ONBOARD = _ReversedOnboard
 
 
 class ReversedInstantVdx(ReferenceAtp):
@@ -216,10 +207,7 @@ class ReversedInstantVdx(ReferenceAtp):
     FS output off before the C019 and the self-test's end that raised it)."""
     FREEDOM_CLASS = "simultaneous-ordering"
     EXERCISED_BY = "F-ATP-05"
-
-    def _build(self) -> None:
-        super()._build()
-        self.vdx = _ReversedVdx(self.kernel, self._cfg.vdx, self._emit, on_loop=self._brake_to_train)
+    VDX_INTERFACE = _ReversedVdx
 
 
 # -- optional-feature (atp): a DMI that announces each mode change ------------------------------------------
@@ -237,10 +225,7 @@ class ModeAnnouncingDmiAtp(ReferenceAtp):
     shows nothing else."""
     FREEDOM_CLASS = "optional-feature"
     EXERCISED_BY = "F-ATP-11"
-
-    def _build(self) -> None:
-        super()._build()
-        self.atp = _AnnouncingOnboard(self.kernel, self._cfg.atp, self._emit, on_brake=self._brake_to_train)
+    ONBOARD = _AnnouncingOnboard
 
 
 # -- optional-feature (vdx): the VDX reads the isolation switch and brakes its own outputs while isolated ---------
@@ -269,10 +254,7 @@ class BrakesWhileIsolatedVdx(ReferenceAtp):
     isolation, not at the ATP's later brake."""
     FREEDOM_CLASS = "optional-feature"
     EXERCISED_BY = "F-ATP-04"
-
-    def _build(self) -> None:
-        super()._build()
-        self.vdx = _IsolationReadingVdx(self.kernel, self._cfg.vdx, self._emit, on_loop=self._brake_to_train)
+    VDX_INTERFACE = _IsolationReadingVdx
 
 
 # -- product-choice (atp, atp-crh2): which brake holds the train after a failed DEF self-test -------------------

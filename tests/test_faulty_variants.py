@@ -180,14 +180,18 @@ def test_an_in_band_variant_of_the_atp02_edge_differs_where_the_features_do_not_
     front exactly on a section boundary it finds the next section's carrier inconsistent, the reference
     consistent. F-ATP-08 tests 0.1 m either side, so both readings of "overlapping" pass."""
     from sut.backends import open_backend
+    from sut.contract.declaration import of_backend
+    from sut.reference.atp.backend import ReferenceAtp
 
+    declared = of_backend(ReferenceAtp).of("atp").parameters     # the variant declares none of its own
+    front = 1000 - declared["position_uncertainty_m"] + declared["d_sen_m"]     # Dmax = 1000 m
     shown = {}
     for name in ("reference", "tests.variants:TouchingSectionOutsideTheRange"):
         atp = open_backend(name, "atp")
         atp.power_on()
         atp.advance(22_000_000)                              # past the DEF start-up self-test
         atp.set_input("speed", 0)
-        atp.set_input("position", 1000 - 5.0 + 3.0)          # Dmax = front + 5 m uncertainty - 3 m D_Sen = 1000 m
+        atp.set_input("position", front)
         atp.pass_balise("2-1-1-1", [{"type": "CTCS-1", "sections": [(0.0, 1000.0, 1700), (1000.0, 1000.0, 2300)]},
                                     {"type": "MA", "end_m": 3000}])
         atp.set_input("carrier", 2300)

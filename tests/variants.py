@@ -1155,10 +1155,7 @@ class CfskFaultsRecordedOnceAWhile(ReferenceAtp):
     reaches the safety computer and the DMI): two faults close together leave one record. F-ATP-15's "a faulty
     CFSK is recorded and sends no decoded result" finds it, and F-ATP-07's "Two CFSK faults a second apart are
     both recorded" (before it, F-ATP-07 failed the CFSK once only)."""
-
-    def _build(self) -> None:
-        super()._build()
-        self.atp = _RecordsOneFaultAWhile(self.kernel, self._cfg.atp, self._emit, on_brake=self._brake_to_train)
+    ONBOARD = _RecordsOneFaultAWhile
 
 
 FAULTY += [(CfskFaultsRecordedOnceAWhile, "ATP-05", "F-ATP-15")]
@@ -1191,10 +1188,7 @@ class FaultRecordNamesTheLastCarrier(ReferenceAtp):
     """ATP-05 with ATP-01: the record of a CFSK fault names the carrier confirmed before it failed, as if the
     failed board still decoded it (make mutate seed 13's survivor of atp/onboard.py:199 named a carrier of 1 Hz).
     Rejected by F-ATP-07's "A failed CFSK's record names no carrier" (a project decision: docs/decisions.md)."""
-
-    def _build(self) -> None:
-        super()._build()
-        self.atp = _RecordsTheLastCarrier(self.kernel, self._cfg.atp, self._emit, on_brake=self._brake_to_train)
+    ONBOARD = _RecordsTheLastCarrier
 
 
 FAULTY += [(FaultRecordNamesTheLastCarrier, "ATP-05", "F-ATP-07")]
@@ -1278,10 +1272,7 @@ class TouchingSectionOutsideTheRange(ReferenceAtp):
     "overlapping" and leaves a touching section open; seed 18's `start_m < d_max`). The features test the edge
     0.1 m either side (F-ATP-08), not the one point where the two readings differ."""
     BULK_READABLE = True
-
-    def _build(self) -> None:
-        super()._build()
-        self.atp = _HalfOpenRange(self.kernel, self._cfg.atp, self._emit, on_brake=self._brake_to_train)
+    ONBOARD = _HalfOpenRange
 
 
 IN_BAND += [AnotherCoil, AnotherAtpRig, TouchingSectionOutsideTheRange]
@@ -1402,11 +1393,7 @@ class SelfTestPostponedFromACancelledRelease(ReferenceAtp):
     """VDX-06: a self-test due while the brake is applied is postponed from the release before that brake and
     runs when the brake is released again, a few ms after that release: the coil is charged and the new
     firmware raises C019 (make mutate seed 10's survivor of vdx.py:147, `or` made `and`)."""
-
-    def _build(self) -> None:
-        super()._build()
-        self.vdx = _VdxPostponesFromACancelledRelease(self.kernel, self._cfg.vdx, self._emit,
-                                                      on_loop=self._brake_to_train)
+    VDX_INTERFACE = _VdxPostponesFromACancelledRelease
 
 
 FAULTY += [(SelfTestPostponedFromACancelledRelease, "VDX-06", "F-ATP-06")]

@@ -58,6 +58,9 @@ class ReferenceAtp(PickledState, TrainDriver):
     ATP: ClassVar[dict[str, Any]] = {}
     # The CRH2 set the ATP is fitted to (atp-crh2): a faulty variant fits one of the train's own variants.
     TRAIN: ClassVar[type[ReferenceTrain]] = ReferenceTrain
+    # The two parts, as classes a variant may subclass (tests/variants.py): built once, by _build.
+    VDX_INTERFACE: ClassVar[type[VdxInterface]] = VdxInterface
+    ONBOARD: ClassVar[type[OnboardAtp]] = OnboardAtp
 
     def __init__(self) -> None:
         super().__init__()
@@ -69,8 +72,8 @@ class ReferenceAtp(PickledState, TrainDriver):
         self._build()
 
     def _build(self) -> None:
-        self.vdx = VdxInterface(self.kernel, self._cfg.vdx, self._emit, on_loop=self._brake_to_train)
-        self.atp = OnboardAtp(self.kernel, self._cfg.atp, self._emit, on_brake=self._brake_to_train)
+        self.vdx = self.VDX_INTERFACE(self.kernel, self._cfg.vdx, self._emit, on_loop=self._brake_to_train)
+        self.atp = self.ONBOARD(self.kernel, self._cfg.atp, self._emit, on_brake=self._brake_to_train)
 
     def _brake_to_train(self) -> None:
         """ILK-08: the ATP's brake as the CRH2 train's `ATP brake` input."""
