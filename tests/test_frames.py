@@ -31,7 +31,7 @@ valid_data = st.sampled_from(VALID_LENGTHS).flatmap(lambda n: st.binary(min_size
 
 
 def command_frame(**over) -> frames.Frame:
-    fields = dict(seq=7, cab=1, system=1, direction=1, traction=3, brake=0, flags=1, clock_ms=123_456)
+    fields = dict(seq=7, cab=1, system=1, direction=1, traction=3, brake=0, clock_ms=123_456)
     fields.update(over)
     return data_frame(K_COMMAND, 1, BROADCAST, P_COMMAND, **fields)
 
@@ -352,8 +352,8 @@ byte = st.integers(0, 255)
 points = st.lists(st.fixed_dictionaries({"id": st.integers(0, 0xFFFF), "value": st.integers(-2**31, 2**31 - 1)}),
                   max_size=19)
 PAYLOAD_VALUES = {
-    K_COMMAND: st.fixed_dictionaries({k: byte for k in ("seq", "cab", "system", "direction", "traction", "brake",
-                                                          "flags")} | {"clock_ms": st.integers(0, 2**32 - 1)}),
+    K_COMMAND: st.fixed_dictionaries({k: byte for k in ("seq", "cab", "system", "direction", "traction", "brake")}
+                                     | {"clock_ms": st.integers(0, 2**32 - 1)}),
     K_STATUS: st.fixed_dictionaries({k: byte for k in ("node", "car", "unit", "health", "ports", "block_request",
                                                          "grant")} | {"seq": st.integers(0, 0xFFFF),
                                                                       "points": points, "orders": points}),
@@ -390,7 +390,7 @@ def test_a_packet_from_its_template_is_the_packet_built_through_the_layout(case,
 
 
 def test_a_field_the_layout_refuses_is_refused_from_a_template_too():
-    good = dict(seq=1, cab=1, system=1, direction=1, traction=3, brake=0, flags=1, clock_ms=5)
+    good = dict(seq=1, cab=1, system=1, direction=1, traction=3, brake=0, clock_ms=5)
     frames.packet(K_COMMAND, 1, BROADCAST, good)                         # the template is remembered
     for bad in (dict(good, traction=256), dict(good, seq="1"), {k: v for k, v in good.items() if k != "seq"}):
         with pytest.raises(Exception) as caught:

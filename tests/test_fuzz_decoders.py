@@ -172,7 +172,7 @@ points = st.lists(st.fixed_dictionaries({"id": word, "value": st.integers(-2**31
 PAYLOAD_FIELDS = {
     K_COMMAND: st.fixed_dictionaries({
         "seq": st.integers(0, 10**6), "cab": byte, "system": byte, "direction": byte, "traction": byte,
-        "brake": byte, "flags": byte, "clock_ms": st.integers(0, 2**40)}),
+        "brake": byte, "clock_ms": st.integers(0, 2**40)}),
     K_STATUS: st.fixed_dictionaries({
         "node": byte, "car": byte, "unit": byte, "health": byte, "ports": byte, "block_request": byte,
         "grant": byte, "seq": st.integers(0, 10**7), "points": points, "orders": points}),

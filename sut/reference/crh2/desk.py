@@ -27,8 +27,9 @@ class Sample:
         return asdict(self)
 
     def wire_fields(self) -> dict:
-        return dict(direction=DIRECTION_CODES[self.direction], traction=self.traction, brake=self.brake,
-                    flags=1 if self.mcr else 0)
+        # No master-control flag: only the CCU whose MCR is up puts commands on the ring (ILK-07), so
+        # a receiver has nothing to decide with one (docs/decisions.md, "The command frame's content").
+        return dict(direction=DIRECTION_CODES[self.direction], traction=self.traction, brake=self.brake)
 
 
 class Desk:

@@ -4,7 +4,7 @@ from __future__ import annotations
 from dataclasses import dataclass
 from typing import Any
 
-from construct import (Byte, Bytes, Const, Construct, ConstructError, Int16ub, Int32sb, Int32ub, Padded,
+from construct import (Byte, Bytes, Const, Construct, ConstructError, Int16ub, Int32sb, Int32ub, Padded, Padding,
                        PrefixedArray, Struct)
 
 from sut.codecs.arcnet import (ALERT_BITS, ARC_TABLE, BITS_PER_BYTE, BROADCAST, EOT, ITT,  # noqa: F401
@@ -46,7 +46,7 @@ COMMAND = Struct(                     # PRO-01: 12 bytes
     "direction" / Byte,               # 0 neutral, 1 forward, 2 reverse
     "traction" / Byte,                # notch 0..10
     "brake" / Byte,                   # step 0..7, 8 = emergency
-    "flags" / Byte,                   # bit0 MCR up
+    Padding(1),                       # reserved: master control is decided in the cab (docs/decisions.md)
     "clock_ms" / Int32ub,             # clock correction: ms since power-up
 )
 assert COMMAND.sizeof() == 12
