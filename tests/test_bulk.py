@@ -115,6 +115,23 @@ def test_ten_minutes_with_faults_and_commands_agree_both_ways() -> None:
     assert len(records["car4.LCU"]) == 2 and len(records["car7.LCU"]) == 1
 
 
+def test_a_jump_that_leaves_the_clock_where_it_was_stops_the_soak_at_once(monkeypatch: pytest.MonkeyPatch) -> None:
+    """The soak's loop ends by the clock. A jump that wrote nothing to the kernel (seed 20's and 21's mutant that
+    read no slots ran for over half an hour) or one of no periods (seed 18's `periods < 0`) must be an error at
+    the next pass, not a loop for ever."""
+    passes: list[int] = []
+
+    def stuck(train, snap, deltas, periods) -> None:
+        passes.append(periods)
+        assert len(passes) < 100, "the soak went round 100 times without moving the clock"
+
+    monkeypatch.setattr(bulk, "jump", stuck)
+    train = powered()
+    with pytest.raises(RuntimeError, match="no progress"):
+        train.soak(10 * MIN)
+    assert train.now_us < 10 * MIN
+
+
 @pytest.mark.cost(10)
 def test_a_pending_one_shot_timer_is_not_jumped_over() -> None:
     # The neutral-section entry supervision runs a one-shot timeout (docs/decisions.md): it must fire on time.
