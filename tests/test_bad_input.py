@@ -216,6 +216,7 @@ def test_ramp_needs_a_positive_rate_and_a_number(train) -> None:
     ("atp", lambda t: t.set_supply_voltage("VDX", 500), OutOfRange, ["supply voltage 500", "0-200 V"]),
     ("atp", lambda t: t.set_supply_voltage("DCU", 110), UnknownName, ["supply", "DCU", "VDX"]),
     ("atp", lambda t: t.power_off("DCU"), UnknownName, ["supply", "DCU", "VDX"]),
+    ("atp", lambda t: t.restore_power("DCU"), UnknownName, ["supply", "DCU", "VDX"]),
     ("atp", lambda t: t.configure(sets=2), OutOfRange, ["train sets 2"]),
     ("atp", lambda t: t.set_input("carrier", 1800), OutOfRange, ["carrier 1800", "1700, 2000, 2300, 2600"]),
     # 0 is the generator sending no carrier; 1 Hz is no carrier of either set (seed 18 took `value != 1` for

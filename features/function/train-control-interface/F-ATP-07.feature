@@ -85,13 +85,13 @@ Feature: F-ATP-07 CFSK track-circuit decoding: health, 3-comparison confirmation
     When 1000 ms pass
     Then the ATP records for the CFSK code LU, carrier 2300, amplitude 420mV, state ok and type ZPW-2000A
 
-  # ATP-05 records the carrier; a failed CFSK has decoded none (ATP-01). That its record then says carrier 0
-  # (no carrier, not a frequency) is the project's reading (docs/decisions.md, "A CFSK record with no
-  # carrier"): a decision, hence @tentative.
+  # ATP-05 records the carrier and the code; a failed CFSK has decoded neither (ATP-01). That its record then
+  # says carrier 0 (no carrier, not a frequency) and code - (no code, not the last one heard) is the project's
+  # reading (docs/decisions.md, "A CFSK record with no carrier"): a decision, hence @tentative.
   @req:ATP-05 @req:ATP-01 @tentative
   Scenario: F-ATP-07 A failed CFSK's record names no carrier
     Given the signal generator sends 1700 Hz with code L
     When 1000 ms pass
     And "CFSK" fails
     And 500 ms pass
-    Then from 0 ms on the ATP records for the CFSK state fault and carrier 0 Hz
+    Then from 0 ms on the ATP records for the CFSK state fault, carrier 0 Hz and code -
