@@ -161,6 +161,9 @@ def test_unknown_backend_on_the_command_line_is_a_usage_error() -> None:
     ("doors", "ajar", ["doors 'ajar'", "closed, open"]),
     ("unit1.transformer", "melted", ["unit1.transformer 'melted'", "primary overcurrent"]),
     ("car3.brake force", 200, ["car3.brake force 200", "0..150"]),
+    # A flag is no number, though Python counts True as 1 (seed 22 let it through as 1 % of demand).
+    ("car3.brake force", True, ["car3.brake force True", "0..150"]),
+    ("main pipe pressure", "600", ["main pipe pressure '600'", "0..1000 kPa"]),
 ])
 def test_vehicle_inputs_out_of_range(train, name, value, words) -> None:
     with pytest.raises(OutOfRange) as err:
@@ -233,6 +236,8 @@ def test_ramp_needs_a_positive_rate_and_a_number(train) -> None:
     ("atp", lambda t: t.set_supply_voltage("VDX", -0.5), OutOfRange, ["supply voltage -0.5", "0-200 V"]),
     ("atp", lambda t: t.fail("CRN"), UnknownName, ["board", "CRN", "CFSK"]),
     ("atp", lambda t: t.monitor_order(1, "carrier set", "left"), OutOfRange, ["carrier set 'left'", "down or up"]),
+    # An order the DMI does not take names the one it does (seed 22 made the list None).
+    ("atp", lambda t: t.monitor_order(1, "speed limit", "up"), UnknownName, ["DMI order", "'speed limit'", "carrier set"]),
     ("atp", lambda t: t.records("CCU"), UnknownName, ["recording unit", "ATP"]),
     ("atp", lambda t: t.pass_balise("1-1-1-1", []), NotPoweredUp, ["not powered up"]),
     ("atp", lambda t: t.reading("FS voltage"), UnknownName, ["reading", "FS voltage", "FS output voltage"]),

@@ -152,7 +152,7 @@ def test_process_yielding_ints_sleeps_exactly(k):
     p = k.process(proc(), "sleeper")
     k.run(sum(delays) + 10)
     assert wakes == delays
-    assert not p.alive
+    assert p.alive is False
 
 
 def test_process_starts_at_creation_time(k):
@@ -213,7 +213,7 @@ def test_yielding_something_else_is_an_error(k):
     process = k.process(proc(), "floaty")
     with pytest.raises(SimulationError, match="floaty"):
         k.run(10)
-    assert not process.alive
+    assert process.alive is False
 
 
 def test_interrupt_carries_its_cause_and_can_be_caught(k):
@@ -232,7 +232,7 @@ def test_interrupt_carries_its_cause_and_can_be_caught(k):
     k.call_at(300, p.interrupt, "power loss")
     k.run(5_000)
     assert log == [("interrupted", 300, "power loss"), ("after", 350)]
-    assert not p.alive
+    assert p.alive is False
 
 
 def test_uncaught_interrupt_ends_the_process_quietly(k):
@@ -245,7 +245,7 @@ def test_uncaught_interrupt_ends_the_process_quietly(k):
     p = k.process(proc(), "board")
     k.call_at(10, p.interrupt, "cut")
     k.run(5_000)
-    assert log == [] and not p.alive
+    assert log == [] and p.alive is False
     p.interrupt("again")            # interrupting a dead process is a no-op
     k.run(6_000)
 
@@ -334,7 +334,7 @@ def test_kill_stops_a_sleeping_process(k):
     k.run(50)
     p.kill()
     k.run(500)
-    assert log == [] and not p.alive
+    assert log == [] and p.alive is False
 
 
 def test_kill_before_the_process_has_started(k):
@@ -350,7 +350,7 @@ def test_kill_before_the_process_has_started(k):
     p = k.process(proc(), "stillborn")
     p.kill()
     k.run(500)
-    assert log == [] and not p.alive
+    assert log == [] and p.alive is False
 
 
 def test_exception_in_a_process_surfaces_naming_the_process(k):
@@ -362,7 +362,7 @@ def test_exception_in_a_process_surfaces_naming_the_process(k):
     with pytest.raises(SimulationError, match=r"car3\.CCU\.sys1\.TXC\.sampler.*t=5 us.*boom") as info:
         k.run(100)
     assert isinstance(info.value.__cause__, KeyError)
-    assert not process.alive
+    assert process.alive is False
 
 
 def test_negative_delay_is_an_error_naming_the_process(k):
@@ -372,7 +372,7 @@ def test_negative_delay_is_an_error_naming_the_process(k):
     process = k.process(proc(), "backwards")
     with pytest.raises(SimulationError, match="backwards.*negative"):
         k.run(10)
-    assert not process.alive                  # a failed process is over, like one that raised
+    assert process.alive is False                  # a failed process is over, like one that raised
 
 
 # -- periodic activities --------------------------------------------------------------------------

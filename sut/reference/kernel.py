@@ -83,7 +83,8 @@ class Process:
     """A generator driven by the kernel: `yield <int us>` sleeps, `yield <Signal>` waits.
 
     Every wait gets a number; a wake-up carrying an older number (a timer or signal that an interrupt
-    overtook) is ignored, so a process is never resumed twice for one wait."""
+    overtook) is ignored, so a process is never resumed twice for one wait. `alive` is a bool: True until
+    the generator returns, raises, is interrupted without catching it or killed."""
     BULK_READABLE = True  # pragma: no mutate  (a speed declaration: bulk.py)
 
     __slots__ = ("kernel", "name", "_gen", "_timer", "_wait", "alive")

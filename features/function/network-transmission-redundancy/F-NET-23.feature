@@ -53,11 +53,16 @@ Feature: F-NET-23 Dual lines A and B on the WTB and on each MVB
     And "car6.CCU" holds a record "unit1.MVB line B: fault"
 
   @req:RED-06
-  Scenario: F-NET-23 Frames disturbed on both lines lose their messages; the bus carries on
-    When the next 2 frames on both lines of "unit2.MVB" are disturbed
+  Scenario Outline: F-NET-23 Frames disturbed on both lines of "<bus>" lose their messages; the bus carries on
+    When the next 2 frames on both lines of "<bus>" are disturbed
     And 100 ms pass
-    Then a message on "unit2.MVB" is lost
-    And no message on "unit2.MVB" is lost from 10 ms on
+    Then a message on "<bus>" is lost
+    And no message on "<bus>" is lost from <after> ms on
+
+    Examples:
+      | bus       | after |
+      | unit2.MVB | 10    |
+      | WTB       | 30    |
 
   @req:RED-06
   Scenario: F-NET-23 Restored line A is diagnosed healthy again
