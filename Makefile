@@ -18,6 +18,7 @@ RESULTS := reports/allure-results
 HTML := reports/html
 # What the steps of make test's conformance run asked of the SUT, held against sut/contract/*.yaml.
 CONTRACT_RECORD := reports/contract-record.json
+OWN_TESTS_XML := reports/own-tests.xml
 
 # Bytecode caches even where the machine's environment turns them off (PYTHONDONTWRITEBYTECODE=1, as on
 # this project's CI machines): make test starts dozens of Python processes, and each would compile the
@@ -71,7 +72,7 @@ report: $(VENV_STAMP) $(NODE_STAMP) ## run every feature, build reports/html/ind
 	exit $$status
 
 test: $(VENV_STAMP) $(MUTATE_STAMP) $(NODE_STAMP) $(CHROMIUM) ## the project's own tests, the whole conformance run, then the contract check (every catalogue entry read by some step); fails if any fails
-	@$(PY) -m pytest tests $(XDIST_TESTS); t=$$?; \
+	@$(PY) -m pytest tests $(XDIST_TESTS) --durations=15 --junitxml=$(OWN_TESTS_XML); t=$$?; \
 	rm -f $(CONTRACT_RECORD)*; \
 	$(PY) -m pytest features $(XDIST) $(SUT_ARG) $(PYTEST_ARGS) --contract-record $(CONTRACT_RECORD); f=$$?; \
 	$(PY) -m sut.contract check $(CONTRACT_RECORD) $(if $(or $(PYTEST_ARGS),$(SUT)),--partial); c=$$?; \
@@ -123,7 +124,7 @@ trace: $(VENV_STAMP) ## python -m outline trace: requirement <-> item <-> scenar
 	$(PY) -m outline trace $(if $(wildcard $(RESULTS)),--results $(RESULTS))
 
 clean: ## remove reports and caches (keeps .venv and node_modules)
-	rm -rf $(RESULTS) $(HTML) $(SHARD_RESULTS) reports/history.jsonl reports/contract-record.json* reports/traceability.* reports/mutation.* reports/conformance-*.html mutants .pytest_cache .hypothesis
+	rm -rf $(RESULTS) $(HTML) $(SHARD_RESULTS) reports/history.jsonl reports/contract-record.json* $(OWN_TESTS_XML) reports/traceability.* reports/mutation.* reports/conformance-*.html mutants .pytest_cache .hypothesis
 	find . -name __pycache__ -type d -not -path './$(VENV)/*' -not -path './node_modules/*' -prune -exec rm -rf {} +
 
 distclean: clean ## also remove .venv and node_modules

@@ -12,6 +12,8 @@ seconds of the whole target and, read from pytest's summary lines in its output,
 pytest run in it (make test: the own tests, then the conformance run; make report: the conformance run). For
 mutate, map_s is the time until mutmut starts on the mutants ("mutmut: running ..."): the mutants written and
 every scenario mapped to the functions it reaches, from scratch in a clean clone; --map-only stops there.
+For make test also the own tests' seconds by test function (own_cpu_s and the largest few), from the JUnit XML
+make test writes (reports/own-tests.xml).
 Targets (issue 33, 2-core machine, clean clone): make test <= 5 min, make report <= 25 s, first map <= 15 min.
 """
 from __future__ import annotations
@@ -25,6 +27,7 @@ import subprocess
 import sys
 import tempfile
 import time
+import xml.etree.ElementTree as ET
 from pathlib import Path
 
 BENCH = Path(__file__).resolve().parent
@@ -37,6 +40,22 @@ TARGETS = {"test": 300.0, "report": 25.0, "mutate": 900.0}        # issue 33, se
 _SUMMARY = re.compile(r"^=*\s*(?P<counts>\d+ [a-z]+(?:, \d+ [a-z]+)*) in (?P<seconds>[\d.]+)s\b")
 _COUNT = re.compile(r"(\d+) (passed|failed|skipped|error|errors|deselected|xfailed|xpassed)")
 _MAPPED = "mutmut: running "
+OWN_TESTS_XML = Path("reports") / "own-tests.xml"      # make test's --junitxml of the own tests
+TOP_TESTS = 8
+
+
+def own_tests_by_function(xml: Path, top: int = TOP_TESTS) -> dict[str, float]:
+    """The own tests' seconds (each test's own duration, summed over both workers) by test function, its
+    parameters merged: `own_cpu_s` for all of them and `own_<function>_s` for the `top` largest. What a
+    make test row needs to say where its minutes went (issue 33)."""
+    sums: dict[str, float] = {}
+    for case in ET.parse(xml).getroot().iter("testcase"):
+        name = case.get("name", "?").split("[", 1)[0]
+        sums[name] = sums.get(name, 0.0) + float(case.get("time") or 0.0)
+    figures = {"own_cpu_s": round(sum(sums.values()), 1)}
+    for name, seconds in sorted(sums.items(), key=lambda kv: -kv[1])[:top]:
+        figures[f"own_{name.removeprefix('test_')}_s"] = round(seconds, 1)
+    return figures
 
 
 def run(target: str, cwd: Path, make_args: list[str], map_only: bool, log: Path) -> dict[str, float]:
@@ -90,6 +109,8 @@ def main(argv: list[str] | None = None) -> int:
             subprocess.run(["git", "clone", "--quiet", str(ROOT), str(cwd)], check=True)
         log = args.keep_log or Path(tmp) / "make.log"
         figures = run(args.target, cwd, make_args, args.map_only, log)
+        if args.target == "test" and (cwd / OWN_TESTS_XML).exists():
+            figures |= own_tests_by_function(cwd / OWN_TESTS_XML)
         made = cwd / "mutants" / "mutmut-stats.json"
         if args.keep_map and made.exists():
             shutil.copyfile(made, args.keep_map)

@@ -253,7 +253,8 @@ back with the commit before it. `--help` lists each script's options; each print
   `--profile-run` adds a cProfile pass summarised by package, by phase and by function; `--what-if bddscan` a pass
   with pytest-bdd's own step scan instead of the step index (`bench/_whatif_plugin.py`).
 - `bench/make_bench.py` times a make target, in this tree or (`--clone`) in a fresh clone of HEAD with every install
-  make does, and reads each pytest run's seconds and counts from its summary lines.
+  make does, and reads each pytest run's seconds and counts from its summary lines; of make test also the own
+  tests' seconds by test function, from the JUnit XML it writes (reports/own-tests.xml).
 - `bench/events_bench.py` counts every callback `Kernel.run` makes, per profile and by kind
   (`bench/_events_plugin.py`): what the simulation must still do once snapshots and bulk advance have taken out
   all they can.
@@ -326,6 +327,16 @@ def render_markdown(rows: list[dict]) -> str:
                   f"{f['floor_wall_s']:.2f} s: the steps, trace queries, the snapshot journal, bulk's state reads and "
                   "pytest-bdd itself. "
                   + _budget(f), ""]
+    own = _latest(rows, "make_test", "own_cpu_s")
+    if own is not None:
+        f = own["figures"]
+        largest = sorted(((k[4:-2].replace("_", " "), v) for k, v in f.items()
+                          if k.startswith("own_") and k.endswith("_s") and k not in ("own_cpu_s", "own_tests_s")),
+                         key=lambda kv: -kv[1])
+        lines += [f"`make test` ({_when(own)}, clean clone): the own tests took {_dur(f['own_tests_s'])} on two "
+                  f"workers, {f['own_cpu_s']:.0f} s of tests in all; the largest, by test function: "
+                  + "; ".join(f"{name} {seconds:.0f} s ({seconds / f['own_cpu_s']:.0%})" for name, seconds in largest)
+                  + f". Then the conformance run, {f.get('conformance_s', 0):.0f} s.", ""]
     events = _latest(rows, "events_bench", "all.events")
     if events is not None:
         f = events["figures"]

@@ -72,3 +72,24 @@ def test_the_page_is_made_without_matplotlib() -> None:
                           "assert 'matplotlib' not in sys.modules"], cwd=REPO, capture_output=True, text=True,
                          timeout=120)
     assert run.returncode == 0, run.stderr
+
+
+def test_a_make_test_row_says_which_test_functions_took_its_minutes(tmp_path) -> None:
+    """bench/make_bench.py reads make test's JUnit XML: each test function's seconds, its parameters merged, the
+    largest few by name, and the page says them."""
+    sys.path.insert(0, str(REPO / "bench"))
+    import make_bench
+
+    xml = tmp_path / "own-tests.xml"
+    cases = [("test_features_accept_in_band_variant[FasterNodes]", 50.5),
+             ("test_features_accept_in_band_variant[BriskMetro]", 10.0),
+             ("test_kernel_orders_ties", 0.25)]
+    xml.write_text('<testsuites><testsuite name="pytest">' + "".join(
+        f'<testcase classname="tests.test_x" name="{name}" time="{seconds}"/>' for name, seconds in cases)
+        + "</testsuite></testsuites>", encoding="utf-8")
+    figures = make_bench.own_tests_by_function(xml, top=1)
+    assert figures == {"own_cpu_s": 60.8, "own_features_accept_in_band_variant_s": 60.5}
+    row = {"when": "2026-11-29T02:00:00Z", "bench": "make_test", "commit": "abc", "load": [None, None],
+           "args": ["--clone"], "figures": {"wall_s": 1700.0, "own_tests_s": 1600.0, "conformance_s": 66.0, **figures}}
+    page = render_markdown([*_history.read(), row])
+    assert "features accept in band variant 60 s (100%)" in page
