@@ -299,6 +299,15 @@ def test_a_wtb_telegram_that_is_no_json_object_is_refused_naming_what_json_it_is
         wtb_decode(body + crc16_x25(body).to_bytes(2, "little"))
 
 
+@pytest.mark.parametrize("wire", [b"", b"{", b"{}"])
+def test_a_wtb_frame_shorter_than_its_check_sequence_is_refused_naming_its_length(wire: bytes) -> None:
+    # Seed 23 emptied this message: a truncated frame must still say what is wrong with it.
+    from sut.reference.metro.bus import FrameError
+    from sut.reference.metro.ports import wtb_decode
+    with pytest.raises(FrameError, match=f"^WTB frame of {len(wire)} bytes is shorter than its frame check sequence$"):
+        wtb_decode(wire)
+
+
 def test_an_unknown_profile_of_the_reference_is_named_with_those_it_has() -> None:
     with pytest.raises(UnknownName, match=r"no profile of the reference named 'metro'; did you mean metro-tcn\?; "
                                           r"known: atp, atp-crh2, crh2, metro-tcn, vdx"):

@@ -154,6 +154,24 @@ def test_a_pending_one_shot_timer_is_not_jumped_over() -> None:
     assert not late, f"the trace goes back in time: {late[:3]}"
 
 
+def test_a_sampled_soak_replays_no_sample_over_a_pending_one_shot_timer() -> None:
+    """With samples every 2 s the soak replays learnt traffic instead of simulating it; a replay that ran over
+    the neutral-section timeout (seed 23 let `_before_one_shots` pass every timer) left the timeout to fire
+    late, its event behind events of later times."""
+    def script(train: ReferenceTrain, run) -> None:
+        train.set_input("neutral section signal", "warning")
+        run(1 * MIN)
+
+    exact, fast = both_ways(script, sample_every_us=2 * S)
+    assert_same(exact, fast)
+    shown = lambda train: [(ev.t, ev["value"]) for ev in train.trace.select(kind="out.change",   # noqa: E731
+                                                                            source="neutral section")]
+    assert shown(fast) == shown(exact)
+    times = [ev.t for ev in fast.trace]
+    late = [(a, b) for a, b in zip(times, times[1:]) if b < a]
+    assert not late, f"the trace goes back in time: {late[:3]}"
+
+
 def test_a_ramp_in_progress_is_simulated_frame_by_frame() -> None:
     def script(train: ReferenceTrain, run) -> None:
         train.ramp_input("main pipe pressure", 680, 5)          # 20 s from 780 kPa

@@ -49,6 +49,17 @@ Feature: F-ATP-12 Neutral sections from ETCS-68, ETCS-46 parsed, and the missing
     Then the DMI shows "balise information error"
     And the ATP commands max service brake
 
+  # The group announced at 800 m is read there: it is not missing, so no reaction, and no brake (seed 23 took
+  # a group for missing once the train was 20 m short of its place).
+  @req:ATP-12
+  Scenario: F-ATP-12 A linked group read where it was announced brings no linking reaction
+    Given the train has passed balise group "70-2-4-14" linking to group "70-2-4-17" at 800 m
+    When the train runs from 500 m to 800 m at 72 km/h
+    And the train passes balise group "70-2-4-17" with an ETCS-46 packet
+    And the train runs from 800 m to 900 m at 72 km/h
+    Then the ATP commands no brake
+    And the DMI does not show "balise information error"
+
   # A group that never came is no packet the ATP could not use (ATP-11): whatever the DMI says of it, it is not
   # a balise information error.
   @req:ATP-12 @req:ATP-11
