@@ -201,6 +201,8 @@ def test_ramp_needs_a_positive_rate_and_a_number(train) -> None:
     ("metro-tcn", lambda t: t.set_input("speed", -0.5), OutOfRange, ["speed -0.5", "0-120 km/h"]),
     ("metro-tcn", lambda t: t.insert_key(2), OutOfRange, ["cab 2", "1 or 6"]),
     ("metro-tcn", lambda t: t.cut_line("unit3.MVB", "A"), UnknownName, ["bus", "unit3.MVB", "unit2.MVB"]),
+    # A flag is no count of frames, though Python counts True as 1 (seed 24 disturbed one frame for it).
+    ("metro-tcn", lambda t: t.disturb_line("WTB", "A", True), OutOfRange, ["frames to disturb True", ">= 1"]),
     ("metro-tcn", lambda t: t.cut_line("WTB", "C"), OutOfRange, ["line of WTB 'C'", "A or B"]),
     ("metro-tcn", lambda t: t.disturb_line("WTB", "A", 0), OutOfRange, ["frames to disturb 0"]),
     ("metro-tcn", lambda t: t.fail("car2.CCU"), UnknownName, ["car2.CCU", "car2.VCU"]),

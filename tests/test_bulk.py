@@ -132,6 +132,23 @@ def test_a_jump_that_leaves_the_clock_where_it_was_stops_the_soak_at_once(monkey
     assert train.now_us < 10 * MIN
 
 
+def test_a_jump_that_sets_the_clock_back_stops_the_soak_at_once(monkeypatch: pytest.MonkeyPatch) -> None:
+    """Seed 24 jumped to `(now - base.at) // period - periods`: to before the last pass, over and over (twelve
+    CPU-minutes and 1.9 GB before it was stopped). A pass that sets the clock back is an error too."""
+    jumped, passes = bulk.jump, []
+
+    def back(train, snap, deltas, periods) -> None:
+        passes.append(periods)
+        assert len(passes) < 100, "the soak went round 100 times with the clock set back each time"
+        jumped(train, snap, deltas, -periods)                 # as far behind the line's base as it meant ahead
+
+    monkeypatch.setattr(bulk, "jump", back)
+    train = powered()
+    with pytest.raises(RuntimeError, match=r"no progress: the clock went from \d+ us to -?\d+ us"):
+        train.soak(10 * MIN)
+    assert train.now_us < 10 * MIN
+
+
 @pytest.mark.cost(10)
 def test_a_pending_one_shot_timer_is_not_jumped_over() -> None:
     # The neutral-section entry supervision runs a one-shot timeout (docs/decisions.md): it must fire on time.

@@ -354,13 +354,15 @@ def run(train: "Train", until: int, sample_every_us: int | None = None) -> BulkR
     pattern_end = 0
     jumped = False                      # the state is the line's own extrapolation: no need to read it
     from_base = False                   # ... of snaps[-1], with nothing simulated since: a jump may follow
-    was = None
+    was = -1                            # the clock at the last pass
     while kernel.now < until:
         now = kernel.now
         # Every pass simulates or jumps ahead, so the loop ends by the clock; a pass that left the clock where
-        # it was (a jump that wrote nothing to the kernel) would go round for ever.
-        if now == was:
-            raise RuntimeError(f"bulk advance made no progress at {now} us (period {period} us)")
+        # it was or set it back (a jump that wrote nothing to the kernel, or one of fewer periods than it had
+        # already come) would go round for ever.
+        if now <= was:
+            raise RuntimeError(f"bulk advance made no progress: the clock went from {was} us to {now} us "
+                               f"(period {period} us)")
         was = now
         if until - now < period or now >= end:
             frame_by_frame(until)
