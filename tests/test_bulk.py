@@ -150,14 +150,19 @@ def test_a_jump_that_sets_the_clock_back_stops_the_soak_at_once(monkeypatch: pyt
 
 
 @pytest.mark.cost(10)
-@pytest.mark.parametrize("sample_every_us", [None, 2 * S], ids=["jumps", "sampled every 2 s"])
-def test_a_pending_one_shot_timer_is_not_jumped_over(sample_every_us: int | None) -> None:
+@pytest.mark.parametrize(("sample_every_us", "lead_us"), [(None, 0), (2 * S, 0), (2 * S, 2840 * MS)],
+                         ids=["jumps", "sampled every 2 s", "sampled, the timeout in a replay's last period"])
+def test_a_pending_one_shot_timer_is_not_jumped_over(sample_every_us: int | None, lead_us: int) -> None:
     """The neutral-section entry supervision runs a one-shot timeout (docs/decisions.md): it must fire on time,
     whether the soak jumps over the stretch or, sampled every 2 s, replays learnt traffic instead of simulating
-    it (seed 23 let `_before_one_shots` pass every timer: a replay ran over the timeout)."""
+    it (seed 23 let `_before_one_shots` pass every timer: a replay ran over the timeout). With the soak started
+    2.84 s after the warning, the timeout falls in the last period of a replayed 3 s sample (found by trying
+    leads 0-3 s in 40 ms steps: 2.80-2.88 s put it there), which a replay must keep clear of (seed 21 let a
+    replay run up to a period past a pending timer)."""
     def script(train: ReferenceTrain, run) -> None:
         train.set_input("neutral section signal", "warning")
-        run(2 * MIN)
+        train.advance(lead_us)
+        run(2 * MIN - lead_us)
 
     exact, fast = both_ways(script, sample_every_us=sample_every_us)
     assert_same(exact, fast)
