@@ -190,6 +190,19 @@ def test_ramp_needs_a_positive_rate_and_a_number(train) -> None:
         train.ramp_input("doors", 1, 1)
 
 
+def test_a_second_ramp_of_an_input_ends_the_first_where_it_is(train) -> None:
+    """The contract's ramp_input: a ramp_input of the same name ends a ramp under way, as a set_input does
+    (seed 25 left the first ramp running beside the second: the speed then moved at the difference of the rates)."""
+    train.power_on()
+    train.ramp_input("speed", 72, 2)
+    train.advance(10_000_000)                                 # 20 km/h
+    train.ramp_input("speed", 0, 4)
+    train.advance(2_000_000)
+    assert train.input("speed") == pytest.approx(12.0)
+    train.advance(5_000_000)
+    assert train.input("speed") == 0.0
+
+
 # -- the other profiles of the reference: metro-tcn, atp ----------------------------------------------
 @pytest.mark.parametrize(("profile", "call", "error", "words"), [
     ("metro-tcn", lambda t: t.set_input("car1.IO1.DI29", 1), OutOfRange, ["DI29", "DI01-DI28 or AI1-AI3"]),
@@ -268,7 +281,10 @@ def test_profile_bad_input_names_value_and_what_is_allowed(profile, call, error,
 @pytest.mark.parametrize("profile, name, value", [
     ("atp", "speed", 0), ("atp", "speed", 350), ("atp", "amplitude", 0), ("atp", "amplitude", 10_000),
     ("atp", "position", -1_000_000), ("atp", "position", 1_000_000), ("atp", "VDX supply", 0),
-    ("atp", "VDX supply", 200), ("metro-tcn", "speed", 0), ("metro-tcn", "speed", 120)])
+    ("atp", "VDX supply", 200), ("metro-tcn", "speed", 0), ("metro-tcn", "speed", 120),
+    # seed 25 refused the upper edge of a CRH2 number input
+    ("crh2", "speed", 0), ("crh2", "speed", 400), ("crh2", "main pipe pressure", 0),
+    ("crh2", "main pipe pressure", 1000)])
 def test_the_edges_of_a_range_are_taken(profile: str, name: str, value: float) -> None:
     """The edges the refusals above name are inside: each range is what its error says, not narrower."""
     driver = open_backend("reference", profile)
@@ -281,6 +297,14 @@ def test_the_edges_of_a_range_are_taken(profile: str, name: str, value: float) -
         driver.set_input(name, value)
         taken = driver.trace.last(kind="in.set", name=name)
         assert taken is not None and taken["value"] == value
+
+
+def test_a_balise_packet_without_a_type_is_refused() -> None:
+    # seed 25 let a packet through that is a dict but names no type
+    driver = open_backend("reference", "atp")
+    driver.power_on()
+    with pytest.raises(OutOfRange, match="packet of balise group 2-1-1-1.*a dict with a 'type'"):
+        driver.pass_balise("2-1-1-1", [{"sections": [(0.0, 1000.0, 1700)]}])
 
 
 def test_the_vdx_firmware_is_chosen_before_power_up() -> None:
