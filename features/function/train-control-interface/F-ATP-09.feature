@@ -36,6 +36,17 @@ Feature: F-ATP-09 FS to PS at 150 m before the end of authority; the default tel
     When 100 ms pass
     Then the ATP is in mode PS
 
+  # ATP-06 puts the change 150 m before the end of authority: an authority extended far beyond the train brings
+  # full supervision back (seed 25 kept PS for good once it was entered).
+  @req:ATP-06
+  Scenario: F-ATP-09 An end of authority moved 2100 m ahead of a train in PS brings FS back
+    When the train is set to 2900 m running at 0 km/h
+    And 100 ms pass
+    Then the ATP is in mode PS
+    When the train passes balise group "3-1-1-3" describing track circuits 0-5000 m 1700 Hz and an end of authority at 5000 m
+    And 100 ms pass
+    Then the ATP is in mode FS
+
   @req:ATP-07
   Scenario: F-ATP-09 A default telegram on a diverging entry: maximum service brake, FS kept at 45 km/h
     When the train is set to 2200 m running at 80 km/h
