@@ -118,7 +118,9 @@ class RingNode:
         return b is None or b.alive
 
     def board(self, short: str) -> Board | None:
-        return {"CPU3": self.cpu3, "MDM8": self.mdm8}.get(short)
+        """The board of that short name on this node, None if it has none: each kind of node names its own
+        (CcuSystem, Lcu)."""
+        raise NotImplementedError
 
     # -- life cycle -----------------------------------------------------------------------------
     def start(self) -> None:
