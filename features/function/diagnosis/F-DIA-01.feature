@@ -25,6 +25,15 @@ Feature: F-DIA-01 Optical transmission diagnosis on the cab monitor
     Then the cab 1 monitor showed "optical transmission fault between car7.LCU and car8.LCU" within 150 ms
     And the cab 1 monitor showed no fault but "optical transmission fault between car7.LCU and car8.LCU"
 
+  # The nodes beside a dark one report its links; where one of them is the CCU system feeding the monitor, that
+  # system reports its own port (seed 25 lost that report and no scenario had the fault beside the feeder).
+  @req:NET-03 @req:TST-04 @tentative
+  Scenario: F-DIA-01 A CCU system gone dark beside the one feeding the monitor: both of its links are shown
+    When the supply "car1.CCU.sys2" is switched off
+    And the cab 1 monitor is watched for 1000 ms
+    Then the cab 1 monitor showed "optical transmission fault between car1.CCU.sys1 and car1.CCU.sys2" within 650 ms
+    And the cab 1 monitor showed "optical transmission fault between car1.CCU.sys2 and car1.LCU" within 650 ms
+
   @req:NET-03 @req:TST-04 @tentative
   Scenario: F-DIA-01 The report clears within 300 ms of the link being restored
     Given the ring link between "car5.LCU" and "car6.LCU" is cut
