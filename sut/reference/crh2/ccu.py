@@ -257,7 +257,6 @@ class Ccu:
             for i, board in enumerate(fr.HEALTH_BITS):
                 if not fields.get("health", 0xFF) & (1 << i):
                     faults.append(f"{node.name}.{board} failure")
-        # The answer holds what the contract's monitor lists, no more (an age table here once was read by
-        # nothing; status_table() answers that).
+        # What the contract's monitor lists, no more: how old a node's status data is, status_table() answers.
         return {"faults": sorted(set(faults)), "fed_by": source.name if source else None,
                 "display": dict(self.display)}
