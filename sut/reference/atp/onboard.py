@@ -46,9 +46,9 @@ class Generator:
     """What the track-circuit signal generator puts on the CFSK antenna."""
     BULK_READABLE = True  # pragma: no mutate  (a speed declaration: bulk.py)
     carrier: int = 0
-    code: str = ""
+    code: str | None = None        # None until the rig modulates one: "" is no word of the contract
     amplitude_mv: float = 0.0
-    circuit_type: str = "ZPW-2000"
+    circuit_type: str = "ZPW-2000A"
 
 
 @dataclass
