@@ -215,38 +215,40 @@ def test_a_scenarios_end_refuses_an_event_whose_kind_is_no_name(kind) -> None:
     assert guard.check_trace(Trace(events[:1])) == 1
 
 
-def _input_names(contract, driver) -> list[str]:
-    """Every input a profile's contract lists, character classes expanded (`car[16].IO[12].DI01`); a name
-    with `*` or `?` stands for names only the train knows, so the driver's own list gives them."""
+def _names(contract, driver, section: str) -> list[str]:
+    """Every name a profile's contract lists under `section`, character classes expanded
+    (`car[16].IO[12].DI01`); a name with `*` or `?` stands for names only the train knows, so the driver's
+    own list gives them."""
     import itertools
     names = []
-    for pattern in contract.names.get("inputs", {}):
+    for pattern in contract.names.get(section, {}):
         if "*" in pattern or "?" in pattern:
             continue
         parts = re.split(r"\[([^\]]+)\]", pattern)
         names += ["".join(p) for p in itertools.product(*[[part] if i % 2 == 0 else list(part)
                                                           for i, part in enumerate(parts)])]
-    own = driver.vehicle_names()["inputs"]
-    return sorted(set(names) | {name for name in own if contract.entry("inputs", name) is not None})
+    own = driver.vehicle_names().get(section, [])
+    return sorted(set(names) | {name for name in own if contract.entry(section, name) is not None})
 
 
 @pytest.mark.parametrize("profile", ["crh2", "metro-tcn", "atp", "atp-crh2", "vdx"])
-def test_every_input_reads_back_a_word_its_contract_lists_at_power_up(profile) -> None:
+def test_every_input_and_output_answers_a_word_its_contract_lists_at_power_up(profile) -> None:
     """An input a step has not set yet still answers in the contract's words (seed 25 started the crh2 doors at
     `CLOSED`, which no step set and none read back; the ATP rig's generator said `ZPW-2000` and an empty code);
-    an event input (a reset, a signal) or a level nothing has given yet reads None."""
+    an event input (a reset, a signal) or a level nothing has given yet reads None. Every output does too."""
     from sut.backends import open_backend
+    from sut.errors import UnknownName
     contract = load(profile)
     driver = open_backend("reference", profile)
     driver.power_on()
-    from sut.errors import UnknownName
     read = 0
-    for name in _input_names(contract, driver):
-        try:
-            value = driver.input(name)
-        except UnknownName:      # input() is the reference's read-back, not a contract method: the metro's
-            continue             # wiring-fault channels are set, never read back
-        read += 1
-        if value is not None:
-            contract.check_answer("inputs", name, value)
+    for section, method in (("inputs", driver.input), ("outputs", driver.output)):
+        for name in _names(contract, driver, section):
+            try:
+                value = method(name)
+            except UnknownName:  # input() is the reference's read-back, not a contract method: the metro's
+                continue         # wiring-fault channels are set, never read back
+            read += 1
+            if value is not None:
+                contract.check_answer(section, name, value)
     assert read >= 2
