@@ -308,3 +308,25 @@ def test_a_bad_frame_is_refused_every_time_not_only_the_first():
         decode_slave(SlaveFrame(b"ab").encode(), [16])              # unhashable: still the codec's own error
     with pytest.raises(MvbFrameError, match="out of range"):
         encode_master(16, 1)
+
+
+# -- the dual-line bus (sut/reference/metro/bus.py) ---------------------------------------------
+def test_a_frame_refused_on_both_whole_lines_counts_once_on_each_line_whichever_path_carries_it():
+    """Both lines whole take one decode for both; a frame that decode refuses must leave the lines exactly as
+    the line-by-line path leaves them (which a disturbed line B, with nothing left to disturb, takes)."""
+    from sut.reference.metro.bus import DualLineBus
+
+    def refuse(raw: bytes):
+        raise MvbFrameError("check sequence")
+
+    fast, slow = DualLineBus("unit1.MVB", "AB", switch_after=2), DualLineBus("unit1.MVB", "AB", switch_after=2)
+    for _ in range(3):
+        got = fast.carry(b"\x01\x02", refuse, lambda *why: pytest.fail(f"switched: {why}"))
+        assert (got.data, got.line) == (None, None)
+        assert got.errors == ("line A: check sequence", "line B: check sequence")
+        slow.lines["B"].disturb = 1                         # forces the line-by-line path ...
+        slow.carry(b"\x01\x02", refuse, lambda *why: pytest.fail(f"switched: {why}"))
+    assert [fast.lines[ln].bad_run for ln in "AB"] == [slow.lines[ln].bad_run for ln in "AB"] == [3, 3]
+    got = fast.carry(b"\x01\x02", lambda raw: raw, lambda *why: None)
+    assert (got.data, got.line, got.errors) == (b"\x01\x02", "A", ())
+    assert [fast.lines[ln].bad_run for ln in "AB"] == [0, 0]

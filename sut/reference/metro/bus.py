@@ -69,14 +69,12 @@ class DualLineBus:
             # function of the bits), which is what almost every frame of a run is.
             try:
                 data = decode(wire)
-            except ValueError as exc:
-                a.bad_run += 1
-                b.bad_run += 1
-                self._trusted_bad += 1
-                return Carried(None, None, (f"line A: {exc}", f"line B: {exc}"))
-            a.bad_run = b.bad_run = 0
-            self._trusted_bad = 0
-            return Carried(data, self.trusted, ())
+            except ValueError:
+                pass             # refused on both lines: counted below, line by line, as any refused frame is
+            else:
+                a.bad_run = b.bad_run = 0
+                self._trusted_bad = 0
+                return Carried(data, self.trusted, ())
         copies: dict[str, Any] = {}
         errors: list[str] = []
         for ln in LINES:
