@@ -70,6 +70,19 @@ def test_an_equivalent_needs_its_reason(tmp_path: Path, monkeypatch: pytest.Monk
         mutation.equivalents()
 
 
+def test_a_line_of_code_holding_the_separator_is_written_escaped(tmp_path: Path,
+                                                                 monkeypatch: pytest.MonkeyPatch) -> None:
+    # seed 25: the metro's `sent.seq & 0xFFFF` survivor read `... sent.seq | 0xFFFF):` mutated, unmarkable
+    from outline.sequences.equivalence import Mark, read_marks
+    mark = Mark("sut/reference/metro/tcds.py", "x = a & 0xFFFF", "x = a | 0xFFFF", "why | and why not")
+    marked = tmp_path / "EQUIVALENT_MUTANTS.txt"
+    marked.write_text(mark.line() + "\n")
+    assert "x = a \\| 0xFFFF" in marked.read_text()
+    assert read_marks(marked) == [mark]
+    monkeypatch.setattr(mutation, "EQUIVALENTS", marked)
+    assert mutation.equivalents() == [("sut/reference/metro/tcds.py", "x = a & 0xFFFF", "x = a | 0xFFFF")]
+
+
 def test_the_checked_in_equivalents_parse() -> None:
     assert all(path.startswith("sut/reference/") for path, _, _ in mutation.equivalents())
 

@@ -342,14 +342,7 @@ def is_marked(mutant: "Mutant", marked: set[tuple[str, str, str]]) -> bool:
 
 def equivalents() -> list[tuple[str, str, str]]:
     """(path, line before, line after) of each mutant marked equivalent (path may be `path::function`)."""
-    marked = []
-    for raw in EQUIVALENTS.read_text(encoding="utf-8").splitlines() if EQUIVALENTS.exists() else []:
-        if raw.strip() and not raw.startswith("#"):
-            fields = [f.strip() for f in raw.split(" | ")]
-            if len(fields) != 4 or not fields[3]:
-                raise ValueError(f"{EQUIVALENTS}: want 'path | before | after | reason', got {raw!r}")
-            marked.append((fields[0], fields[1], fields[2]))
-    return marked
+    return [(mark.where, mark.before, mark.after) for mark in equivalence.read_marks(EQUIVALENTS)]
 
 
 _STEP_NAMES: dict[Path, tuple[frozenset[str], frozenset[str]]] = {}      # by ROOT (tests point it elsewhere)

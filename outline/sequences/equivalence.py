@@ -170,19 +170,30 @@ class Mark:
         return hashlib.sha256(f"{self.where} | {self.before} | {self.after}".encode()).hexdigest()[:16]
 
     def line(self) -> str:
-        return f"{self.where} | {self.before} | {self.after} | {self.reason}"
+        return " | ".join([*(_escape(text) for text in (self.where, self.before, self.after)), self.reason])
+
+
+# A line of code may hold the fields' own separator (`a | b`): written ` \| ` inside a field, which
+# `split(" | ")` leaves whole.
+def _escape(text: str) -> str:
+    return text.replace(" | ", " \\| ")
+
+
+def parse_mark(raw: str, path: Path) -> Mark | None:
+    """One line of a marks file as a Mark (None for a comment or a blank line); the reason is the rest of the
+    line, separators and all."""
+    if not raw.strip() or raw.startswith("#"):
+        return None
+    fields = [f.strip().replace(" \\| ", " | ") for f in raw.split(" | ")]
+    if len(fields) < 4 or not fields[3]:
+        raise ValueError(f"{path}: want 'path | before | after | reason', got {raw!r}")
+    return Mark(fields[0], fields[1], fields[2], " | ".join(fields[3:]))
 
 
 def read_marks(path: Path | None = None) -> list[Mark]:
     path = path or EQUIVALENTS
-    marks = []
-    for raw in path.read_text(encoding="utf-8").splitlines() if path.exists() else []:
-        if raw.strip() and not raw.startswith("#"):
-            fields = [f.strip() for f in raw.split(" | ")]
-            if len(fields) < 4:
-                raise ValueError(f"{path}: want 'path | before | after | reason', got {raw!r}")
-            marks.append(Mark(fields[0], fields[1], fields[2], " | ".join(fields[3:])))
-    return marks
+    lines = path.read_text(encoding="utf-8").splitlines() if path.exists() else []
+    return [mark for mark in (parse_mark(raw, path) for raw in lines) if mark is not None]
 
 
 # -- mutants -----------------------------------------------------------------------------------------------
@@ -793,9 +804,8 @@ def move_overturned(report: dict[str, Any], marks_file: Path | None = None,
     records = report.get("marks", {})
     kept, moved, dropped = [], [], 0
     for raw in marks_file.read_text(encoding="utf-8").splitlines(keepends=True):
-        fields = [f.strip() for f in raw.split(" | ")]
-        if raw.strip() and not raw.startswith("#") and len(fields) >= 4:
-            mark = Mark(fields[0], fields[1], fields[2], " | ".join(fields[3:]))
+        mark = parse_mark(raw, marks_file)
+        if mark is not None:
             verdict = records.get(mark.key, {}).get("verdict")
             if verdict == "overturned":
                 moved.append((mark, records[mark.key]["difference"]))
@@ -822,7 +832,7 @@ def move_overturned(report: dict[str, Any], marks_file: Path | None = None,
     text = overturned.read_text(encoding="utf-8") if overturned.exists() else header
     for mark, seen in moved:
         said = f"{seen.get('profile')}: {seen.get('observable')}, {seen.get('reference')} -> {seen.get('mutant')}"
-        text += f"{mark.where} | {mark.before} | {mark.after} | " + " ".join(said.split()) + "\n"
+        text += Mark(mark.where, mark.before, mark.after, " ".join(said.split())).line() + "\n"
     overturned.write_text(text, encoding="utf-8")
     return len(moved), dropped
 
