@@ -86,11 +86,13 @@ class Command:
         return cls(MODES[mode], DIRECTIONS[direction], traction, brake, seq)
 
     def as_json(self) -> list:
-        return [self.mode, self.direction, self.traction, self.brake, self.seq & 0xFFFF]   # as on the MVB port
+        """The command as a WTB telegram relays it: without its number, which the receiving gateway gives
+        itself when it puts the command on its own unit's MVB."""
+        return [self.mode, self.direction, self.traction, self.brake]
 
     @classmethod
     def from_json(cls, value: list) -> "Command":
-        return cls(*value)
+        return cls(*value, seq=0)
 
 
 def wtb_encode(telegram: dict) -> bytes:

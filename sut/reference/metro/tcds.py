@@ -14,7 +14,6 @@ Read with requirements.md TCN-01..10, RED-04..07 and docs/decisions.md "Metro TC
 from __future__ import annotations
 
 import functools
-from dataclasses import replace
 from typing import Any, Callable
 
 from sut.codecs.mvb import (SlaveFrame, check_sequence, decode_master, decode_slave, encode_master, encode_slave,
@@ -544,7 +543,7 @@ class MetroTrain:
                 and not seg.stale and self._key_seen(seg):
             cmd = seg.cmd.as_json()
         elif seg.master == node.name and seg.ios and seg.io_used is not None and not self._key_seen(seg):
-            cmd = ["no cab", "neutral", 0, FULL, 0]
+            cmd = ["no cab", "neutral", 0, FULL]
         # A destination silent on the WTB for longer than the give-up time is no longer waited for.
         limit = self.kernel.now - self.cfg.timing.message_give_up_us
         gone = {d for d, at in self.wtb_answered_at.items() if at < limit}
@@ -602,7 +601,7 @@ class MetroTrain:
             # it at once. Its own unit's command comes from its own cab's I/O modules, never over the WTB.
             # It numbers what it relays itself, so it keeps no number (one that wraps could not be carried
             # over a bulk jump).
-            receiver.wtb_cmd, receiver.wtb_cmd_t = replace(Command.from_json(telegram["cmd"]), seq=0), now
+            receiver.wtb_cmd, receiver.wtb_cmd_t = Command.from_json(telegram["cmd"]), now
         takes_records = receiver.has_memory or (self.cfg.behaviour.backup_master_stores
                                                 and self.wtb_master == receiver.name)
         if self.cfg.behaviour.records_via_wtb:
