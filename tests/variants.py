@@ -596,10 +596,11 @@ class _BackupStartsFromTheCcuCommand(MetroTrain):
     def __init__(self, cfg) -> None:
         super().__init__(cfg)
         self.held: dict[int, tuple] = {}     # unit -> (the cab's inputs at takeover, the CCU's last command or None)
+        self.sent: dict[int, Command | None] = {}   # unit -> the last command its master put on the port
 
     def _command(self, seg, master):
-        last = seg.cmd_sent                  # what the failed CCU last put on the port
-        cmd = super()._command(seg, master)
+        last = self.sent.get(seg.unit)       # what the failed CCU last put on the port
+        cmd = self.sent[seg.unit] = super()._command(seg, master)
         inputs = seg.io_data[seg.io_used][0] if seg.io_used else None
         if master.kind != "VCU" or cmd is None or inputs is None or not inputs.input(DI_KEY):
             self.held.pop(seg.unit, None)

@@ -14,6 +14,7 @@ Read with requirements.md TCN-01..10, RED-04..07 and docs/decisions.md "Metro TC
 from __future__ import annotations
 
 import functools
+from dataclasses import replace
 from typing import Any, Callable
 
 from sut.codecs.mvb import (SlaveFrame, check_sequence, decode_master, decode_slave, encode_master, encode_slave,
@@ -81,7 +82,6 @@ class MvbSegment:
         self.stale = True
         self.sink_timer = None
         self.cmd_seq = 0
-        self.cmd_sent: Command | None = None     # the last train command the master put on the port
 
     @property
     def sinks(self) -> list[Device]:
@@ -258,7 +258,7 @@ class MetroTrain:
             data = self._io_port(target).encode()          # padded to the port's size (F_code), spare bits 0
             return target.name, data + bytes(slave_size_bits(self.cfg.behaviour.io_port_f_code) // 8 - len(data))
         if what == "cmd":
-            cmd = seg.cmd_sent = self._command(seg, master)
+            cmd = self._command(seg, master)
             return master.name, cmd.encode() if cmd is not None else None
         if target.failed:
             return target.name, None
@@ -293,11 +293,9 @@ class MetroTrain:
             port = IoPort.decode(data[:16])           # the port's first 128 bits; the rest spare
             seg.io_data[target.name] = (IoPort(port.di, port.ai, 1 if port.life else 0), now)
         elif what == "cmd":
-            cmd = Command.decode(data)
-            sent = seg.cmd_sent
-            if sent is not None and (cmd.mode, cmd.direction, cmd.traction, cmd.brake, cmd.seq) == \
-                    (sent.mode, sent.direction, sent.traction, sent.brake, sent.seq & 0xFFFF):
-                cmd = sent           # the sender's own count, unbounded: the wire's 16 bits are what it carried
+            # What the command says, not its number, as the life signal above: nothing reads the number
+            # here, and one that wraps with the wire's 16 bits could not be carried over a bulk jump.
+            cmd = replace(Command.decode(data), seq=0)
             seg.cmd, seg.cmd_t = cmd, now
             if seg.sink_timer is not None:
                 seg.sink_timer.cancel()
