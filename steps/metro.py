@@ -408,7 +408,7 @@ def _(sut: TrainDriver, t_action: int) -> None:
 @then(parsers.parse("每个VVVF施加{pct:g} %牵引"))
 @then(parsers.parse("every VVVF applies {pct:g} % traction"))
 def _(sut: TrainDriver, pct: float) -> None:
-    wrong = {d: sut.reading(f"{d}.traction") for d in _sinks(sut, "VVVF")}
+    wrong = {d: _applied(sut, d, "traction") for d in _sinks(sut, "VVVF")}
     wrong = {d: v for d, v in wrong.items() if v != pct}
     assert not wrong, f"VVVF traction other than {pct} %: {wrong}"
 
@@ -416,7 +416,7 @@ def _(sut: TrainDriver, pct: float) -> None:
 @then(parsers.parse("每个BECU施加{pct:g} %制动"))
 @then(parsers.parse("every BECU applies {pct:g} % brake"))
 def _(sut: TrainDriver, pct: float) -> None:
-    wrong = {d: sut.reading(f"{d}.brake") for d in _sinks(sut, "BECU")}
+    wrong = {d: _applied(sut, d, "brake") for d in _sinks(sut, "BECU")}
     wrong = {d: v for d, v in wrong.items() if v != pct}
     assert not wrong, f"BECU brake other than {pct} %: {wrong}"
 
@@ -433,13 +433,24 @@ def _(sut: TrainDriver, declaration: ProfileDeclaration, t_action: int, pct: flo
     _reached(sut, "BECU", pct, t_action, bound, declaration.parameter("timing_resolution_us"))
 
 
+def _applied(sut: TrainDriver, device: str, quantity: str) -> float:
+    """What a device applies now, as its reading says and as its pd.change events say (the contract: the
+    reading is the value of its last pd.change; before the first, nothing): the two must agree."""
+    now = sut.reading(f"{device}.{quantity}")
+    last = sut.trace.last(kind="pd.change", source=device)
+    said = last["value"] if last is not None else 0
+    assert now == said, (f"{device} reads {now} % {quantity}, but its pd.change events say {said} % "
+                         f"({'the last at ' + ms(last.t) if last is not None else 'none yet'})")
+    return now
+
+
 def _reached(sut: TrainDriver, kind: str, pct: float, t_action: int, bound: float, tick: int) -> None:
     """Every device applies `pct` within `bound` ms of the action and still does. A bound on reaching a state
     holds when the state already held: a device that changed nothing since the action and applies `pct` now
     applied it throughout (the contract: a pd.change for every change of what it applies)."""
     quantity = "traction" if kind == "VVVF" else "brake"
     for device in _sinks(sut, kind):
-        now = sut.reading(f"{device}.{quantity}")
+        now = _applied(sut, device, quantity)
         change = sut.trace.first(kind="pd.change", source=device, since=t_action, value=pct)
         if change is None and now == pct and not sut.trace.select(kind="pd.change", source=device, since=t_action):
             continue
@@ -498,7 +509,7 @@ def _(sut: TrainDriver, t_action: int) -> None:
         after = sut.trace.select(kind="pd.change", source=device, since=t_action)
         braked = [ev for ev in after if ev["value"]]
         assert not braked, f"{device} braked from {ms(t_action)} on: {describe(braked)}"
-        now = sut.reading(f"{device}.brake")
+        now = _applied(sut, device, "brake")
         assert not now, f"{device} still applies {now} % brake {ms(sut.now_us - t_action)} after the fault"
 
 
