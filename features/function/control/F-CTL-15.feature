@@ -84,3 +84,20 @@ Feature: F-CTL-15 Active-cab CCU failure: the adjacent VCU takes over and the tr
     And every BECU applies 100 % brake
     And the cab 1 display shows the mode "no cab"
     And the cab 6 display shows the mode "no cab"
+
+  # Each unit's "no cab" rests on the other unit's word over the WTB that its cab has no key either; the
+  # standby VCUs of that unit are not the ones that give it (its CCU, the unit's MVB master, is).
+  @req:TCN-08
+  Scenario Outline: F-CTL-15 Without a key in either cab, both standby VCUs of unit <unit> failing changes no display
+    Given the train has been powered up for 1000 ms
+    When "<vcu1>" fails
+    And "<vcu2>" fails
+    And 2000 ms pass
+    Then the cab 1 display shows the mode "no cab"
+    And the cab 6 display shows the mode "no cab"
+    And every BECU applies 100 % brake
+
+    Examples:
+      | unit | vcu1     | vcu2     |
+      | 1    | car2.VCU | car3.VCU |
+      | 2    | car4.VCU | car5.VCU |
