@@ -247,8 +247,9 @@ class ReferenceMetro(PickledState, TrainDriver):
         # nothing current to show (docs/decisions.md, "A display whose bus master is silent").
         if du.failed or not master.alive:
             return {"faults": [], "mode": None, "WTB master": None, "blank": True}
+        # A lit display says nothing of `blank` (the contract: absent or true only on a dark one).
         return {"faults": [r.text if r.origin == master.name else f"{r.origin}: {r.text}" for r in master.known],
-                "mode": train.modes[seg.unit], "WTB master": train.wtb_master, "blank": False}
+                "mode": train.modes[seg.unit], "WTB master": train.wtb_master}
 
     def describe(self) -> dict[str, str]:
         t = self._train.cfg.timing
