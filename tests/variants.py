@@ -13,6 +13,7 @@ import re
 
 from sut.reference.crh2.backend import ReferenceTrain
 from sut.reference.crh2.ccu import Ccu
+from sut.reference.crh2.lcu import Rxc
 from sut.reference.crh2.train import Train
 from sut.reference.crh2.ring import Ring
 from sut.reference.crh2.vehicle import Vehicle
@@ -104,10 +105,37 @@ class FullNotchesOnPath3WithALiveModem(ReferenceTrain):
     BEHAVIOUR = {"path3_steps_only": False}
 
 
+class _RepeatingRxc(Rxc):
+    BULK_READABLE = True         # its one field is a ring command, a plain dict (sut/reference/bulk.py)
+    last_ring: dict | None = None
+
+    def from_loop(self, fields: dict, mdm9_ok: bool) -> None:
+        if self.board.alive and not self.failsafe:
+            self.last_ring = fields
+        super().from_loop(fields, mdm9_ok)
+
+    def from_selfdiag(self, fields: dict) -> None:
+        if (self.last_ring is not None and self.lcu.mdm8.alive and self.board.alive and not self.failsafe
+                and self.train.kernel.now - self.last_ring_us >= self.train.cfg.timing.rxc_fallback_us
+                and not (self.group1.failed or self.group2.failed)):
+            self._drive(self.last_ring, path=2)      # the last ring command again
+            return
+        super().from_selfdiag(fields)
+
+
+class _TrainOfRepeatingRxcs(Train):
+    BULK_READABLE = True         # no state of its own (sut/reference/bulk.py)
+
+    def __init__(self, cfg) -> None:
+        super().__init__(cfg)
+        for lcu in self.lcus:
+            lcu.rxc.__class__ = _RepeatingRxc
+
+
 class RxcRepeatsTheRing(ReferenceTrain):
     """CMD-04: on a silent ring, an RXC whose MDM8 lives answers every self-diagnostic command with the last
     ring command again (over path 2) instead of taking the line's."""
-    BEHAVIOUR = {"rxc_trusts_selfdiag": False}
+    TRAIN = _TrainOfRepeatingRxcs
 
 
 class BlockDataTheShortWayOnly(ReferenceTrain):

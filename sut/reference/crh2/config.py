@@ -53,7 +53,6 @@ class Behaviour:
     # Three that only a ring split shows (an LCU whose MDM8 lives but hears no commanding CCU):
     ring_commands_expire: bool = True     # FS-02 a ring command goes stale (50 ms), heard ring or not
     path3_steps_only: bool = True         # CMD-04 path 3 carries A/B steps, MDM8 alive or not
-    rxc_trusts_selfdiag: bool = True      # CMD-04 a silent ring hands the RXC to the self-diagnostic line
     standby_transmits: bool = False       # RED-02 system 2 only monitors while system 1 is healthy
     block_grant_required: bool = True     # PRO-06 no block transfer before the grant
     block_data_both_ways: bool = True     # PRO-06/NET-03 block data round the ring both ways, as any broadcast

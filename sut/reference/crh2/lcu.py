@@ -31,7 +31,6 @@ class Rxc:
         self.group2 = Board(f"{self.name}.group2", supply)
         self.failsafe = False
         self.last_ring_us = 0           # power-up counts as "just heard": no fallback in the first 50 ms
-        self.last_ring: dict | None = None
         self.source = "idle"
 
     def _set_source(self, source: str) -> None:
@@ -54,8 +53,6 @@ class Rxc:
         if not self._checked():
             return
         self.last_ring_us = self.train.kernel.now
-        if not self.train.cfg.behaviour.rxc_trusts_selfdiag:
-            self.last_ring = fields                      # faulty variants only (from_selfdiag)
         if mdm9_ok:
             self._set_source("idle")
         else:
@@ -66,10 +63,6 @@ class Rxc:
         if not self._checked():
             return
         if self.train.kernel.now - self.last_ring_us >= self.train.cfg.timing.rxc_fallback_us:
-            if (not self.train.cfg.behaviour.rxc_trusts_selfdiag and self.lcu.mdm8.alive
-                    and self.last_ring is not None):
-                self._drive(self.last_ring, path=2)      # faulty variants only: the last ring command again
-                return
             self._set_source("selfdiag")
             self._drive(fields, path=3)
 
