@@ -127,13 +127,12 @@ class OnboardAtp:
     # -- motion ------------------------------------------------------------------------------------------
     def _tick(self) -> None:
         dt_s = self.cfg.tick_us / 1e6
-        before = self.position_m
         self.position_m += self.speed_kmh / 3.6 * dt_s
         if not self.s.ready:
             return
-        self._supervise(before)
+        self._supervise()
 
-    def _supervise(self, before: float) -> None:
+    def _supervise(self) -> None:
         s, p = self.s, self.position_m
         # Automatic neutral-section passing (ATP-11): the command holds over the section.
         if s.neutral is not None:

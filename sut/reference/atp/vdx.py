@@ -69,7 +69,6 @@ class VdxInterface:
         self.powered = False
         self.released_at: int | None = None      # the last FS off -> on, us
         self.testing = False
-        self.tests = 0
         self.eb2r = Relay(kernel, "EB2R", cfg, self._loop_changed, emit)
         self.eb1r = Relay(kernel, "EB1R", cfg, self._loop_changed, emit)
         self.loop = LOOP_OPEN
@@ -174,7 +173,6 @@ class VdxInterface:
         if not self.fs_on:
             return
         self.testing = True
-        self.tests += 1
         tau = self.kernel.now - (self.released_at or 0)
         fall = self.fall_ms(tau)
         sample = self.voltage_during_test(self.cfg.sample_at_us, fall)
