@@ -1,6 +1,6 @@
 @item:F-ATP-13 @profile:atp-crh2 @req:TST-04
 Feature: F-ATP-13 The ATP's brake reaches the train: traction suppressed, brake commanded (ILK-08)
-  Requirements: ATP-02 (primary), ATP-11, VDX-01, ILK-08, ILK-03, CMD-02, CMD-05, TST-04.
+  Requirements: ATP-02 (primary), ATP-11, VDX-01, ILK-08, ILK-03, ILK-05, CMD-02, CMD-05, TST-04.
   The ATP fitted to a CRH2 train set: its maximum service brake reaches the train as an ATP brake, which
   suppresses traction and raises the brake command to full service (ILK-08); its emergency brake opens the
   train's emergency-brake loop through the VDX. Without an ATP brake, the driver's own brake handle reaches
@@ -21,6 +21,13 @@ Feature: F-ATP-13 The ATP's brake reaches the train: traction suppressed, brake 
     When 500 ms pass
     Then every CI receives traction notch 3 within 500 ms
     And the "emergency brake" is released
+
+  # The train runs at the speed the ATP's odometry gives: above 30 km/h with the doors closed its doors are
+  # pressed airtight (a fitting that left the train at standstill would leave them unsealed).
+  @req:ILK-05
+  Scenario: F-ATP-13 The fitted train runs at the ATP's speed: its doors are pressed airtight
+    When 500 ms pass
+    Then the "press-seal valve" is energised
 
   @req:CMD-05 @req:CMD-02
   Scenario: F-ATP-13 Without an ATP brake the driver's own brake handle reaches the train
