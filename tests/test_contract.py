@@ -95,6 +95,10 @@ def test_an_unreadable_contract_file_names_the_file_and_entry(tmp_path: Path) ->
     bad.write_text("profile: x\nevents:\n  a.b:\n    fields:\n      f: {type: colour}\n", encoding="utf-8")
     with pytest.raises(ContractFileError, match=r"x.yaml: events.a.b.fields.f.type: one of"):
         parse(bad)
+    bad.write_text("profile: x\nevents:\n  a.b:\n    changes: {field: g}\n    fields:\n      f: {type: string}\n",
+                   encoding="utf-8")
+    with pytest.raises(ContractFileError, match=r"x.yaml: events.a.b.changes: a mapping of `field` \(one of the"):
+        parse(bad)
 
 
 def test_a_record_of_a_run_finds_stale_entries() -> None:
@@ -193,14 +197,27 @@ def test_a_scenarios_end_holds_events_no_step_was_handed_to_the_contract() -> No
 
 def test_a_scenarios_end_holds_the_first_events_of_each_listed_kind_from_a_named_source() -> None:
     closed = TraceEvent(0, "VDX", "loop.change", {"state": "closed"})
+    opened = TraceEvent(0, "VDX", "loop.change", {"state": "open"})
     # an event from a source the entry does not name is outside the contract, as an unlisted kind is
     stray = [TraceEvent(1, "rig", "loop.change", {}), TraceEvent(2, "VDX", "debug.dump", {"x": 1})]
     late = TraceEvent(9, "VDX", "loop.change", {})          # past the first per_kind of its kind: not held
-    events = [closed, closed, *stray, late]
+    events = [closed, opened, *stray, late]
     guard = _guarded(events)
     assert guard.check_trace(Trace(events), per_kind=3) == 2
     with pytest.raises(ContractBreach, match="VDX loop.change at 0.009 ms has no field 'state'"):
         guard.check_trace(Trace(events), per_kind=4)
+
+
+@pytest.mark.parametrize("states, said", [(["open"], "its value before any event"),
+                                          (["closed", "open", "open"], "the value its last event gave")])
+def test_a_kind_said_once_per_change_may_not_say_the_same_value_twice(states, said) -> None:
+    # seed 9026: a VDX whose loop started unset said `open` at power-up, where the loop already was open;
+    # every event of such a kind is held, not the first per_kind
+    events = [TraceEvent(i, "VDX", "loop.change", {"state": state}) for i, state in enumerate(states)]
+    with pytest.raises(ContractBreach, match=f"VDX loop.change at .* says state='open', {said}; the vdx contract "
+                                             "counts one event per change"):
+        _guarded(events).check_trace(Trace(events), per_kind=1)
+    assert _guarded(events[:-1]).check_trace(Trace(events[:-1])) == len(states) - 1
 
 
 @pytest.mark.parametrize("kind", [None, "", 7])

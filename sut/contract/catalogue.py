@@ -69,6 +69,10 @@ class EventKind:
     count: str
     fields: dict[str, dict[str, Any]]
     requirements: list[str]
+    # A kind said once per change of one field (`changes: {field: state, initially: open}`): no two events of one
+    # source in a row hold the same value there, nor the first the value the entry says it has before any.
+    changes: str | None = None
+    initially: tuple = ()          # (the value,) where the entry gives one
 
     def __post_init__(self) -> None:
         # What check_event holds every event handed to a step against, worked out once per kind.
@@ -244,8 +248,15 @@ def parse(path: Path) -> Contract:
                 raise _fail(path, f"events.{kind}.fields.{fname}.resolution",
                             "a number above 0, on a field of type number")
             fields[str(fname)] = fspec
+        changes = spec.get("changes")
+        if changes is not None and not (isinstance(changes, dict) and changes.get("field") in fields
+                                        and set(changes) <= {"field", "initially"}):
+            raise _fail(path, f"events.{kind}.changes", "a mapping of `field` (one of the kind's fields) and, "
+                        "optionally, `initially` (its value before the first event)")
         events[str(kind)] = EventKind(str(kind), str(spec.get("source", "")), str(spec.get("when", "")),
-                                      str(spec.get("count", "")), fields, list(spec.get("requirements") or []))
+                                      str(spec.get("count", "")), fields, list(spec.get("requirements") or []),
+                                      changes["field"] if changes else None,
+                                      (changes["initially"],) if changes and "initially" in changes else ())
     return Contract(str(raw["profile"]), path, methods, names, events, raw)
 
 

@@ -242,7 +242,28 @@ class ContractDriver:
                         raise ContractBreach(f"at the scenario's end, in an event no step was handed: {breach}") \
                             from None
                     held += 1
+        self._check_changes(trace)
         return held
+
+    def _check_changes(self, trace: Trace) -> None:
+        """A kind said once per change (its entry's `changes`): every event of it, not the first few, as one
+        repeated is a statement the count rules out (a loop said open again, an output said twice)."""
+        for kind, entry in self._contract.events.items():
+            if entry.changes is None:
+                continue
+            last: dict[str, Any] = {}
+            for ev in trace.select(kind=kind):
+                if not entry.names_source(ev.source) or entry.changes not in ev.fields:
+                    continue
+                value = ev.fields[entry.changes]
+                before = last[ev.source] if ev.source in last else entry.initially
+                if before == (value,):
+                    said = ("its value before any event" if ev.source not in last
+                            else "the value its last event gave")
+                    raise ContractBreach(f"at the scenario's end: {ev.source} {kind} at {ev.t / 1000:g} ms says "
+                                         f"{entry.changes}={value!r}, {said}; the {self._contract.profile} "
+                                         f"contract counts one event per change ({entry.count})")
+                last[ev.source] = (value,)
 
     # -- the driver interface ----------------------------------------------------------------------
     @property
