@@ -73,6 +73,7 @@ class EventKind:
     # source in a row hold the same value there, nor the first the value the entry says it has before any.
     changes: str | None = None
     initially: tuple = ()          # (the value,) where the entry gives one
+    restated_at_power_up: bool = False   # events at time 0 (power-up) may say again what was said before
 
     def __post_init__(self) -> None:
         # What check_event holds every event handed to a step against, worked out once per kind.
@@ -250,13 +251,15 @@ def parse(path: Path) -> Contract:
             fields[str(fname)] = fspec
         changes = spec.get("changes")
         if changes is not None and not (isinstance(changes, dict) and changes.get("field") in fields
-                                        and set(changes) <= {"field", "initially"}):
+                                        and set(changes) <= {"field", "initially", "restated_at_power_up"}):
             raise _fail(path, f"events.{kind}.changes", "a mapping of `field` (one of the kind's fields) and, "
-                        "optionally, `initially` (its value before the first event)")
+                        "optionally, `initially` (its value before the first event) and `restated_at_power_up` "
+                        "(true: at time 0 a source may say its value again)")
         events[str(kind)] = EventKind(str(kind), str(spec.get("source", "")), str(spec.get("when", "")),
                                       str(spec.get("count", "")), fields, list(spec.get("requirements") or []),
                                       changes["field"] if changes else None,
-                                      (changes["initially"],) if changes and "initially" in changes else ())
+                                      (changes["initially"],) if changes and "initially" in changes else (),
+                                      bool(changes and changes.get("restated_at_power_up")))
     return Contract(str(raw["profile"]), path, methods, names, events, raw)
 
 

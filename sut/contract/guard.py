@@ -257,7 +257,7 @@ class ContractDriver:
                     continue
                 value = ev.fields[entry.changes]
                 before = last[ev.source] if ev.source in last else entry.initially
-                if before == (value,):
+                if before == (value,) and not (entry.restated_at_power_up and ev.t == 0):
                     said = ("its value before any event" if ev.source not in last
                             else "the value its last event gave")
                     raise ContractBreach(f"at the scenario's end: {ev.source} {kind} at {ev.t / 1000:g} ms says "
