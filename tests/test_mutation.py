@@ -487,8 +487,9 @@ def test_a_mutant_in_a_branch_only_faulty_variants_take_is_passed_over() -> None
                                                              .strip()))
     ring = "sut/reference/crh2/ring.py"        # self.source_id is only ever set from packet_source_id (None)
     assert mutation.in_variant_only_branch(ring, line_of(ring, "offset, _ = declared_length(frame.wire)"))
-    lcu = "sut/reference/crh2/lcu.py"          # the test itself is behaviour: its mutants stay in
-    assert not mutation.in_variant_only_branch(lcu, line_of(lcu, "if (not self.train.cfg.behaviour.rxc_trusts"))
+    vehicle = "sut/reference/crh2/vehicle.py"  # the test itself is behaviour: its mutants stay in
+    assert not mutation.in_variant_only_branch(vehicle, line_of(vehicle, "if oil and self.train.cfg.behaviour."
+                                                                         "oil_protection:"))
     assert mutation.behaviour_defaults("sut/reference/metro/tcds.py")["message_ack"] is True
 
 
