@@ -109,15 +109,15 @@ class _RepeatingRxc(Rxc):
     BULK_READABLE = True         # its one field is a ring command, a plain dict (sut/reference/bulk.py)
     last_ring: dict | None = None
 
+    # _checked() first, as the reference's handlers do (a second call in them finds the same and says nothing).
     def from_loop(self, fields: dict, mdm9_ok: bool) -> None:
-        if self.board.alive and not self.failsafe:
+        if self._checked():
             self.last_ring = fields
         super().from_loop(fields, mdm9_ok)
 
     def from_selfdiag(self, fields: dict) -> None:
-        if (self.last_ring is not None and self.lcu.mdm8.alive and self.board.alive and not self.failsafe
-                and self.train.kernel.now - self.last_ring_us >= self.train.cfg.timing.rxc_fallback_us
-                and not (self.group1.failed or self.group2.failed)):
+        if (self._checked() and self.last_ring is not None and self.lcu.mdm8.alive
+                and self.train.kernel.now - self.last_ring_us >= self.train.cfg.timing.rxc_fallback_us):
             self._drive(self.last_ring, path=2)      # the last ring command again
             return
         super().from_selfdiag(fields)

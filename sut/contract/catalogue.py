@@ -249,17 +249,17 @@ def parse(path: Path) -> Contract:
                 raise _fail(path, f"events.{kind}.fields.{fname}.resolution",
                             "a number above 0, on a field of type number")
             fields[str(fname)] = fspec
-        changes = spec.get("changes")
-        if changes is not None and not (isinstance(changes, dict) and changes.get("field") in fields
-                                        and set(changes) <= {"field", "initially", "restated_at_power_up"}):
+        changes = spec.get("changes", {})
+        if "changes" in spec and not (isinstance(changes, dict) and changes.get("field") in fields
+                                      and set(changes) <= {"field", "initially", "restated_at_power_up"}):
             raise _fail(path, f"events.{kind}.changes", "a mapping of `field` (one of the kind's fields) and, "
                         "optionally, `initially` (its value before the first event) and `restated_at_power_up` "
                         "(true: at time 0 a source may say its value again)")
         events[str(kind)] = EventKind(str(kind), str(spec.get("source", "")), str(spec.get("when", "")),
                                       str(spec.get("count", "")), fields, list(spec.get("requirements") or []),
-                                      changes["field"] if changes else None,
-                                      (changes["initially"],) if changes and "initially" in changes else (),
-                                      bool(changes and changes.get("restated_at_power_up")))
+                                      changes.get("field"),
+                                      (changes["initially"],) if "initially" in changes else (),
+                                      bool(changes.get("restated_at_power_up")))
     return Contract(str(raw["profile"]), path, methods, names, events, raw)
 
 
