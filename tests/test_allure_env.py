@@ -85,3 +85,14 @@ def test_evidence_for_failed_scenarios_only_keeps_the_environment(tmp_path: Path
     failing = run(tmp_path / "failing", "--evidence", "failed", "--sut", "tests.variants:NoSelfDiagnosticFallback")
     assert failing.get("failed") and all(failing["failed"]), failing
     assert all(run(tmp_path / "all")["passed"])
+
+
+def test_a_backend_opened_without_a_profile_describes_its_first_declared_profile():
+    """TrainDriver.open: None is the first profile a backend declares, and the environment the report files a
+    run under says so (seed 26 filed an ATP rig opened without a profile under vdx)."""
+    from sut.backends import open_backend
+    from sut.reference.atp.backend import ReferenceAtp
+
+    assert ReferenceAtp.open().describe()["profile"] == ReferenceAtp.PROFILES[0] == "atp"
+    for profile in ReferenceAtp.PROFILES:
+        assert open_backend("reference", profile).describe()["profile"] == profile

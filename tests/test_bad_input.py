@@ -267,6 +267,9 @@ def test_a_second_ramp_of_an_input_ends_the_first_where_it_is(train) -> None:
     (None, lambda t: t.set_temperature("car9.CCU", 20), UnknownName, ["unit", "'car9.CCU'", "car1.CCU.sys1", "train"]),
     (None, lambda t: t.withstand_test("train", 1000, 1000), UnknownName, ["unit", "'train'", "car8.LCU"]),
     (None, lambda t: t.vibrate("car3.LCU", 0, 5, 10_000), OutOfRange, ["contact interruption 0", ">= 1"]),
+    # A line that is neither the self-diagnostic line nor a span names both kinds (seed 26 dropped the list).
+    (None, lambda t: t.interfere("car3.LCU", 2, 1000), UnknownName,
+     ["line", "'car3.LCU'", "selfdiag", "car3.LCU~car4.LCU"]),
     (None, lambda t: t.vibrate("car3.LCU", 2_000, 5, 2_000), OutOfRange,
      ["interruption period 2000", ">= 2001"]),
 ])

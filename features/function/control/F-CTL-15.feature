@@ -34,6 +34,18 @@ Feature: F-CTL-15 Active-cab CCU failure: the adjacent VCU takes over and the tr
       | 1   | car1.CCU | car2.VCU | unit1.MVB |
       | 6   | car6.CCU | car5.VCU | unit2.MVB |
 
+  # Seed 26's checker: a CCU failing at the instant of power-up, before its MVB's first basic period, left the
+  # watch without a time it was last heard.
+  @req:RED-05
+  Scenario: F-CTL-15 The CCU of active cab 1 fails at the instant of power-up: "car2.VCU" takes over all the same
+    Given the driver has inserted the key in cab 1
+    And the master controller of cab 1 demands 60 % traction
+    And the train is powered up
+    When "car1.CCU" fails
+    And 1000 ms pass
+    Then "car2.VCU" is the master of "unit1.MVB" within 100 ms and stays so
+    And every VVVF applies 60 % traction
+
   @req:RED-05
   Scenario Outline: F-CTL-15 The CCU of the cab without the key fails <ms> ms after power-up: its VCU relays the command
     Given the driver has inserted the key in cab 1

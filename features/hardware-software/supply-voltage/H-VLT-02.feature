@@ -44,7 +44,7 @@ Feature: H-VLT-02 Supply fluctuations: 0.6 Un for 0.1 s, 1.4 Un for 1 s, and bey
     And the cab 1 monitor is watched for 2000 ms
     Then "car1.CCU.sys1" sends status data again within 1000 ms
     And the cab 1 monitor stopped showing "no status data from car1.CCU.sys1" within 1500 ms
-    And the maintenance view of cab 1 lists "car1.CCU.sys1.supply restarted"
+    And the maintenance view of cab 1 lists "car1.CCU.sys1.supply restarted after undervoltage"
     And "car1.CCU.sys1" puts no commands on the ring
 
   @req:TST-02 @req:FS-02 @tentative
@@ -59,4 +59,12 @@ Feature: H-VLT-02 Supply fluctuations: 0.6 Un for 0.1 s, 1.4 Un for 1 s, and bey
     Then "car3.LCU" sends status data again within 1000 ms
     And the CI and BCU of car 3 receive traction notch 7 over path 1 within 1000 ms
     And the cab 1 monitor stopped showing "no status data from car3.LCU" within 1500 ms
-    And the maintenance view of cab 1 lists "car3.LCU.supply restarted"
+    And the maintenance view of cab 1 lists "car3.LCU.supply restarted after overvoltage"
+
+  @req:TST-02 @req:FS-02 @tentative
+  Scenario: H-VLT-02 A dip held longer than the unit rides it out takes the unit down, and its record says why
+    When the input of supply "car3.LCU" dips below its rated continuous range for 300 ms longer than its rated short dip, then returns to 100 % of Un
+    And the cab 1 monitor is watched for 2000 ms
+    Then the cab 1 monitor showed "no status data from car3.LCU" within 1000 ms
+    And "car3.LCU" sends status data again within 2500 ms
+    And the maintenance view of cab 1 lists "car3.LCU.supply restarted after undervoltage"
