@@ -65,6 +65,4 @@ Feature: H-VLT-02 Supply fluctuations: 0.6 Un for 0.1 s, 1.4 Un for 1 s, and bey
   Scenario: H-VLT-02 A dip held longer than the unit rides it out takes the unit down, and its record says why
     When the input of supply "car3.LCU" dips below its rated continuous range for 300 ms longer than its rated short dip, then returns to 100 % of Un
     And the cab 1 monitor is watched for 2000 ms
-    Then the cab 1 monitor showed "no status data from car3.LCU" within 1000 ms
-    And "car3.LCU" sends status data again within 2500 ms
-    And the maintenance view of cab 1 lists "car3.LCU.supply restarted after undervoltage"
+    Then the maintenance view of cab 1 lists "car3.LCU.supply restarted after undervoltage"
