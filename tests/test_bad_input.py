@@ -226,6 +226,12 @@ def test_a_second_ramp_of_an_input_ends_the_first_where_it_is(train) -> None:
      ["reading", "'car2.VVVF.brake'", "car2.VVVF.traction", "speed"]),
     (None, lambda t: t.interrupt_supply("car9.LCU", 1000), UnknownName, ["power supply", "'car9.LCU'", "car8.LCU"]),
     ("metro-tcn", lambda t: t.configure(sets=1, cars_per_set=8), OutOfRange, ["1 x 8 cars", "6 cars"]),
+    # A channel held at a value its contract range does not take (seed 27: None released a wiring fault, a
+    # stimulus no contract offers), and a car the train does not have.
+    ("metro-tcn", lambda t: t.set_input("car1.IO2.DI02", None), OutOfRange, ["car1.IO2.DI02 None", "0-1"]),
+    ("metro-tcn", lambda t: t.set_input("car1.IO2.DI02", 2), OutOfRange, ["car1.IO2.DI02 2", "0-1"]),
+    ("metro-tcn", lambda t: t.set_input("car1.IO2.AI1", 65536), OutOfRange, ["car1.IO2.AI1 65536", "0-65535"]),
+    ("metro-tcn", lambda t: t.devices(7), OutOfRange, ["car 7", "1-6"]),
     ("metro-tcn", lambda t: t.ring_nodes(), SutError, ["does not implement ring_nodes()", "metro-tcn"]),
     ("atp", lambda t: t.set_input("VDX firmware", "beta"), OutOfRange, ["VDX firmware 'beta'", "old or new"]),
     ("atp", lambda t: t.set_input("ATP emergency brake", 1), OutOfRange, ["ATP emergency brake 1", "True"]),
@@ -287,7 +293,8 @@ def test_profile_bad_input_names_value_and_what_is_allowed(profile, call, error,
     ("atp", "VDX supply", 200), ("metro-tcn", "speed", 0), ("metro-tcn", "speed", 120),
     # seed 25 refused the upper edge of a CRH2 number input
     ("crh2", "speed", 0), ("crh2", "speed", 400), ("crh2", "main pipe pressure", 0),
-    ("crh2", "main pipe pressure", 1000)])
+    ("crh2", "main pipe pressure", 1000), ("metro-tcn", "car1.IO2.DI02", 0), ("metro-tcn", "car1.IO2.DI02", 1),
+    ("metro-tcn", "car1.IO2.AI1", 0), ("metro-tcn", "car1.IO2.AI1", 65535)])
 def test_the_edges_of_a_range_are_taken(profile: str, name: str, value: float) -> None:
     """The edges the refusals above name are inside: each range is what its error says, not narrower."""
     driver = open_backend("reference", profile)

@@ -81,6 +81,9 @@ Feature: F-ATP-08 Carrier consistency against the balise's track circuits, at bo
     Then the ATP declares the carrier inconsistent, not before the rear of the receiver range passes 1000 m at 36 km/h
     And the DMI shows "carrier inconsistent"
     And the line data is deleted
+    # Without line data the driver may select cab-signal mode, from PS too (the contract's input; seed 27).
+    When the ATP input "cab signal mode" is set
+    Then the ATP is in mode CS
 
   @req:ATP-02 @req:ATP-10
   Scenario: F-ATP-08 Under automatic operation (AM) the carrier is checked as under full supervision

@@ -133,10 +133,10 @@ class ReferenceMetro(PickledState, TrainDriver):
             if not (channel[:2] in ("DI", "AI") and channel[2:].isdigit()
                     and 1 <= int(channel[2:]) <= (28 if channel[:2] == "DI" else 3)):
                 raise OutOfRange(f"input channel of {module}", channel, "DI01-DI28 or AI1-AI3 (TCN-07)")
-            if value is None:
-                train.ios[module].forced.pop(channel, None)
-            else:
-                train.ios[module].forced[channel] = int(value)
+            top = 1 if channel[:2] == "DI" else 65535
+            if isinstance(value, bool) or not isinstance(value, int) or not 0 <= value <= top:
+                raise OutOfRange(f"raw value of {name}", value, f"0-{top} (a whole count)")
+            train.ios[module].forced[channel] = value
         self._mark("train", "in.set", name=name, value=value)
 
     def input(self, name: str) -> Any:
