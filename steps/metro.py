@@ -304,6 +304,37 @@ def _(sut: TrainDriver, declaration: ProfileDeclaration, t_action: int, node: st
         f"{node} left {bus} without a master frame for {ms(worst)} (bound {bound} ms)"
 
 
+MVB_BIT_US = 1 / 1.5      # TCN-03: 1.5 Mbit/s
+MASTER_FRAME_BITS = 4 + 12 + 8   # TCN-05: F_code, address, check sequence (the delimiters left out: a floor)
+
+
+def _exchange_floor_us(poll) -> float:
+    """The least time a poll holds its line: the master frame's bits and, if a slave frame answered intact, its
+    data and check bits (one 8-bit check per 64 data bits, at least one: TCN-05), at 1.5 Mbit/s (TCN-03).
+    Delimiters, the reply delay and the gap after are left out, so every conforming bus takes longer."""
+    bits = MASTER_FRAME_BITS
+    if poll["responder"] is not None and not mvb.is_reserved(poll["f_code"]):
+        data = mvb.slave_size_bits(poll["f_code"])
+        bits += data + 8 * max(1, data // 64)
+    return bits * MVB_BIT_US
+
+
+@then(parsers.parse('"{bus}"上的报文互不重叠:每个主帧都在前一次交换的帧之后发出'))
+@then(parsers.parse('the exchanges on "{bus}" never overlap: each master frame follows the frames of the one before'))
+def _(sut: TrainDriver, declaration: ProfileDeclaration, t_action: int, bus: str) -> None:
+    """One MVB carries one frame at a time: a master frame cannot go on the bus before the exchange before it
+    had time to pass, at its bit rate and frame layout (TCN-03, TCN-05)."""
+    polls = _polls(sut, bus, t_action)
+    assert len(polls) >= 10, f"only {len(polls)} master frames on {bus}"
+    slack = declaration.parameter("timing_resolution_us")
+    for before, after in zip(polls, polls[1:]):
+        floor = _exchange_floor_us(before)
+        assert after.t - before.t + slack >= floor, (
+            f"a master frame (F_code {after['f_code']}) went on {bus} {after.t - before.t} us after the one before "
+            f"(F_code {before['f_code']}, answered by {before['responder']}), which holds the line at least "
+            f"{floor:.1f} us")
+
+
 @then(parsers.parse('{cars}的每个设备都应答"{node}"在"{bus}"上发出的状态数据请求'))
 @then(parsers.parse('every device of {cars} answers the status polls of "{node}" on "{bus}"'))
 def _(sut: TrainDriver, t_action: int, cars: str, node: str, bus: str) -> None:

@@ -33,6 +33,7 @@ Feature: F-NET-21 Metro train network: WTB between the units, one MVB in each, t
     When 500 ms pass
     Then "<ccu>" is the master of "unit<unit>.MVB" within 1 ms and stays so
     And the master frames of "<ccu>" on "unit<unit>.MVB" are never more than 1 ms apart
+    And the exchanges on "unit<unit>.MVB" never overlap: each master frame follows the frames of the one before
     And every device of <cars> answers the status polls of "<ccu>" on "unit<unit>.MVB"
 
     Examples:
