@@ -305,18 +305,16 @@ def _(sut: TrainDriver, declaration: ProfileDeclaration, t_action: int, node: st
 
 
 MVB_BIT_US = 1 / 1.5      # TCN-03: 1.5 Mbit/s
-MASTER_FRAME_BITS = 4 + 12 + 8   # TCN-05: F_code, address, check sequence (the delimiters left out: a floor)
 
 
 def _exchange_floor_us(poll) -> float:
-    """The least time a poll holds its line: the master frame's bits and, if a slave frame answered intact, its
-    data and check bits (one 8-bit check per 64 data bits, at least one: TCN-05), at 1.5 Mbit/s (TCN-03).
+    """The least time a poll holds its line: the master frame's bytes and, if a slave frame answered intact,
+    its bytes (the suite's codec: TCN-05's layout, check sequences included), at 1.5 Mbit/s (TCN-03).
     Delimiters, the reply delay and the gap after are left out, so every conforming bus takes longer."""
-    bits = MASTER_FRAME_BITS
+    size = mvb.MASTER_FRAME_BYTES
     if poll["responder"] is not None and not mvb.is_reserved(poll["f_code"]):
-        data = mvb.slave_size_bits(poll["f_code"])
-        bits += data + 8 * max(1, data // 64)
-    return bits * MVB_BIT_US
+        size += mvb.slave_frame_bytes(poll["f_code"])
+    return 8 * size * MVB_BIT_US
 
 
 @then(parsers.parse('"{bus}"上的报文互不重叠:每个主帧都在前一次交换的帧之后发出'))

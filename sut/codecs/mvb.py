@@ -237,6 +237,12 @@ def _frame_bytes(size_bits: int) -> int:
 _SIZE_BY_FRAME_BYTES = {_frame_bytes(bits): bits for bits in SLAVE_SIZES_BITS}     # 3/5/9/18/36 bytes
 
 
+def slave_frame_bytes(f_code: int) -> int:
+    """Bytes on the wire of the slave frame answering this F_code: its data and one check byte per 64 data bits,
+    at least one (TCN-05), delimiters left out; MvbFrameError for a reserved F_code."""
+    return _frame_bytes(slave_size_bits(f_code))
+
+
 def _as_bytes(raw: object, what: str) -> bytes:
     if not isinstance(raw, (bytes, bytearray, memoryview)):
         raise MvbFrameError(f"{what} must be bytes, got {type(raw).__name__}")
