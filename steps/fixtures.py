@@ -48,6 +48,10 @@ def pytest_addoption(parser: pytest.Parser) -> None:
     group.addoption("--no-snapshots", action="store_true", default=False,
                     help="simulate every scenario from power-up, never from a copy of a state another "
                          "scenario reached (sut/snapshot.py); verdicts and traces are the same either way")
+    group.addoption("--snapshot-every-branch", action="store_true", default=False,
+                    help="store a state wherever scenarios branch and restore it whenever one is stored, "
+                         "whatever it costs (for checking snapshots: which states the measured costs choose "
+                         "varies with the machine's load)")
     group.addoption("--frame-by-frame", action="store_true", default=False,
                     help="the reference simulates every advance frame by frame instead of skipping steady "
                          "periods (sut/reference/bulk.py); verdicts and traces are the same either way")
@@ -113,7 +117,7 @@ def pytest_configure(config: pytest.Config) -> None:
             declarations.of_backend(cls, override)
         except declarations.DeclarationError as exc:
             raise pytest.UsageError(f"declaration of the SUT {cls.__qualname__}: {exc}") from None
-    config.stash[_SNAPSHOTS] = SnapshotCache()
+    config.stash[_SNAPSHOTS] = SnapshotCache(every_branch=config.getoption("--snapshot-every-branch"))
     if config.getoption("--contract-record"):
         config.stash[_RECORDER] = Recorder()
     if config.getoption("--frame-by-frame"):

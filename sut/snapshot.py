@@ -88,8 +88,12 @@ class SnapshotCache:
     """The states of one process, keyed by nodes of a journal trie (a node per call, so a key costs one
     dict lookup however long the journal), with what each call cost to simulate and each restore cost."""
 
-    def __init__(self, budget_bytes: int = DEFAULT_BUDGET):
+    def __init__(self, budget_bytes: int = DEFAULT_BUDGET, every_branch: bool = False):
         self.budget = budget_bytes
+        # Store at every branch and restore whenever a state is stored, whatever the costs: the measured
+        # costs are wall time, so which states a loaded machine stores varies from run to run; a check of
+        # the snapshots themselves (tests/test_determinism.py) needs them used every time.
+        self.every_branch = every_branch
         self._children: dict[tuple[int, Any], int] = {}
         self._parent: list[int] = [0]                    # node 0: the root above every backend
         self._cost: list[float] = [0.0]                  # seconds the call leading to a node took to simulate
@@ -129,6 +133,8 @@ class SnapshotCache:
         """Given the deferred keys (oldest first), the stored one to restore before simulating the rest,
         or None to simulate them all: whichever the costs measured so far say is cheaper."""
         cost = self._cost
+        if self.every_branch:
+            return next((node for node in reversed(pending) if node in self._states), None)
         best, best_cost = None, sum(cost[n] for n in pending)
         after = 0.0
         for node in reversed(pending):
@@ -173,7 +179,7 @@ class SnapshotCache:
                 or type(driver) in self._refused):
             return
         reach = self._reach_cost(node)
-        if reach < 1e-3:                                  # less than a millisecond to simulate: never worth it
+        if reach < 1e-3 and not self.every_branch:                                  # less than a millisecond to simulate: never worth it
             self._declined.add(node)
             return
         try:
@@ -186,7 +192,7 @@ class SnapshotCache:
             self._declined.add(node)
             self.note(type(driver), f"a state could not be snapshotted: {exc!r:.160}", "it is simulated instead")
             return
-        if reach < 2 * self._seconds_per_byte * len(data):
+        if reach < 2 * self._seconds_per_byte * len(data) and not self.every_branch:
             self._declined.add(node)
             return
         self._put(node, type(driver), data)

@@ -76,6 +76,17 @@ def test_a_restored_train_is_the_train_simulated_from_power_up() -> None:
         assert run.now_us == plain.now_us and run.output("car3.CI gates") == plain.output("car3.CI gates")
 
 
+def test_every_branch_stores_and_restores_whatever_the_measured_costs_say() -> None:
+    # Restoring made to look dearer than any simulation: the measured costs store and restore nothing.
+    measured, every = SnapshotCache(), SnapshotCache(every_branch=True)
+    for cache in (measured, every):
+        cache._seconds_per_byte = 1.0
+        runs = [_scenario(cache, notch=notch) for notch in (1, 2, 3)]
+    assert measured.restored == measured.stored == 0
+    assert every.stored >= 1 and every.restored >= 1
+    assert runs[-1].trace.to_csv() == _scenario(SnapshotCache(), notch=3).trace.to_csv()
+
+
 def test_a_repeated_scenario_is_answered_without_the_train() -> None:
     cache = SnapshotCache()
     _scenario(cache)
