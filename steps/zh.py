@@ -157,6 +157,7 @@ METRO_TEXTS = {"<device>:无状态数据": "<device>: no status data", "无状�
                "<node>:WTB无应答": "<node>: no answer on WTB", "WTB无应答": "no answer on WTB",
                "<node>:WTB恢复应答": "<node>: answering on WTB again", "WTB恢复应答": "answering on WTB again",
                "WTB主站切换(<node>无响应)": "WTB master (<node> silent)", "输入取自<module>": "inputs from <module>",
+               "无可用MVB I/O模块": "no MVB I/O module alive",
                "<bus>线路<line>故障": "<bus> line <line>: fault", "<bus>线路<line>恢复": "<bus> line <line>: restored",
                "列车网络故障:制动停车": "train network failure: braking to a stop"}
 

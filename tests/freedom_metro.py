@@ -54,6 +54,7 @@ OWN_TEXTS = {"<device>: no status data": "<device> status timeout",
              "<node>: answering on WTB again": "WTB node <node> back",
              "WTB master (<node> silent)": "WTB mastership taken over from <node>",
              "inputs from <module>": "I/O source switched to <module>",
+             "no MVB I/O module alive": "NO LIVE I/O MODULE, CAB INPUTS LOST",
              "<bus> line <line>: fault": "<bus> channel <line> failed",
              "<bus> line <line>: restored": "<bus> channel <line> recovered",
              "train network failure: braking to a stop": "TRAIN NETWORK FAILURE - BRAKE TO STOP"}

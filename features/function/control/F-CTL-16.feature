@@ -1,6 +1,6 @@
 @item:F-CTL-16 @profile:metro-tcn @req:TST-04
 Feature: F-CTL-16 Redundant MVB I/O modules: module 1 while its life signal is set, else module 2
-  Requirements: RED-07 (primary), TCN-06, TCN-07, TST-04.
+  Requirements: RED-07 (primary), TCN-04, TCN-06, TCN-07, TCN-08, TCN-09, TST-04.
   The two I/O modules of a cab car read the same inputs (28 digital, 3 analogue). A wiring fault on one
   module's master-controller input shows which module's inputs drive the train; which channel carries the
   traction demand and the direction switch, and at what scale, is the SUT's declared I/O map (TCN-07 gives
@@ -52,6 +52,30 @@ Feature: F-CTL-16 Redundant MVB I/O modules: module 1 while its life signal is s
     And the driver moves the master controller of cab 1 to 85 % traction
     And 200 ms pass
     Then every VVVF applies 85 % traction within 100 ms
+
+  # Neither module lives: the cab's inputs are lost, a fault of the cab's subsystems that the displays show and
+  # the CCUs record (TCN-04, TCN-08) in the SUT's declared words.
+  @req:RED-07 @req:TCN-04 @req:TCN-08
+  Scenario: F-CTL-16 Both I/O modules of the active cab fail: the displays show it and the CCUs record it
+    Given the train has been powered up for 1000 ms
+    When "car1.IO1" fails
+    And "car1.IO2" fails
+    And 500 ms pass
+    Then the cab 1 display shows "no MVB I/O module alive"
+    And "car1.CCU" holds a record "no MVB I/O module alive"
+    And "car6.CCU" holds a record "no MVB I/O module alive"
+
+  # What the train does without the active cab's inputs the articles do not say; the suite takes the driver's
+  # demand as lost, as the train command is in a network failure (TCN-09): no traction, the train brakes
+  # (docs/decisions.md, "Both I/O modules of the active cab dead").
+  @req:RED-07 @req:TCN-09 @tentative
+  Scenario: F-CTL-16 Both I/O modules of the active cab fail: no VVVF pulls and every BECU brakes
+    Given the train has been powered up for 1000 ms
+    When "car1.IO1" fails
+    And "car1.IO2" fails
+    And 1000 ms pass
+    Then every VVVF applies 0 % traction
+    And every BECU applies 100 % brake
 
   @req:TCN-07
   Scenario Outline: F-CTL-16 The I/O modules read digital inputs DI01-DI28 and analogue inputs AI1-AI3
