@@ -109,6 +109,15 @@ def _(sut: TrainDriver, t_action: int) -> None:
     assert not inits, f"token initialisations: {analysis.describe(inits)}"
 
 
+@then(parsers.parse("此后{after:g} ms起没有节点发送令牌初始化"))
+@then(parsers.parse("no node sends a token initialisation from {after:g} ms after that on"))
+def _(sut: TrainDriver, t_action: int, after: float) -> None:
+    """PRO-05: a token is initialised only after 500 ms without one; once the ring has settled (however the SUT
+    settles a ring that grew back, docs/decisions.md "Link restored"), none follows while the token goes round."""
+    inits = sut.trace.select(kind="token.init", since=t_action + us(after))
+    assert not inits, f"token initialisations {after:g} ms and more after the action: {analysis.describe(inits)}"
+
+
 @then(parsers.parse("最后一次令牌传递后{lo:g}至{hi:g} ms发生令牌初始化"))
 @then(parsers.parse("a token initialisation follows the last token pass by {lo:g} to {hi:g} ms"))
 def _(sut: TrainDriver, t_action: int, lo: float, hi: float) -> None:

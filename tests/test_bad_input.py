@@ -116,6 +116,23 @@ def test_configure_without_arguments_keeps_the_interfaces_defaults() -> None:
         assert len(lcus) == cars, (given, train.ring_nodes())
 
 
+def test_the_metro_configured_without_arguments_is_its_one_composition() -> None:
+    # sut/contract/metro-tcn.yaml: configure(sets=1, cars_per_set=6), the one composition (TCN-02).
+    train = open_backend("reference", "metro-tcn")
+    train.configure()
+    train.power_on()
+    assert train.devices(6) and "car6.CCU" in train.devices(6)
+    with pytest.raises(OutOfRange):
+        train.devices(7)
+
+
+def test_the_atp_is_fitted_before_anything_else_is_done() -> None:
+    train = open_backend("reference", "atp-crh2")
+    train.configure(sets=1, cars_per_set=8)
+    with pytest.raises(SutError, match="fit the ATP to a train before anything else is done"):
+        train.configure(sets=1, cars_per_set=8)
+
+
 def test_a_silent_signal_generator_is_no_bad_input() -> None:
     # The contract's carrier: a ZPW-2000 carrier or 0, the generator silent. Refusing 0 is a usage error of its own.
     train = open_backend("reference", "atp")

@@ -606,6 +606,36 @@ class _ClosureCounter(_Toy):
         return self.tick.__closure__[self.tick.__code__.co_freevars.index("count")].cell_contents
 
 
+class _Alternating(_Toy):
+    """One pending call whose method alternates, left then right, 10 ms apart, each with the same event: its
+    trace repeats every 10 ms, its state every 20 ms, and only the pending method tells the two apart. A state
+    read that kept a bound method's object but not its function (seed 28: `shape.append(None)`) took the state
+    for steady over 10 ms and jumped an odd number of periods into the wrong side."""
+
+    BULK_READABLE = True
+
+    def __init__(self) -> None:
+        super().__init__()
+        self.kernel.call_later(5 * MS, self._left)
+
+    def _left(self) -> None:
+        self.emit("toy", "tick")
+        self.kernel.call_later(10 * MS, self._right)
+
+    def _right(self) -> None:
+        self.emit("toy", "tick")
+        self.kernel.call_later(10 * MS, self._left)
+
+
+@pytest.mark.parametrize("until_ms", [2000, 2010])
+def test_a_state_whose_pending_method_alternates_is_carried_as_frame_by_frame_runs_it(until_ms: int) -> None:
+    exact, fast = _Alternating(), _Alternating()
+    exact.kernel.run(until_ms * MS)
+    bulk.advance(fast, until_ms * MS)
+    assert fast.events == exact.events
+    assert [t.fn.__name__ for t in fast.kernel.pending()] == [t.fn.__name__ for t in exact.kernel.pending()]
+
+
 @pytest.mark.parametrize("toy", [_TwoCounters, _ClosureCounter], ids=["two moving fields", "count in a closure"])
 def test_a_toy_model_is_carried_over_a_jump_as_frame_by_frame_runs_it(toy: type, jumps: list[int]) -> None:
     exact, fast = toy(), toy()
