@@ -65,11 +65,6 @@ def _plain(value: Any) -> Any:
     return value if value is None or isinstance(value, (bool, str)) else type(value).__name__
 
 
-# A remote SUT's trace answers every query with new event objects, which a cache by identity would only
-# keep alive: a bound on what it holds (a scenario's steps are handed tens of thousands of distinct events).
-CHECKED_EVENTS_KEPT = 200_000
-
-
 class CheckedFields(dict):
     """An event's fields as a step reads them: a field the contract does not list for the kind is a gap of
     the suite; one the contract requires and the SUT left out is a breach of the SUT (never a KeyError).
@@ -96,11 +91,6 @@ class CheckedFields(dict):
     def get(self, key: str, default: Any = None) -> Any:
         self._guard._field(self._ev, key)
         return dict.get(self, key, default)
-
-    def _read_only(self, *args: Any, **kwargs: Any) -> None:
-        raise TypeError(f"the fields of {self._ev.source} {self._ev.kind} are what the SUT said: read only")
-
-    __setitem__ = __delitem__ = clear = pop = popitem = setdefault = update = __ior__ = _read_only
 
 
 class CheckedAnswer(dict):
@@ -151,22 +141,11 @@ class ContractTrace:
     def _wrap(self, ev: TraceEvent | None) -> TraceEvent | None:
         if ev is None:
             return None
-        guard = self._guard
-        # An event handed to a step before was held to the contract then, and is handed out as it was: steps
-        # select the same events over and over (of 1.34 M handed out in the crh2 network features, 0.59 M
-        # were distinct), and an event is immutable (its checked fields too). Kept by identity, the event
-        # itself held, so that its id cannot name another.
-        kept = guard._checked.get(id(ev))
-        if kept is not None and kept[0] is ev:
-            return kept[1]
-        if guard._recorder is not None:
-            guard._recorder.saw(guard._profile, ev)
-        if guard._contract is not None:
-            guard._contract.check_event(ev.source, ev.kind, ev.fields, ev.t)
-        wrapped = TraceEvent(ev.t, ev.source, ev.kind, CheckedFields(ev.fields, ev, guard))
-        if len(guard._checked) < CHECKED_EVENTS_KEPT:
-            guard._checked[id(ev)] = (ev, wrapped)
-        return wrapped
+        if self._guard._recorder is not None:
+            self._guard._recorder.saw(self._guard._profile, ev)
+        if self._guard._contract is not None:
+            self._guard._contract.check_event(ev.source, ev.kind, ev.fields, ev.t)
+        return TraceEvent(ev.t, ev.source, ev.kind, CheckedFields(ev.fields, ev, self._guard))
 
     def _asked(self, kind: str | None, source: str | None, where: dict) -> None:
         self._guard._kind(kind, source, where)
@@ -193,7 +172,6 @@ class ContractDriver:
     def __init__(self, driver: Any, profile: str, contract: Contract | None, recorder: Recorder | None = None):
         self._driver, self._profile, self._contract, self._recorder = driver, profile, contract, recorder
         self._fields_read: set[tuple[str, str]] = set()
-        self._checked: dict[int, tuple[TraceEvent, TraceEvent]] = {}   # id -> (event, as handed to steps)
 
     # -- what a step asks for ----------------------------------------------------------------------
     def _method(self, name: str) -> None:
@@ -253,15 +231,13 @@ class ContractDriver:
             raise ContractBreach(f"at the scenario's end: the trace holds an event whose kind is {nameless[0]}, not "
                                  f"a name (from {first.source!r} at t={first.t} us, fields {dict(first.fields)}); "
                                  "every event's kind is a non-empty string")
-        held, check, checked = 0, self._contract.check_event, self._checked
+        held, check = 0, self._contract.check_event
         for kind, events in trace.heads(self._contract.events, per_kind).items():
             entry = self._contract.events[kind]
             for ev in events:
                 if entry.names_source(ev.source):
-                    kept = checked.get(id(ev))
                     try:
-                        if kept is None or kept[0] is not ev:     # else a step was handed it: held then
-                            check(ev.source, kind, ev.fields, ev.t)
+                        check(ev.source, kind, ev.fields, ev.t)
                     except ContractBreach as breach:    # no step to blame: say where it was found
                         raise ContractBreach(f"at the scenario's end, in an event no step was handed: {breach}") \
                             from None
