@@ -179,7 +179,7 @@ class SnapshotCache:
                 or type(driver) in self._refused):
             return
         reach = self._reach_cost(node)
-        if reach < 1e-3 and not self.every_branch:                                  # less than a millisecond to simulate: never worth it
+        if reach < 1e-3 and not self.every_branch:        # under a millisecond to simulate: never worth it
             self._declined.add(node)
             return
         try:
