@@ -131,7 +131,8 @@ class SnapshotCache:
     # -- choosing how to catch up -----------------------------------------------------------------
     def plan(self, pending: list[int]) -> int | None:
         """Given the deferred keys (oldest first), the stored one to restore before simulating the rest,
-        or None to simulate them all: whichever the costs measured so far say is cheaper."""
+        or None to simulate them all: whichever the costs measured so far say is cheaper (with every_branch,
+        the latest stored one)."""
         cost = self._cost
         if self.every_branch:
             return next((node for node in reversed(pending) if node in self._states), None)
@@ -174,7 +175,7 @@ class SnapshotCache:
 
     def checkpoint(self, node: int, driver: TrainDriver) -> None:
         """Store the driver's state at `node` if journals branch there and simulating to it costs more
-        than restoring it."""
+        than restoring it (with every_branch, whatever it costs)."""
         if (node in self._states or node in self._declined or self._branches.get(node, 0) < 2
                 or type(driver) in self._refused):
             return

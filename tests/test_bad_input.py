@@ -121,7 +121,7 @@ def test_the_metro_configured_without_arguments_is_its_one_composition() -> None
     train = open_backend("reference", "metro-tcn")
     train.configure()
     train.power_on()
-    assert train.devices(6) and "car6.CCU" in train.devices(6)
+    assert "car6.CCU" in train.devices(6)
     with pytest.raises(OutOfRange):
         train.devices(7)
 
