@@ -40,6 +40,13 @@ class TraceEvent(NamedTuple):
 _KIND = attrgetter("kind")
 
 
+def _pick(events: Any, positions: Iterable[int]) -> list[TraceEvent]:
+    """The events at these positions of a list or an EventLog."""
+    if hasattr(events, "pick"):
+        return events.pick(positions)
+    return list(map(events.__getitem__, positions))
+
+
 def _source_matcher(pattern: str | None) -> Callable[[str], bool]:
     if pattern is None:
         return lambda s: True
@@ -76,7 +83,10 @@ class Trace:
     def _catch_up(self) -> list[str]:
         events, kinds = self._events, self._kinds
         if self._indexed < len(events):
-            fresh = list(map(_KIND, events[self._indexed:]))
+            # An EventLog (sut/eventlog.py) gives the kinds of a stretch it holds as a pattern without making
+            # its events.
+            fresh = (events.kinds(self._indexed) if hasattr(events, "kinds")
+                     else list(map(_KIND, events[self._indexed:])))
             kinds.extend(fresh)
             self._kind_set.update(fresh)
             self._indexed = len(events)
@@ -174,11 +184,11 @@ class Trace:
                         where: dict[str, Any]) -> list[TraceEvent]:
         events = self._events
         positions, lo, hi = self._window(kind, source, since, until)
+        taken = _pick(events, positions[lo:hi])
         if not where:
-            return [events[i] for i in positions[lo:hi]]
+            return taken
         wanted = where.items()
-        return [ev for ev in map(events.__getitem__, positions[lo:hi])
-                if not any(ev.fields.get(k) != v for k, v in wanted)]
+        return [ev for ev in taken if not any(ev.fields.get(k) != v for k, v in wanted)]
 
     def _first_indexed(self, kind: str, source: str | None, since: int | None, until: int | None,
                        where: dict[str, Any], last: bool) -> TraceEvent | None:
@@ -208,8 +218,8 @@ class Trace:
                 if lo < hi:
                     runs.append(positions[lo:hi])
         if len(runs) == 1:
-            return [events[i] for i in runs[0]]
-        return [events[i] for i in sorted(i for run in runs for i in run)]
+            return _pick(events, runs[0])
+        return _pick(events, sorted(i for run in runs for i in run))
 
     def kinds(self) -> set:
         """Every kind the trace holds, as the index reads them (at C speed): the end-of-scenario check asks

@@ -24,7 +24,8 @@ because they run last at any instant and nothing depends on them.
 The trace of skipped periods: a soak (`run`) leaves samples and `time.skip` marks; a plain advance
 (`advance`) owes every event, and repeats the traffic of the last checked period, times and moving fields
 carried on (the same rule one level up: event fields carry unbounded values, and a pattern that does not
-repeat exactly is simulated). tests/test_bulk.py runs both ways, frame by frame and in bulk, through
+repeat exactly is simulated). An EventLog (sut/eventlog.py) keeps such a stretch as the pattern and makes its
+events when they are read. tests/test_bulk.py runs both ways, frame by frame and in bulk, through
 faults, repairs, a link cut, block data, ramps and pending one-shot timers, and compares every leaf and,
 for advances, the trace byte for byte; it also runs feature items both ways.
 """
@@ -43,6 +44,7 @@ from operator import attrgetter
 from dataclasses import dataclass
 from typing import Any, Protocol
 
+from sut.eventlog import EventLog, Repeat, moved
 from sut.reference.kernel import Kernel, Timer
 
 
@@ -53,7 +55,7 @@ class Train(Protocol):
     and the ATP rig are such models."""
 
     kernel: Kernel
-    events: list
+    events: list | EventLog          # an EventLog holds a skipped stretch's trace as its pattern
 
     def emit(self, source: str, kind: str, /, **fields: Any) -> None: ...
 
@@ -450,23 +452,27 @@ def _before_one_shots(base: Snapshot, line: list[int], to: int, period: int) -> 
 def _repeat(train: "Train", pattern: list, first: int, last: int, period: int) -> None:
     """Append the pattern's repetitions `first`..`last` periods after the period it was taken from (they
     start now), with the metronomes' ticks of the same stretch run in place, merged as the kernel would have
-    run them: by time, and at one instant the model's events before the metronomes'."""
-    if not pattern:
+    run them: by time, and at one instant the model's events before the metronomes'. Into an EventLog the
+    stretch goes as a pattern (sut/eventlog.py), its events made when read; into a plain list, as events."""
+    # Most events move one field (a sequence number): that one is set in a copy without a call.
+    rows = tuple((ev.t, ev.source, ev.kind, ev.fields, moving, moving[0] if len(moving) == 1 else (None, 0))
+                 for ev, moving in pattern)
+    events, marks = train.events, getattr(train, "free_marks", None)
+    if type(events) is EventLog and rows and _monotone(rows, period):
+        _repeat_held(train, events, marks, rows, first, last, period)
+        return
+    if not rows:
         model: list = []
     else:
         make, kind = tuple.__new__, type(pattern[0][0])
-        # Most events move one field (a sequence number): that one is set in a copy without a call.
-        rows = [(ev.t, ev.source, ev.kind, ev.fields, moving, moving[0] if len(moving) == 1 else (None, 0))
-                for ev, moving in pattern]
         model = []
         for k in range(first, last + 1):
             shift = k * period
             model.extend([make(kind, (t + shift, source, what,
                                       fields if not moving else
                                       {**fields, one: fields[one] + d * k} if one is not None else
-                                      _moved(fields, moving, k)))
+                                      moved(fields, moving, k)))
                           for t, source, what, fields, moving, (one, d) in rows])
-    events, marks = train.events, getattr(train, "free_marks", None)
     n = len(events)
     events.extend(model)
     if marks is None:
@@ -484,11 +490,28 @@ def _repeat(train: "Train", pattern: list, first: int, last: int, period: int) -
     events[n:] = sorted(events[n:], key=_time)
 
 
-def _moved(fields: dict, moving: tuple, k: int) -> dict:
-    fields = dict(fields)
-    for name, d in moving:
-        fields[name] += d * k
-    return fields
+def _monotone(rows: tuple, period: int) -> bool:
+    """The repetitions are in time order one after the other (what placing the metronomes' events by a
+    search of their times needs; the eager repeat sorts instead)."""
+    times = [row[0] for row in rows]
+    return all(a <= b for a, b in zip(times, times[1:])) and times[-1] <= times[0] + period
+
+
+def _repeat_held(train: "Train", events: EventLog, marks: list[int] | None, rows: tuple, first: int, last: int,
+                 period: int) -> None:
+    free: list = []
+    if marks is not None:
+        n, m = len(events), len(marks)
+        train.kernel.run_metronomes(train.kernel.now + (last - first + 1) * period)
+        free = events[n:]
+        del events[n:]
+        del marks[m:]
+    reps = last - first + 1
+    free_at = Repeat.place(rows, first, reps, period, free)
+    n = len(events)
+    events.repeat(Repeat(rows, first, reps, period, free, free_at))
+    if marks is not None:
+        marks.extend(n + pos for pos in free_at)
 
 
 _time = attrgetter("t")         # a C-level key: a skipped stretch sorts millions of events

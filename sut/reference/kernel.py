@@ -218,7 +218,8 @@ class Kernel:
     def metronome(self, period: int, tick: Callable[..., None], phase: int = 0, args: tuple = ()) -> Cyclic:
         """A free-running emitter: `tick(*args)` every `period` us from now + phase, after everything else
         due at that instant (metronomes among themselves in the order they were registered). A tick may
-        read the model and write the trace, never change the model or schedule anything: then its ticks
+        read the model and write the trace, never read the trace, change the model or schedule anything (bulk.py
+        runs a skipped stretch's ticks before the stretch's trace is in place): then its ticks
         are a function of time alone while the rest is steady, and its period stays out of the model's
         steady period (bulk.py regenerates its ticks over a skipped stretch; run_metronomes)."""
         if period <= 0:

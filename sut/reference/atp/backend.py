@@ -36,6 +36,7 @@ from sut.reference.crh2.backend import ReferenceTrain
 from sut.reference import bulk
 from sut.reference.bulk import cyclic_period_us
 from sut.reference.kernel import Kernel
+from sut.eventlog import EventLog
 from sut.trace import Trace, TraceEvent
 
 INPUTS = ("ATP emergency brake", "ATP isolation switch", "VDX firmware", "position", "speed", "carrier",
@@ -66,7 +67,7 @@ class ReferenceAtp(PickledState, TrainDriver):
         super().__init__()
         self._cfg = AtpConfig().with_vdx(**self.VDX).with_atp(**self.ATP)
         self.kernel = Kernel()
-        self._events: list[TraceEvent] = []
+        self._events: EventLog = EventLog()
         self._crh2: ReferenceTrain | None = None
         self._train_brake = "none"
         self._build()
@@ -94,7 +95,7 @@ class ReferenceAtp(PickledState, TrainDriver):
     BULK_SKIP = ("_events", "_view")          # the trace and the index of it a step built are history, not state
 
     @property
-    def events(self) -> list[TraceEvent]:
+    def events(self) -> EventLog:
         return self._events
 
     @property

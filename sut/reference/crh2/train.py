@@ -21,6 +21,7 @@ from sut.reference.crh2.node import RingNode
 from sut.reference.crh2.ring import Ring, Span
 from sut.reference.crh2.selfdiag import SelfDiagLine
 from sut.reference.crh2.vehicle import Vehicle
+from sut.eventlog import EventLog
 from sut.trace import TraceEvent
 
 
@@ -31,7 +32,7 @@ class Train:
     def __init__(self, cfg: TrainConfig):
         self.cfg = cfg
         self.kernel = Kernel()
-        self.events: list[TraceEvent] = []
+        self.events: EventLog = EventLog()
         self.free_marks: list[int] = []   # where the metronomes' events are in `events` (bulk.py)
         self.supplies: dict[str, PowerSupply] = {}
         self.ccus: dict[int, Ccu] = {}

@@ -27,6 +27,7 @@ from sut.reference.metro.config import MetroConfig
 from sut.reference.metro.ports import Command, IoPort
 from sut.reference.metro.units import (CAB_CARS, CAB_DEVICES, MOTOR_DEVICES, UNIT_CARS, ControlUnit, Device,
                                        IoModule, Record)
+from sut.eventlog import EventLog
 from sut.trace import TraceEvent
 
 FULL = 10_000          # 100 % in 0.01 % steps
@@ -94,7 +95,7 @@ class MetroTrain:
         self.cfg = cfg
         t, b = cfg.timing, cfg.behaviour
         self.kernel = Kernel()
-        self.events: list[TraceEvent] = []
+        self.events: EventLog = EventLog()
         self.tapped: set[str] = set()
         self.nodes: dict[str, ControlUnit] = {}
         for car in range(1, 7):

@@ -1,0 +1,243 @@
+"""A trace's event list that holds a repeated stretch as its pattern (issue 33, item 2).
+
+Bulk advance (sut/reference/bulk.py) owes the trace of every period it skips: the traffic of the last checked
+period again, times and moving fields carried on. Held as events, ten minutes of an 8-car set are ~1.7 million
+tuples made, indexed, pickled with every stored state and freed again, though a Then step reads a handful. An
+`EventLog` keeps such a stretch as one `Repeat` (the pattern's rows, the repetitions, and the metronomes'
+events merged into it, each at its place) and makes an event only when it is read. Everything else is a plain
+list: `append` and `extend` are the current tail list's own, so emitting costs what it did.
+
+Read through it, an EventLog is the list the stretch would have been, event for event: `Repeat` makes each
+event by the formula bulk.py's eager repeat uses, and tests/test_eventlog.py holds the two equal (items,
+slices, kinds, pickling) over generated patterns. Kept eager: a model whose `events` is a plain list.
+"""
+from __future__ import annotations
+
+from bisect import bisect_left, bisect_right
+from itertools import chain
+from operator import attrgetter
+from typing import Any, Iterable, Iterator
+
+from sut.trace import TraceEvent
+
+_KIND = attrgetter("kind")
+
+
+def moved(fields: dict, moving: tuple, k: int) -> dict:
+    """The fields of a pattern event `k` periods on: every moving integer field carried on by its step."""
+    fields = dict(fields)
+    for name, d in moving:
+        fields[name] += d * k
+    return fields
+
+
+class Repeat:
+    """Repetitions `first` .. `first + reps - 1` of a pattern (rows: t, source, kind, fields, moving,
+    (one, d)), with `free` events (the metronomes' ticks of the same stretch) at the local positions
+    `free_at`, as a stable sort by time of the repetitions followed by the free events puts them."""
+
+    __slots__ = ("rows", "first", "reps", "period", "free", "free_at", "size")
+
+    def __init__(self, rows: tuple, first: int, reps: int, period: int, free: list, free_at: list[int]):
+        self.rows, self.first, self.reps, self.period = rows, first, reps, period
+        self.free, self.free_at = free, free_at
+        self.size = len(rows) * reps + len(free)
+
+    @staticmethod
+    def place(rows: tuple, first: int, reps: int, period: int, free: list) -> list[int]:
+        """Where each free event lands among the repetitions: after every model event up to its time. The
+        repetitions follow one another in time, so the ones wholly before it are counted, not searched."""
+        times = [row[0] for row in rows]
+        per, last, out = len(times), times[-1], []
+        for j, ev in enumerate(free):
+            k = min(max((ev.t - last) // period - first + 1, 0), reps)     # repetitions wholly up to ev.t
+            count = k * per
+            while k < reps:                       # the one ev.t falls in (two where they touch)
+                inside = bisect_right(times, ev.t - (first + k) * period)
+                if not inside:
+                    break
+                count += inside
+                k += 1
+            out.append(j + count)
+        return out
+
+    def __len__(self) -> int:
+        return self.size
+
+    def _model(self, m: int) -> TraceEvent:
+        k, r = divmod(m, len(self.rows))
+        k += self.first
+        t, source, kind, fields, moving, (one, d) = self.rows[r]
+        if moving:
+            fields = {**fields, one: fields[one] + d * k} if one is not None else moved(fields, moving, k)
+        return TraceEvent(t + k * self.period, source, kind, fields)
+
+    def __getitem__(self, j: int) -> TraceEvent:
+        free_at = self.free_at
+        if free_at:
+            p = bisect_left(free_at, j)
+            if p < len(free_at) and free_at[p] == j:
+                return self.free[p]
+            j -= p
+        return self._model(j)
+
+    def __iter__(self) -> Iterator[TraceEvent]:
+        free, free_at, model, m = self.free, self.free_at, self._model, 0
+        for p, pos in enumerate(free_at):
+            while m + p < pos:
+                yield model(m)
+                m += 1
+            yield free[p]
+        for m in range(m, self.size - len(free)):
+            yield model(m)
+
+    def slice(self, a: int, b: int) -> list[TraceEvent]:
+        return [self[j] for j in range(a, b)]
+
+    def kinds(self, a: int, b: int) -> list[str]:
+        model = [row[2] for row in self.rows] * self.reps
+        if self.free:
+            merged, m = [], 0
+            for p, pos in enumerate(self.free_at):
+                merged.extend(model[m:pos - p])
+                merged.append(self.free[p].kind)
+                m = pos - p
+            merged.extend(model[m:])
+            model = merged
+        return model[a:b] if (a, b) != (0, self.size) else model
+
+
+class EventLog:
+    """A list of trace events, in time order, whose closed stretches may be Repeats (see the module)."""
+
+    __slots__ = ("_chunks", "_starts", "_tail", "append", "extend", "__weakref__")
+
+    def __init__(self, events: Iterable[TraceEvent] = ()):
+        self._chunks: list = []
+        self._starts: list[int] = []
+        self._open(list(events), 0)
+
+    def _open(self, tail: list, start: int) -> None:
+        self._chunks.append(tail)
+        self._starts.append(start)
+        self._tail = tail
+        self.append = tail.append
+        self.extend = tail.extend
+
+    # -- writing ---------------------------------------------------------------------------------
+    def repeat(self, stretch: Repeat) -> None:
+        """Close the tail and put the stretch after it; new events go to a fresh tail."""
+        if not stretch.size:
+            return
+        start = len(self)
+        if not self._tail:
+            self._chunks.pop()
+            self._starts.pop()
+        self._chunks.append(stretch)
+        self._starts.append(start)
+        self._open([], start + stretch.size)
+
+    @property
+    def patterned(self) -> bool:
+        """Some stretch is held as a pattern (otherwise the tail is every event)."""
+        return len(self._chunks) > 1
+
+    # -- reading ---------------------------------------------------------------------------------
+    def __len__(self) -> int:
+        return self._starts[-1] + len(self._tail)
+
+    def __bool__(self) -> bool:
+        return len(self) > 0
+
+    def _locate(self, i: int) -> tuple[Any, int]:
+        c = bisect_right(self._starts, i) - 1
+        return self._chunks[c], i - self._starts[c]
+
+    def __getitem__(self, index: int | slice) -> Any:
+        if type(index) is slice:
+            start, stop, step = index.indices(len(self))
+            if step != 1:
+                return list(self)[index]
+            return self._range(start, stop)
+        n = len(self)
+        if index < 0:
+            index += n
+        if not 0 <= index < n:
+            raise IndexError("event index out of range")
+        start = self._starts[-1]
+        if index >= start:
+            return self._tail[index - start]
+        chunk, j = self._locate(index)
+        return chunk[j]
+
+    def _range(self, start: int, stop: int) -> list[TraceEvent]:
+        if start >= stop:
+            return []
+        if start >= self._starts[-1]:
+            base = self._starts[-1]
+            return self._tail[start - base:stop - base]
+        out: list = []
+        c = bisect_right(self._starts, start) - 1
+        while c < len(self._chunks) and self._starts[c] < stop:
+            chunk, base = self._chunks[c], self._starts[c]
+            a, b = max(start, base) - base, min(stop, base + len(chunk)) - base
+            out.extend(chunk[a:b] if type(chunk) is list else chunk.slice(a, b))
+            c += 1
+        return out
+
+    def pick(self, positions: Iterable[int]) -> list[TraceEvent]:
+        """The events at these positions (the trace index's answer), made at C speed where no stretch is
+        held as a pattern."""
+        if len(self._chunks) == 1:
+            return list(map(self._tail.__getitem__, positions))
+        return [self[i] for i in positions]
+
+    def kinds(self, start: int) -> list[str]:
+        """The kind of every event from `start` on (the trace index reads these)."""
+        out: list = []
+        c = bisect_right(self._starts, start) - 1
+        for chunk, base in zip(self._chunks[c:], self._starts[c:]):
+            a = max(start, base) - base
+            out.extend(map(_KIND, chunk[a:]) if type(chunk) is list else chunk.kinds(a, len(chunk)))
+        return out
+
+    def __iter__(self) -> Iterator[TraceEvent]:
+        return chain.from_iterable(self._chunks)
+
+    def __eq__(self, other: object) -> bool:
+        if isinstance(other, (EventLog, list)):
+            return len(self) == len(other) and all(a == b for a, b in zip(self, other))
+        return NotImplemented
+
+    __hash__ = None         # type: ignore[assignment]  # a list's kind of equality
+
+    def __setitem__(self, index: slice, value: Iterable[TraceEvent]) -> None:
+        start = index.indices(len(self))[0] if type(index) is slice else None
+        if start is None or index.step not in (None, 1) or index.stop is not None:
+            raise TypeError("an event log is only ever rewritten from a position to its end")
+        if start < self._starts[-1]:
+            self._flatten()
+        self._tail[start - self._starts[-1]:] = value
+
+    def __delitem__(self, index: slice) -> None:
+        self[index] = []
+
+    def _flatten(self) -> None:
+        events = list(self)
+        self._chunks, self._starts = [], []
+        self._open(events, 0)
+
+    def __repr__(self) -> str:
+        held = sum(len(c) for c in self._chunks if type(c) is not list)
+        return f"EventLog({len(self)} events, {held} held as patterns)"
+
+    def __getstate__(self) -> tuple:
+        return self._chunks, self._starts
+
+    def __setstate__(self, state: tuple) -> None:
+        chunks, starts = state
+        self._chunks, self._starts = chunks[:-1], starts[:-1]
+        self._open(chunks[-1], starts[-1])
+
+    def __reduce_ex__(self, protocol: int) -> tuple:
+        return (EventLog, (), self.__getstate__())

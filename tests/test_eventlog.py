@@ -1,0 +1,99 @@
+"""sut/eventlog.py holds a skipped stretch's trace as its pattern: read through it, the log must be the list
+bulk.py's eager repeat makes, event for event, with the metronomes' events at the same places; and the trace
+index must answer from it as from that list."""
+from __future__ import annotations
+
+import copy
+import pickle
+
+from hypothesis import HealthCheck, given, settings
+from hypothesis import strategies as st
+
+from sut.eventlog import EventLog
+from sut.reference import bulk
+from sut.reference.kernel import Kernel
+from sut.trace import Trace, TraceEvent
+
+SOURCES = ["car1.CCU.sys1.MDM8", "car2.LCU.CPU3", "car8.SDD"]
+KINDS = ["status.tx", "token.pass", "loop.cycle"]
+
+
+class _Toy:
+    """What _repeat needs of a train: its kernel, its events, where the metronomes' events are."""
+
+    def __init__(self, log: bool, now: int, metronomes: list[tuple[int, int]]):
+        self.kernel = Kernel()
+        self.kernel.now = now
+        self.events = EventLog() if log else []
+        self.free_marks: list[int] = []
+        for n, (period, phase) in enumerate(metronomes):
+            self.kernel.metronome(period, self._tick, phase, args=(f"dev{n}",))
+
+    def _tick(self, name: str) -> None:
+        self.free_marks.append(len(self.events))
+        self.events.append(TraceEvent(self.kernel.now, name, "loop.cycle", {"at": self.kernel.now // 100}))
+
+
+PERIOD = 1000
+rows = st.lists(st.tuples(st.integers(0, PERIOD), st.sampled_from(SOURCES), st.sampled_from(KINDS),
+                          st.integers(-3, 3), st.integers(0, 2)), max_size=8)
+
+
+def _pattern(drawn: list, start: int) -> list:
+    """A period's events at start < t <= start + PERIOD, in time order, each with its moving field."""
+    out = []
+    for offset, source, kind, step, moving in sorted(drawn, key=lambda r: r[0]):
+        fields = {"seq": 10, "word": "x", "count": 3}
+        move = (("seq", step),) if moving == 1 and step else (("seq", step), ("count", 1)) if moving == 2 else ()
+        out.append((TraceEvent(start + max(offset, 1), source, kind, fields), move))
+    return out
+
+
+@settings(max_examples=400, deadline=None, suppress_health_check=[HealthCheck.too_slow])
+@given(drawn=rows, first=st.integers(1, 3), reps=st.integers(1, 40), before=st.integers(0, 5),
+       metronomes=st.lists(st.tuples(st.integers(300, 5000), st.integers(0, 3000)), max_size=3),
+       asked=st.lists(st.tuples(st.sampled_from(KINDS), st.sampled_from([None, "car1", "dev0", "car2.LCU"]),
+                                st.one_of(st.none(), st.integers(0, 60_000))), max_size=4))
+def test_a_held_stretch_reads_as_the_eager_one(drawn, first, reps, before, metronomes, asked):
+    now = 20_000
+    pattern = _pattern(drawn, now - PERIOD)
+    made = {}
+    for log in (False, True):
+        toy = _Toy(log, now, metronomes)
+        for i in range(before):                           # what the trace held before the stretch
+            toy.events.append(TraceEvent(now - before + i, "train", "before", {"i": i}))
+        trace = Trace(toy.events)
+        trace.select(kind="status.tx")                    # an index built before the stretch, caught up after
+        bulk._repeat(toy, pattern, first, first + reps - 1, PERIOD)
+        toy.events.append(TraceEvent(now + (reps + 1) * PERIOD, "train", "after", {}))
+        made[log] = toy, trace
+    (eager, eager_trace), (held, held_trace) = made[False], made[True]
+    assert type(held.events) is EventLog and type(eager.events) is list
+    assert held.events.patterned == bool(pattern)
+    assert list(held.events) == eager.events and len(held.events) == len(eager.events)
+    assert held.free_marks == eager.free_marks
+    n = len(eager.events)
+    assert [held.events[i] for i in range(-n, n)] == eager.events + eager.events
+    for a, b in ((0, n), (before, n - 1), (n // 3, 2 * n // 3), (n - 1, n + 5), (5, 2)):
+        assert held.events[a:b] == eager.events[a:b]
+    assert held.events.kinds(0) == [ev.kind for ev in eager.events]
+    for kind, source, since in asked:
+        assert held_trace.select(kind=kind, source=source, since=since) == \
+            eager_trace.select(kind=kind, source=source, since=since)
+        assert held_trace.last(kind=kind, source=source) == eager_trace.last(kind=kind, source=source)
+    for copied in (pickle.loads(pickle.dumps(held.events)), copy.deepcopy(held.events)):
+        assert type(copied) is EventLog and list(copied) == eager.events
+        copied.append(TraceEvent(10**9, "train", "later", {}))
+        assert len(copied) == n + 1 and len(held.events) == n
+
+
+def test_a_log_rewritten_from_a_position_inside_a_held_stretch_keeps_every_event() -> None:
+    toy = _Toy(True, 5000, [])
+    toy.events.append(TraceEvent(4000, "train", "before", {}))
+    bulk._repeat(toy, _pattern([(10, SOURCES[0], KINDS[0], 1, 1)], 4000), 1, 3, PERIOD)
+    whole = list(toy.events)
+    assert toy.events.patterned and len(whole) == 4
+    toy.events[2:] = sorted(toy.events[2:], key=lambda ev: -ev.t)
+    assert list(toy.events) == whole[:2] + whole[:1:-1]
+    del toy.events[1:]
+    assert list(toy.events) == whole[:1]
