@@ -131,8 +131,11 @@ def headline(row: dict) -> str:
         return (f"508 bytes: table {_n(f['table_us_508b'])} us, crc package {_n(f['crc_opt_us_508b'])} us "
                 f"({f['crc_opt_us_508b'] / f['table_us_508b']:.0f}x)") if "table_us_508b" in f else ""
     if bench == "bulk_bench":
-        return (f"72 h powered on in {f.get('bulk_sample_1h_wall_s', float('nan')):.1f} s (target 10 s); frame by "
+        line = (f"72 h powered on in {f.get('bulk_sample_1h_wall_s', float('nan')):.1f} s (target 10 s); frame by "
                 f"frame {f['fbf_wall_s_per_sim_h']:.0f} s per simulated hour")
+        if "fbf_peak_rss_mib_per_sim_h" in f:
+            line += f", its peak RSS +{f['fbf_peak_rss_mib_per_sim_h']:,.0f} MiB per simulated hour"
+        return line
     if bench == "remote_bench":
         return f"remote / in process {f['ratio_wall']:.2f}x wall (target 2x), {f['in_process_wall_s']:.1f} s in process"
     if bench == "shard_bench":

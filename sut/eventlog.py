@@ -91,6 +91,24 @@ class Repeat:
         for m in range(m, self.size - len(free)):
             yield model(m)
 
+    def continues(self, model: list[TraceEvent]) -> bool:
+        """These events are the pattern's next repetition: the same times one period on, sources, kinds and
+        fields (equal, in the same order, each of the same type: as bulk.py's pattern check compares them)."""
+        if len(model) != len(self.rows):
+            return False
+        k = self.first + self.reps
+        shift = k * self.period
+        for (t, source, kind, fields, moving, (one, d)), ev in zip(self.rows, model):
+            if ev.t != t + shift or ev.kind != kind or ev.source != source:
+                return False
+            if moving:
+                fields = {**fields, one: fields[one] + d * k} if one is not None else moved(fields, moving, k)
+            got = ev.fields
+            if got is not fields and (got != fields or list(got) != list(fields)
+                                      or list(map(type, got.values())) != list(map(type, fields.values()))):
+                return False
+        return True
+
     def slice(self, a: int, b: int) -> list[TraceEvent]:
         return [self[j] for j in range(a, b)]
 
@@ -136,6 +154,38 @@ class EventLog:
         self._chunks.append(stretch)
         self._starts.append(start)
         self._open([], start + stretch.size)
+
+    def held_before(self, pos: int) -> tuple[Repeat, int] | None:
+        """The stretch (and where it starts) that ends at `pos`, where every event from `pos` on is in the
+        tail: the one a period simulated from there may become the next repetition of."""
+        if len(self._chunks) < 2 or self._starts[-1] != pos or type(self._chunks[-2]) is not Repeat:
+            return None
+        return self._chunks[-2], self._starts[-2]
+
+    def grow(self, free_marks: list[int]) -> None:
+        """Every event of the tail is the next repetition of the stretch before it (held_before), the free
+        ones at these positions: the stretch takes them over."""
+        stretch, tail = self._chunks[-2], self._tail
+        base = self._starts[-2]
+        stretch.free.extend(self[i] for i in free_marks)
+        stretch.free_at.extend(i - base for i in free_marks)
+        stretch.reps += 1
+        stretch.size += len(tail)
+        self._starts[-1] += len(tail)
+        tail.clear()
+
+    def hold(self, pos: int, stretch: Repeat) -> None:
+        """The events from `pos` to the end, all in the tail, are this stretch: held as it from now on."""
+        base = self._starts[-1]
+        if pos < base or len(self) - pos != stretch.size:
+            raise ValueError(f"events {pos}.. are not the tail's last {stretch.size}")
+        del self._tail[pos - base:]
+        self.repeat(stretch)
+
+    @property
+    def tail_start(self) -> int:
+        """Where the events still held one by one begin (every one from here on is)."""
+        return self._starts[-1]
 
     @property
     def patterned(self) -> bool:

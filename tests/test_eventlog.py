@@ -97,3 +97,61 @@ def test_a_log_rewritten_from_a_position_inside_a_held_stretch_keeps_every_event
     assert list(toy.events) == whole[:2] + whole[:1:-1]
     del toy.events[1:]
     assert list(toy.events) == whole[:1]
+
+
+class _Ticker(_Toy):
+    """A model that emits the same events every period but at the drawn instants, where it says otherwise."""
+
+    def __init__(self, log: bool, metronomes: list[tuple[int, int]], odd: set[int], every: int):
+        super().__init__(log, 0, metronomes)
+        self.odd, self.seq = odd, 0
+        self.kernel.every(every, self._tick_model)
+
+    def _tick_model(self) -> None:
+        self.seq += 1
+        now = self.kernel.now
+        self.events.append(TraceEvent(now, "car1.CCU.sys1.MDM8", "status.tx", {"seq": self.seq, "grant": None}))
+        if now // 100 in self.odd:
+            self.events.append(TraceEvent(now, "car1.CCU.sys1.CPU3", "fault.record", {"n": len(self.odd)}))
+        self.events.append(TraceEvent(now, "car2.LCU.CPU3", "poll", {"ok": True, "seq": self.seq % 3}))
+
+
+@settings(max_examples=60, deadline=None, suppress_health_check=[HealthCheck.too_slow])
+@given(odd=st.sets(st.integers(0, 600), max_size=6), every=st.sampled_from([100, 200, 300]),
+       period=st.sampled_from([300, 600]), metronomes=st.lists(st.tuples(st.integers(250, 2000),
+                                                                          st.integers(0, 999)), max_size=2),
+       runs=st.lists(st.integers(1, 20_000), min_size=1, max_size=4))
+def test_folded_periods_read_as_the_simulated_ones(odd, every, period, metronomes, runs):
+    made = {}
+    for log in (False, True):
+        toy = _Ticker(log, metronomes, odd, every)
+        folder = bulk._Folder(toy, period)
+        for span in runs:
+            folder.run(toy.kernel.now + span)
+        made[log] = toy
+    eager, held = made[False], made[True]
+    assert list(held.events) == eager.events and held.free_marks == eager.free_marks
+    assert held.events.kinds(0) == [ev.kind for ev in eager.events]
+    if not odd and not metronomes and len(runs) == 1 and runs[0] >= 10 * period and period % (3 * every) == 0:
+        # the model repeats every 3 ticks: all but the last periods are held as patterns
+        assert len(held.events) - held.events.tail_start <= 3 * (period // every) * 2, repr(held.events)
+        assert held.events.patterned
+
+
+def test_a_long_frame_by_frame_advance_holds_its_trace_as_patterns() -> None:
+    """A train that bulk may not skip (here --frame-by-frame) keeps a minute and a half of its trace in a
+    few stretches, not as 260,000 events; read through, the trace is the one simulated into a plain list."""
+    from tests.test_bulk import S, frame_by_frame, powered
+    made = {}
+    for log in (True, False):
+        train = powered()
+        if not log:
+            train.train.events = list(train.train.events)
+        with frame_by_frame():
+            train.advance(90 * S)
+        made[log] = train.train
+    held, eager = made[True], made[False]
+    assert len(held.events) == len(eager.events) > 200_000
+    assert list(held.events) == eager.events and held.free_marks == eager.free_marks
+    loose = len(held.events) - sum(len(c) for c in held.events._chunks if type(c) is not list)
+    assert loose < len(held.events) // 50, repr(held.events)

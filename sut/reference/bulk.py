@@ -454,9 +454,7 @@ def _repeat(train: "Train", pattern: list, first: int, last: int, period: int) -
     start now), with the metronomes' ticks of the same stretch run in place, merged as the kernel would have
     run them: by time, and at one instant the model's events before the metronomes'. Into an EventLog the
     stretch goes as a pattern (sut/eventlog.py), its events made when read; into a plain list, as events."""
-    # Most events move one field (a sequence number): that one is set in a copy without a call.
-    rows = tuple((ev.t, ev.source, ev.kind, ev.fields, moving, moving[0] if len(moving) == 1 else (None, 0))
-                 for ev, moving in pattern)
+    rows = _rows(pattern)
     events, marks = train.events, getattr(train, "free_marks", None)
     if type(events) is EventLog and rows and _monotone(rows, period):
         _repeat_held(train, events, marks, rows, first, last, period)
@@ -490,6 +488,12 @@ def _repeat(train: "Train", pattern: list, first: int, last: int, period: int) -
     events[n:] = sorted(events[n:], key=_time)
 
 
+def _rows(pattern: list) -> tuple:
+    # Most events move one field (a sequence number): that one is set in a copy without a call.
+    return tuple((ev.t, ev.source, ev.kind, ev.fields, moving, moving[0] if len(moving) == 1 else (None, 0))
+                 for ev, moving in pattern)
+
+
 def _monotone(rows: tuple, period: int) -> bool:
     """The repetitions are in time order one after the other (what placing the metronomes' events by a
     search of their times needs; the eager repeat sorts instead)."""
@@ -515,6 +519,68 @@ def _repeat_held(train: "Train", events: EventLog, marks: list[int] | None, rows
 
 
 _time = attrgetter("t")         # a C-level key: a skipped stretch sorts millions of events
+
+
+# Advances at least this long fold what they simulate frame by frame: a period whose events are the one
+# before's again (times one period on, moving fields carried on) is held as the next repetition of a pattern
+# (sut/eventlog.py), so that a long stretch bulk cannot skip (a train never steady, a part that does not
+# declare BULK_READABLE, --frame-by-frame) keeps its trace in bounded memory. Only the trace's form changes:
+# the simulation runs as it would, a period at a time.
+FOLD_MIN_US = 60_000_000
+
+
+class _Folder:
+    """A frame-by-frame stretch run a period at a time, each period folded into the trace's pattern if it
+    repeats it (_fold); the boundaries (time, trace length) of the periods run one after another."""
+
+    def __init__(self, train: "Train", period: int):
+        self.train, self.period = train, period
+        self.bounds: list[tuple[int, int]] = []
+
+    def run(self, to: int) -> None:
+        kernel = self.train.kernel
+        self._mark()
+        while to - kernel.now >= self.period:
+            kernel.run(kernel.now + self.period)
+            self._mark()
+        kernel.run(to)
+
+    def _mark(self) -> None:
+        now, bounds = self.train.kernel.now, self.bounds
+        if bounds and bounds[-1][0] != now - self.period:
+            bounds.clear()                       # not a period on from the last (a jump, a shorter run)
+        if bounds and bounds[-1][0] == now:
+            return
+        bounds.append((now, len(self.train.events)))
+        if len(bounds) >= 2:
+            _fold(self.train, bounds[-3][1] if len(bounds) >= 3 else None, bounds[-2][1], self.period)
+            del bounds[:-2]
+
+
+def _fold(train: "Train", a: int | None, b: int, period: int) -> None:
+    """The events from `b` on are one period's, those from `a` to `b` the period's before: held as the next
+    repetition of the stretch that ends at `b`, or with the period before as a new stretch, where they repeat
+    it as bulk's pattern check reads a repetition (_trace_pattern)."""
+    events = train.events
+    if type(events) is not EventLog:
+        return
+    marks = getattr(train, "free_marks", None) or []
+    held = events.held_before(b)
+    if held is not None:
+        stretch, _ = held
+        if stretch.period == period and stretch.continues(_model_events(train, b, len(events))):
+            events.grow(marks[bisect_left(marks, b):])
+        return
+    if a is None or a < events.tail_start:
+        return
+    try:
+        pattern = _trace_pattern(_model_events(train, a, b), _model_events(train, b, len(events)), period)
+    except NotSteady:
+        return
+    if pattern:
+        free = marks[bisect_left(marks, a):]
+        # The later period's events are the rows, so the earlier one is repetition -1.
+        events.hold(a, Repeat(_rows(pattern), -1, 2, period, [events[i] for i in free], [i - a for i in free]))
 
 
 def _model_events(train: "Train", start: int, stop: int) -> list:
@@ -559,9 +625,10 @@ def advance(train: "Train", until: int) -> BulkReport:
         return report
     period = steady_period_us(train)
     report = BulkReport(period_us=period)
+    folder = _Folder(train, period) if until - kernel.now >= FOLD_MIN_US else None
     if until - kernel.now < 3 * period or frame_by_frame():
         report.simulated_us = until - kernel.now
-        kernel.run(until)
+        folder.run(until) if folder else kernel.run(until)
         return report
     events = train.events
     window: list[tuple[Snapshot, int]] = []           # (state, trace length) at the last period boundaries
@@ -602,9 +669,9 @@ def advance(train: "Train", until: int) -> BulkReport:
                 step = -(-wait // period) * period
         to = min(kernel.now + step, until)
         report.simulated_us += to - kernel.now
-        kernel.run(to)
+        folder.run(to) if folder else kernel.run(to)
     report.simulated_us += until - kernel.now
-    kernel.run(until)
+    folder.run(until) if folder else kernel.run(until)
     return report
 
 
