@@ -182,7 +182,7 @@ def test_mutmut_mutates_the_references_and_runs_the_features_with_the_kill_recor
     mutmut = config["tool"]["mutmut"]
     assert mutmut["source_paths"] == ["sut/reference/"]
     assert mutmut["pytest_add_cli_args_test_selection"] == ["features/", "tests/test_bulk.py", "tests/test_kernel.py",
-                                                            "tests/test_bad_input.py"]
+                                                            "tests/test_bad_input.py", "tests/test_eventlog.py"]
     assert tuple(mutmut["pytest_add_cli_args_test_selection"]) == mutation.MAPPED_TESTS
     assert "outline.mutate.mutation_plugin" in mutmut["pytest_add_cli_args"]
     # snapshots off only while mutmut maps who reaches what (the plugin's pytest_configure), on for each mutant

@@ -121,7 +121,8 @@ def _mutmut(*args: str, env: dict[str, str] | None = None) -> subprocess.Complet
 # The plugins are among them: they decide how every test is mapped, so a change to one maps every test again.
 MAPS_EVERY_TEST = ("outline/mutate/mutation_plugin.py", "outline/mutate/quick_trampoline.py",
                    "outline/mutate/map_shard.py")
-MAPPED_TESTS = ("features/", "tests/test_bulk.py", "tests/test_kernel.py", "tests/test_bad_input.py")
+MAPPED_TESTS = ("features/", "tests/test_bulk.py", "tests/test_kernel.py", "tests/test_bad_input.py",
+                "tests/test_eventlog.py")
 MAPPED_FROM = ("features/**/*.feature", "steps/*.py", *(t for t in MAPPED_TESTS if t.endswith(".py")),
                *MAPS_EVERY_TEST)
 MAP_DIGEST = MUTANTS_DIR / "scenarios.sha256"          # what the map was made from (JSON; see map_sources)

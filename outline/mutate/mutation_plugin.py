@@ -8,7 +8,8 @@ the mutant, and stops at the first failure (-x); it keeps only the exit code.
   range OutOfRange, as docs/implementing-a-sut.md asks of any SUT; no scenario gives bad input, and seeds 9
   and 10 left 4 mutants that raise a TypeError there instead). The
   simulation engine they share (kernel.py, bulk.py) is no train: its specification is that a bulk advance
-  gives the same state and trace as frame by frame (tests/test_bulk.py) and the kernel's own contract
+  gives the same state and trace as frame by frame (tests/test_bulk.py; the trace held as patterns reads as
+  the one made event by event, tests/test_eventlog.py) and the kernel's own contract
   (tests/test_kernel.py), so its mutants also meet those tests, and first: they compare bulk with frame by
   frame directly, where a scenario notices a bulk mistake only in its one long advance, after hundreds of
   short ones (an engine mutant took minutes to reach it). mutmut collects all of them (pyproject.toml); this
