@@ -39,6 +39,24 @@ def test_pruned_svg_keeps_every_shape_it_uses() -> None:
     assert len(svg) < 20_000
 
 
+def test_the_quiet_renderer_draws_what_wavedrom_draws() -> None:
+    """render_svg's renderer (svgwrite's validation off, the skin built once and shared) gives WaveDrom's own
+    SVG byte for byte, picture after picture (a shared skin shape changed by one picture would show in the next)."""
+    from wavedrom import WaveDrom
+
+    diagrams = [
+        {"signal": [{"name": "a", "wave": "x=.=", "data": ["on", "off"]}, {"name": "b", "wave": "1.0."}]},
+        {"signal": [{"name": "events", "wave": "x2.3x", "data": ["power.on", "token.init"]},
+                    {"name": "EB valve", "wave": "=.=.", "data": ["energised", "de-energised"]},
+                    {"name": "bound", "wave": "0.1.0", "node": ".a.b"}],
+         "edge": ["a<->b 50 ms"], "head": {"text": "one slot = 50 ms"}, "foot": {"text": "t in ms"}},
+        {"signal": [{"name": "clk", "wave": "p......"}, ["group", {"name": "x", "wave": "01.zx=.", "data": "d"}]],
+         "config": {"hscale": 2}},
+    ]
+    for diagram in diagrams + diagrams:
+        assert render_svg(diagram) == render_svg(diagram, renderer=WaveDrom)
+
+
 def test_a_long_run_is_drawn_in_hours_and_skipped_stretches_are_unknown_not_silent() -> None:
     hour = 3_600_000.0                                  # ms
     trace = Trace([
