@@ -7,9 +7,13 @@ tuples made, indexed, pickled with every stored state and freed again, though a 
 events merged into it, each at its place) and makes an event only when it is read. Everything else is a plain
 list: `append` and `extend` are the current tail list's own, so emitting costs what it did.
 
+A long stretch simulated frame by frame is folded the same way as it runs (bulk.py's _Folder): a period whose
+events repeat the one before becomes the next repetition of a stretch (`hold`, `grow`), so that a run bulk
+cannot skip keeps its trace in bounded memory; the metronomes' events stay one by one inside it.
+
 Read through it, an EventLog is the list the stretch would have been, event for event: `Repeat` makes each
 event by the formula bulk.py's eager repeat uses, and tests/test_eventlog.py holds the two equal (items,
-slices, kinds, pickling) over generated patterns. Kept eager: a model whose `events` is a plain list.
+slices, kinds, pickling, folding) over generated patterns. Kept eager: a model whose `events` is a plain list.
 """
 from __future__ import annotations
 
@@ -155,12 +159,12 @@ class EventLog:
         self._starts.append(start)
         self._open([], start + stretch.size)
 
-    def held_before(self, pos: int) -> tuple[Repeat, int] | None:
-        """The stretch (and where it starts) that ends at `pos`, where every event from `pos` on is in the
-        tail: the one a period simulated from there may become the next repetition of."""
+    def held_before(self, pos: int) -> Repeat | None:
+        """The stretch that ends at `pos`, where every event from `pos` on is in the tail: the one a period
+        simulated from there may become the next repetition of."""
         if len(self._chunks) < 2 or self._starts[-1] != pos or type(self._chunks[-2]) is not Repeat:
             return None
-        return self._chunks[-2], self._starts[-2]
+        return self._chunks[-2]
 
     def grow(self, free_marks: list[int]) -> None:
         """Every event of the tail is the next repetition of the stretch before it (held_before), the free

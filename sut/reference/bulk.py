@@ -565,9 +565,8 @@ def _fold(train: "Train", a: int | None, b: int, period: int) -> None:
     if type(events) is not EventLog:
         return
     marks = getattr(train, "free_marks", None) or []
-    held = events.held_before(b)
-    if held is not None:
-        stretch, _ = held
+    stretch = events.held_before(b)
+    if stretch is not None:
         if stretch.period == period and stretch.continues(_model_events(train, b, len(events))):
             events.grow(marks[bisect_left(marks, b):])
         return
