@@ -7,6 +7,7 @@ ramp both fit one picture; the header says the slot length.
 """
 from __future__ import annotations
 
+import functools
 import json
 from dataclasses import dataclass
 
@@ -191,17 +192,13 @@ def render_svg(diagram: dict, renderer: type | None = None) -> str:
     return drawing.tostring()
 
 
-_QUIET: list[type] = []
-
-
+@functools.cache
 def _quiet_wavedrom() -> type:
     """WaveDrom as it draws, less two costs a report run paid per picture (15 ms -> 4.5 ms, measured on 25
     of the suite's diagrams, the same SVG byte for byte; tests/test_diagram.py holds it to WaveDrom's own):
     svgwrite's validation of every attribute of every shape (its `debug`, on by default; the shapes here
     are WaveDrom's own), and the skin's ~800 shapes built again for every picture: built once, shared by
     every picture's <defs>, which render_svg prunes in a list of its own."""
-    if _QUIET:
-        return _QUIET[0]
     from functools import partial
 
     import svgwrite
@@ -230,7 +227,6 @@ def _quiet_wavedrom() -> type:
             template["overflow"] = "hidden"
             return template
 
-    _QUIET.append(QuietWaveDrom)
     return QuietWaveDrom
 
 

@@ -68,13 +68,19 @@ class Repeat:
     def __len__(self) -> int:
         return self.size
 
+    @staticmethod
+    def _fields(row: tuple, k: int) -> dict:
+        """A row's fields `k` periods on (most rows move one field, a sequence number: set in a copy)."""
+        _, _, _, fields, moving, (one, d) = row
+        if not moving:
+            return fields
+        return {**fields, one: fields[one] + d * k} if one is not None else moved(fields, moving, k)
+
     def _model(self, m: int) -> TraceEvent:
         k, r = divmod(m, len(self.rows))
         k += self.first
-        t, source, kind, fields, moving, (one, d) = self.rows[r]
-        if moving:
-            fields = {**fields, one: fields[one] + d * k} if one is not None else moved(fields, moving, k)
-        return TraceEvent(t + k * self.period, source, kind, fields)
+        row = self.rows[r]
+        return TraceEvent(row[0] + k * self.period, row[1], row[2], self._fields(row, k))
 
     def __getitem__(self, j: int) -> TraceEvent:
         free_at = self.free_at
@@ -102,12 +108,10 @@ class Repeat:
             return False
         k = self.first + self.reps
         shift = k * self.period
-        for (t, source, kind, fields, moving, (one, d)), ev in zip(self.rows, model):
-            if ev.t != t + shift or ev.kind != kind or ev.source != source:
+        for row, ev in zip(self.rows, model):
+            if ev.t != row[0] + shift or ev.kind != row[2] or ev.source != row[1]:
                 return False
-            if moving:
-                fields = {**fields, one: fields[one] + d * k} if one is not None else moved(fields, moving, k)
-            got = ev.fields
+            fields, got = self._fields(row, k), ev.fields
             if got is not fields and (got != fields or list(got) != list(fields)
                                       or list(map(type, got.values())) != list(map(type, fields.values()))):
                 return False
