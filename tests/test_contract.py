@@ -313,14 +313,3 @@ def test_a_kinds_generated_field_test_says_what_its_checks_one_by_one_say(data: 
     one_by_one = one_by_one and all(fields[n] in allowed for n, allowed in kind.valued.items() if n in fields)
     assert kind.conforms(fields) == one_by_one
 
-
-def test_an_event_handed_twice_is_checked_once_and_handed_as_it_was_the_first_time() -> None:
-    ev = TraceEvent(5, "VDX", "loop.change", {"state": "open"})
-    guard = _guarded([ev])
-    first, again = guard.trace.first(kind="loop.change"), guard.trace.select(kind="loop.change")[0]
-    assert again is first and first["state"] == "open"
-    # A breach is found the first time an event is handed, and said every time: nothing is memoised then.
-    bad = _guarded([TraceEvent(5, "VDX", "loop.change", {})])
-    for _ in range(2):
-        with pytest.raises(ContractBreach, match="no field 'state'"):
-            bad.trace.first(kind="loop.change")

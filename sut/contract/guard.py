@@ -28,8 +28,6 @@ _NAMED = {
 }
 # Observations answered with a mapping whose keys the contract lists (`answers:`), nested keys dotted.
 _ANSWERS = frozenset({"monitor", "rated_limits", "counters"})
-# Events a scenario's guard keeps as handed, to hand again without a second check (ContractTrace._wrap).
-HANDED_HELD = 200_000
 
 
 class Recorder:
@@ -143,22 +141,11 @@ class ContractTrace:
     def _wrap(self, ev: TraceEvent | None) -> TraceEvent | None:
         if ev is None:
             return None
-        # Steps of a scenario hand the same events about twice over (a whole-trace check after a windowed
-        # one): an event already held to the contract is handed as it was wrapped then. The wrapped event
-        # holds the SUT's own, so an id in the table is that very object, not a later one at its address.
-        handed = self._guard._handed
-        wrapped = handed.get(id(ev))
-        if wrapped is not None:
-            return wrapped
         if self._guard._recorder is not None:
             self._guard._recorder.saw(self._guard._profile, ev)
         if self._guard._contract is not None:
             self._guard._contract.check_event(ev.source, ev.kind, ev.fields, ev.t)
-        wrapped = TraceEvent(ev.t, ev.source, ev.kind, CheckedFields(ev.fields, ev, self._guard))
-        if len(handed) >= HANDED_HELD:
-            handed.clear()          # a long trace read window by window: memory, not a verdict, is at stake
-        handed[id(ev)] = wrapped
-        return wrapped
+        return TraceEvent(ev.t, ev.source, ev.kind, CheckedFields(ev.fields, ev, self._guard))
 
     def _asked(self, kind: str | None, source: str | None, where: dict) -> None:
         self._guard._kind(kind, source, where)
@@ -185,7 +172,6 @@ class ContractDriver:
     def __init__(self, driver: Any, profile: str, contract: Contract | None, recorder: Recorder | None = None):
         self._driver, self._profile, self._contract, self._recorder = driver, profile, contract, recorder
         self._fields_read: set[tuple[str, str]] = set()
-        self._handed: dict[int, TraceEvent] = {}     # id of a SUT event -> it as steps were handed it
 
     # -- what a step asks for ----------------------------------------------------------------------
     def _method(self, name: str) -> None:
