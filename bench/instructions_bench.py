@@ -6,8 +6,10 @@
 Wall and CPU seconds on this shared 2-core VM move 7-20 % from one hour to the next (bench/performance-notes.md),
 as much as a change to the model is worth; `perf stat` has no instruction counter here (no PMU in the VM). An
 instruction count under callgrind is the same run after run (two runs of one 808 M workload differed by 128
-instructions), so a change of a few per cent shows, back to back with the commit before it. It costs ~50x the
-run's own time, hence small workloads.
+instructions; a warm-up run first keeps bytecode compilation out of the count), so a change of a few per cent
+shows, back to back with the commit before it. Not below ~1 %: a change that only moves objects in memory (a
+few lines more in this script) moved crh2-8 by 0.3 % (807.6 -> 805.5 M, each repeated exactly), as the order
+of objects hashed by address follows the layout. It costs ~50x the run's own time, hence small workloads.
 
 Each workload runs in its own `python` under `valgrind --tool=callgrind` (PYTHONHASHSEED=0), through the driver
 only (`sut.backends.open_backend(SUT, profile)`), and is counted whole; the `imports` workload (the same start-up
@@ -83,10 +85,14 @@ def run_one(name: str, sut: str) -> dict:
 
 def count(name: str, sut: str) -> tuple[int, int]:
     """(instructions, trace events) of one workload in a child process under callgrind."""
-    cmd = ["valgrind", "--tool=callgrind", "--callgrind-out-file=/dev/null", sys.executable, __file__,
-           "--child", name, "--sut", sut]
-    env = dict(os.environ, PYTHONHASHSEED="0", PYTHONPATH=str(ROOT), PYTHONDONTWRITEBYTECODE="")
-    done = subprocess.run(cmd, cwd=ROOT, capture_output=True, text=True, env=env)
+    child = [sys.executable, __file__, "--child", name, "--sut", sut]
+    env = dict(os.environ, PYTHONHASHSEED="0", PYTHONPATH=str(ROOT))
+    env.pop("PYTHONDONTWRITEBYTECODE", None)
+    # Once without valgrind first: a module compiled during the counted run (a changed file's bytecode cache)
+    # cost 4.5 M instructions more in one of two runs of crh2-8.
+    subprocess.run(child, cwd=ROOT, capture_output=True, env=env, check=True)
+    done = subprocess.run(["valgrind", "--tool=callgrind", "--callgrind-out-file=/dev/null", *child],
+                          cwd=ROOT, capture_output=True, text=True, env=env)
     found = _COLLECTED.search(done.stderr)
     if done.returncode != 0 or not found:
         raise SystemExit(f"{name}: valgrind run failed (exit {done.returncode}):\n{done.stderr[-2000:]}")

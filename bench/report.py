@@ -136,6 +136,9 @@ def headline(row: dict) -> str:
         if "fbf_peak_rss_mib_per_sim_h" in f:
             line += f", its peak RSS +{f['fbf_peak_rss_mib_per_sim_h']:,.0f} MiB per simulated hour"
         return line
+    if bench == "instructions_bench":
+        loads = [k[:-len("_minstr")] for k in f if k.endswith("_minstr") and k != "imports_minstr"]
+        return ", ".join(f"{w} {f[w + '_minstr']:,.0f} M instructions" for w in loads) + " (callgrind, net of imports)"
     if bench == "remote_bench":
         return f"remote / in process {f['ratio_wall']:.2f}x wall (target 2x), {f['in_process_wall_s']:.1f} s in process"
     if bench == "shard_bench":
@@ -237,6 +240,7 @@ after, the options that narrowed the run, the figures as named numbers; `--note 
 .venv/bin/python bench/cars_bench.py --record      # one workload on 8 cars and on 16 (two sets coupled)
 .venv/bin/python bench/remote_bench.py --record    # the conformance run in process vs through python -m sut serve
 .venv/bin/python bench/crc_bench.py --record       # our table CRC-16 vs the crc package
+.venv/bin/python bench/instructions_bench.py --record   # instructions of fixed workloads (callgrind), ~35 s
 .venv/bin/python bench/bulk_bench.py --record      # 72 h of continuous power-on: bulk advance vs frame by frame
 .venv/bin/python bench/shard_bench.py --record     # a selection serial, on two workers, and on N shards
 make performance                                   # this page and docs/performance.svg from the history
@@ -269,6 +273,11 @@ back with the commit before it. `--help` lists each script's options; each print
   power-on against frame by frame (issue 5: <= 10 s).
 - `bench/remote_bench.py` runs the conformance run in process and through `python -m sut serve` (issue 9: remote
   <= 2x); `bench/shard_bench.py` a selection serial, on two workers, and what N shards of `make shard` would take.
+- `bench/instructions_bench.py` counts the instructions of fixed workloads through the driver (an 8-car set and
+  two coupled, powered up as the features' Background, then a notch and 500 ms; a metro train likewise) under
+  valgrind's callgrind, net of start-up and imports. The count repeats to a few hundred instructions in 800 M
+  where seconds move 7-20 % by the hour (memory layout alone moves it ~0.3 %): the judge of a change to the
+  model of a per cent or more, back to back with the commit before.
 """
 
 
