@@ -8,7 +8,7 @@ as much as a change to the model is worth; `perf stat` has no instruction counte
 instruction count under callgrind is the same run after run (two runs of one 808 M workload differed by 128
 instructions; a warm-up run first keeps bytecode compilation out of the count), so a change of a few per cent
 shows, back to back with the commit before it. Not below ~1 %: a change that only moves objects in memory (a
-few lines more in this script) moved crh2-8 by 0.3 % (807.6 -> 805.5 M, each repeated exactly), as the order
+few lines more in this script) moved crh2-8 by 0.3 % (807.6 -> 805.5 M, each repeated exactly; counted then with the backends' imports), as the order
 of objects hashed by address follows the layout. It costs ~50x the run's own time, hence small workloads.
 
 Each workload runs in its own `python` under `valgrind --tool=callgrind` (PYTHONHASHSEED=0), through the driver
