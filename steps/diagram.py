@@ -199,15 +199,13 @@ def _quiet_wavedrom() -> type:
     svgwrite's validation of every attribute of every shape (its `debug`, on by default; the shapes here
     are WaveDrom's own), and the skin's ~800 shapes built again for every picture: built once, shared by
     every picture's <defs>, which render_svg prunes in a list of its own."""
-    from functools import partial
-
     import svgwrite
     from wavedrom import WaveDrom, waveskin
     from wavedrom.attrdict import AttrDict
 
     class QuietWaveDrom(WaveDrom):
-        container = AttrDict({k: partial(v, debug=False) for k, v in WaveDrom.container.items()})
-        element = AttrDict({k: v if k == "title" else partial(v, debug=False) for k, v in WaveDrom.element.items()})
+        container = AttrDict({k: functools.partial(v, debug=False) for k, v in WaveDrom.container.items()})
+        element = AttrDict({k: v if k == "title" else functools.partial(v, debug=False) for k, v in WaveDrom.element.items()})
         skins: dict = {}
 
         def another_template(self, index, source):

@@ -136,9 +136,9 @@ def pytest_collection_finish(session: pytest.Session) -> None:
     # collector's sight. A finished scenario's train is a web of cycles that only the collector frees: it is
     # freed at the scenario's end (pytest_runtest_teardown below), so the collector need not run during a
     # scenario, where each automatic pass walked the live train (a restored 8-car state is ~5 k tracked
-    # objects, its trace's events more as they come) and, each 50th, every train not yet freed. The threshold stays as a net for a scenario that makes cyclic
-    # garbage by the million. Conformance run in one process, 2026-12-07: GC 16.7 s -> 6.5 s of ~100 s,
-    # peak RSS 559 -> 293 MB.
+    # objects, its trace's events more as they come) and, each 50th, every train not yet freed. The
+    # threshold stays as a net for a scenario that makes cyclic garbage by the million. Conformance run in
+    # one process, 2026-12-07: GC 16.7 s -> 6.5 s of ~100 s, peak RSS 559 -> 293 MB.
     gc.collect()
     gc.freeze()
     gc.set_threshold(SCENARIO_GC_THRESHOLD, 50, 100)

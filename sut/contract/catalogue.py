@@ -70,8 +70,8 @@ def _conformance_test(checks: tuple, valued: dict[str, tuple]) -> Callable[[Mapp
     names: dict[str, Any] = {"_ABSENT": _ABSENT}
     for i, (name, plain, is_type, nullable) in enumerate(checks):
         names[f"plain{i}"], names[f"is_type{i}"] = plain, is_type
-        test = f"type(v) is {_builtin_name(next(iter(plain)))}" if len(plain) == 1 and _builtin_name(
-            next(iter(plain))) else f"type(v) in plain{i}"
+        only = next(iter(plain)) if len(plain) == 1 else None
+        test = f"type(v) is {only.__name__}" if only in _BUILTINS else f"type(v) in plain{i}"
         lines += [f"    v = get({name!r}, _ABSENT)",
                   f"    if not ({test} or v is _ABSENT{' or v is None' if nullable else ''} or is_type{i}(v)):",
                   "        return False"]
@@ -83,8 +83,8 @@ def _conformance_test(checks: tuple, valued: dict[str, tuple]) -> Callable[[Mapp
     return names["conforms"]
 
 
-def _builtin_name(t: type) -> str | None:
-    return t.__name__ if t in (int, float, str, bool, list, tuple, dict) else None
+# Types the generated test names by their builtin name (one plain type: `type(v) is int`, no set lookup).
+_BUILTINS = frozenset((int, float, str, bool, list, tuple, dict))
 
 
 @dataclass
