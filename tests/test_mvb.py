@@ -330,3 +330,45 @@ def test_a_frame_refused_on_both_whole_lines_counts_once_on_each_line_whichever_
     got = fast.carry(b"\x01\x02", lambda raw: raw, lambda *why: None)
     assert (got.data, got.line, got.errors) == (b"\x01\x02", "A", ())
     assert [fast.lines[ln].bad_run for ln in "AB"] == [0, 0]
+
+
+def _metro_trace_through_faults(sut: str) -> list:
+    from sut.backends import open_backend
+    driver = open_backend(sut, "metro-tcn")
+    try:
+        driver.configure(sets=1, cars_per_set=6)
+        driver.insert_key(1)
+        driver.set_direction(1, "forward")
+        driver.power_on()
+        driver.advance_ms(300)
+        driver.set_traction(1, 40)
+        driver.disturb_line("unit1.MVB", "A", 3)
+        driver.advance_ms(40)
+        # A message's two frames damaged, whole frames, two more: each line's count starts again in between
+        for line in "AABB":
+            driver.disturb_line("unit1.MVB", line, 2)
+            driver.advance_ms(5)
+        driver.cut_line("unit2.MVB", "B")
+        driver.fail("car2.BECU")
+        driver.advance_ms(60)
+        driver.restore_line("unit2.MVB", "B")
+        driver.disturb_line("unit2.MVB", "B", 1)
+        driver.fail("car1.IO1")
+        driver.advance_ms(120)
+        return [(e.t, e.source, e.kind, e.fields) for e in driver.trace]
+    finally:
+        driver.shutdown()
+
+
+@pytest.mark.parametrize("sut", ["reference", "tests.variants:LineSwitchAfterThreeFrames"])
+def test_frames_handed_over_as_sent_leave_the_trace_the_bit_path_leaves(monkeypatch, sut):
+    """On whole, untapped lines the metro hands each MVB frame over as it was sent, without encoding or decoding
+    it (tcds._mvb_message); through line faults, a failed device and a failed I/O module the trace must be the
+    one the bit-by-bit path gives (also where receivers switch lines only after three bad frames: the count of
+    bad frames on the trusted line must start again with a whole frame either way)."""
+    from sut.reference.metro.bus import DualLineBus
+    as_sent = _metro_trace_through_faults(sut)
+    monkeypatch.setattr(DualLineBus, "whole", property(lambda bus: False))
+    bit_by_bit = _metro_trace_through_faults(sut)
+    assert len(as_sent) > 1000
+    assert as_sent == bit_by_bit

@@ -130,10 +130,17 @@ def data_class(f_code: int) -> DataClass:
 def slave_size_bits(f_code: int) -> int:
     """Data bits of the slave frame that answers a master frame with this F_code; MvbFrameError for a
     reserved F_code, which no slave frame answers."""
+    if type(f_code) is int:                    # asked for every frame on a bus: one lookup where it can be
+        bits = _SLAVE_BITS.get(f_code)
+        if bits is not None:
+            return bits
     if is_reserved(f_code):
         raise MvbFrameError(f"F_code {f_code} is reserved: no slave frame answers it "
                             f"(IEC 61375-3-1 assigns {sorted(F_CODES)})")
     return F_CODES[f_code].slave_size_bits
+
+
+_SLAVE_BITS = {code: spec.slave_size_bits for code, spec in F_CODES.items()}
 
 
 # -- frames ---------------------------------------------------------------------------------------
@@ -217,6 +224,11 @@ def encode_slave(data: bytes) -> bytes:
 @functools.lru_cache(maxsize=1 << 16)
 def _master_frame(f_code: int, address: int) -> "MasterFrame":
     return MasterFrame(f_code, address)
+
+
+def master_frame(f_code: int, address: int) -> "MasterFrame":
+    """`MasterFrame(f_code, address)`, checked once per F_code and address (a frame is a value)."""
+    return _master_frame(f_code, address)
 
 
 @functools.lru_cache(maxsize=1 << 16)

@@ -61,20 +61,31 @@ class DualLineBus:
         self.trusted = "A"
         self._trusted_bad = 0
 
+    @property
+    def whole(self) -> bool:
+        """Both lines whole and carrying the same bits: a frame arrives on both as it was sent."""
+        a, b = self.lines["A"], self.lines["B"]
+        return not (a.cut or b.cut or a.disturb or b.disturb) and len(self.lines_sent) == 2
+
+    def carry_as_sent(self, data: Any) -> Carried:
+        """`carry` on whole lines of a frame whose decoding is known to be `data` (the sender's own frame:
+        decoding undoes encoding), without its bits."""
+        a, b = self.lines["A"], self.lines["B"]
+        a.bad_run = b.bad_run = 0
+        self._trusted_bad = 0
+        return Carried(data, self.trusted, ())
+
     def carry(self, wire: bytes, decode: Callable[[bytes], Any],
               on_switch: Callable[[str, str, str], None]) -> Carried:
-        a, b = self.lines["A"], self.lines["B"]
-        if not (a.cut or b.cut or a.disturb or b.disturb) and len(self.lines_sent) == 2:
-            # Both lines whole and carrying the same bits: one decode answers for both (decode is a pure
-            # function of the bits), which is what almost every frame of a run is.
+        if self.whole:
+            # One decode answers for both lines (decode is a pure function of the bits), which is what almost
+            # every frame of a run is.
             try:
                 data = decode(wire)
             except ValueError:
                 pass             # refused on both lines: counted below, line by line, as any refused frame is
             else:
-                a.bad_run = b.bad_run = 0
-                self._trusted_bad = 0
-                return Carried(data, self.trusted, ())
+                return self.carry_as_sent(data)
         copies: dict[str, Any] = {}
         errors: list[str] = []
         for ln in LINES:

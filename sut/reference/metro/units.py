@@ -66,7 +66,9 @@ class ControlUnit:
 
     @property
     def on_wtb(self) -> bool:
-        return self.alive and "VGWS" not in self.failed_boards
+        # `alive` written out: asked a few times for every frame on the unit's MVB
+        failed_boards = self.failed_boards
+        return not self.failed and not (failed_boards & VITAL_BOARDS) and "VGWS" not in failed_boards
 
     @property
     def masters_mvb(self) -> bool:
