@@ -513,3 +513,71 @@ def test_a_cycle_stopped_before_its_first_tick_never_ticks(k):
     k.stop_cyclic(cyc)
     k.run(1_000)
     assert ticks == []
+
+
+# -- put_off: a watchdog moved, not replaced ---------------------------------------------------------
+_STEP = st.tuples(st.integers(0, 30),                                     # us to run first
+                  st.sampled_from(["call", "rearm", "cancel", "peek"]),
+                  st.integers(0, 2),                                      # which watchdog
+                  st.integers(0, 40),                                     # delay
+                  st.sampled_from([URGENT, NORMAL, LATE]))
+
+
+def _watchdog_run(program: list, lazy: bool) -> tuple[list, list, list]:
+    k = Kernel()
+    log: list = []
+    dogs: list = [None, None, None]
+
+    def rearm(i: int, delay: int) -> None:
+        if lazy:
+            dogs[i] = k.put_off(dogs[i], delay, fired, i)
+        else:
+            if dogs[i] is not None:
+                dogs[i].cancel()
+            dogs[i] = k.call_later(delay, fired, i)
+
+    def fired(i: int) -> None:
+        log.append((k.now, "dog", i))
+        dogs[i] = None
+
+    def tick(n: int, i: int, delay: int) -> None:
+        log.append((k.now, "tick", n))
+        rearm(i, delay)                   # as a status frame re-arms a node's token watchdog when it arrives
+
+    peeks = []
+    for n, (run, action, i, delay, prio) in enumerate(program):
+        k.run(k.now + run)
+        if action == "call":
+            k.call_later(delay, tick, n, i, delay // 2 + 1, prio=prio)
+        elif action == "rearm":
+            rearm(i, delay)
+        elif action == "cancel" and dogs[i] is not None:
+            dogs[i].cancel()
+            dogs[i] = None
+        elif action == "peek":
+            peeks.append(k.peek())
+    k.run(k.now + 200)
+    return log, peeks, sorted((t.at, t.prio, t.seq) for t in k.pending())
+
+
+@settings(max_examples=300, deadline=None)
+@given(st.lists(_STEP, max_size=40))
+def test_a_timer_put_off_fires_as_a_cancelled_and_rescheduled_one_would(program):
+    """put_off moves a pending watchdog instead of cancelling it and scheduling another; the kernel pops its old
+    entry and puts it back at its new time. Whatever else is due at the same instants, from whichever priority,
+    and however often it is put off, cancelled or peeked at, every callback runs when and in the order the
+    cancel-and-reschedule way runs it, and the same timers with the same keys are left pending."""
+    assert _watchdog_run(program, lazy=True) == _watchdog_run(program, lazy=False)
+
+
+def test_put_off_keeps_one_entry_per_watchdog_in_the_heap(k):
+    fired = []
+    dog = None
+    for t in range(0, 5000, 10):
+        k.run(t)
+        dog = k.put_off(dog, 500, fired.append, "dog")
+    assert len(k._heap) == 1 and dog.at == 4990 + 500 and not fired
+    k.run(6000)
+    assert fired == ["dog"] and not k._heap
+    with pytest.raises(SimulationError, match="whole us"):
+        k.put_off(None, 1.5, fired.append, "dog")

@@ -200,6 +200,26 @@ class Kernel:
         heapq.heappush(self._heap, (at, prio, self._seq, timer))
         return timer
 
+    def put_off(self, timer: Timer | None, delay: int, fn: Callable, *args: Any) -> Timer:
+        """What `timer.cancel()` and then `call_later(delay, fn, *args)` give, the same heap key and so the same
+        order, for a timer put off far more often than it fires (a token watchdog, re-armed by every status
+        frame a node hears): while it is pending and would come no later, it is moved instead of replaced, and
+        its entry in the heap, popped at its old time, goes back at the new one (`run`). No cancelled entries pile
+        up in the heap, and no timer is made per re-arm."""
+        if delay < 0 or type(delay) is not int:
+            raise SimulationError(f"cannot put a timer off by {delay!r} us: delays are whole us, never into "
+                                  "the past")
+        at = self.now + delay
+        self._seq += 1
+        if timer is not None:
+            if timer.fn is not None and timer.at <= at and timer.prio == NORMAL:
+                timer.at, timer.seq, timer.fn, timer.args = at, self._seq, fn, args
+                return timer
+            timer.fn = None
+        timer = Timer(at, NORMAL, self._seq, fn, args)
+        heapq.heappush(self._heap, (at, NORMAL, self._seq, timer))
+        return timer
+
     def process(self, gen: ProcessGen, name: str = "process") -> Process:
         return Process(self, gen, name)
 
@@ -290,8 +310,10 @@ class Kernel:
     def peek(self) -> int | None:
         """Time of the next pending callback, or None."""
         heap = self._heap
-        while heap and heap[0][3].fn is None:
-            heapq.heappop(heap)
+        while heap and (heap[0][3].fn is None or heap[0][3].seq != heap[0][2]):
+            timer = heapq.heappop(heap)[3]
+            if timer.fn is not None:                 # put off since its entry was made: at its new time
+                heapq.heappush(heap, (timer.at, timer.prio, timer.seq, timer))
         return heap[0][0] if heap else None
 
     def run(self, until: int) -> None:
@@ -301,9 +323,12 @@ class Kernel:
         heap = self._heap
         pop = heapq.heappop
         while heap and heap[0][0] <= until:
-            at, _prio, _seq, timer = pop(heap)
+            at, _prio, seq, timer = pop(heap)
             fn = timer.fn
             if fn is None:
+                continue
+            if timer.seq != seq:                     # put off since (put_off): back in at its new time
+                heapq.heappush(heap, (timer.at, timer.prio, timer.seq, timer))
                 continue
             timer.fn = None
             self.now = at

@@ -1,6 +1,8 @@
 """The CRH2 payloads on the ring, above the ARCNET frames of sut/codecs/arcnet.py (re-exported here)."""
 from __future__ import annotations
 
+import functools
+
 from dataclasses import dataclass
 from typing import Any
 
@@ -285,7 +287,9 @@ def _plain(value: Any) -> Any:
     return value
 
 
+@functools.lru_cache(maxsize=None)
 def tx_time_us(frame_bytes: int, bitrate: int) -> int:
-    """Time one frame occupies a link, rounded up to whole microseconds."""
+    """Time one frame occupies a link, rounded up to whole microseconds (asked at every hop of every frame, for
+    a handful of lengths)."""
     bits = frame_bytes * BITS_PER_BYTE + ALERT_BITS
     return -(-bits * 1_000_000 // bitrate)

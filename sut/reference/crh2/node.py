@@ -155,8 +155,7 @@ class RingNode:
 
     # -- token protocol -------------------------------------------------------------------------
     def _arm_watch(self, delay: int) -> None:
-        self._cancel(self._watch)
-        self._watch = self.kernel.call_later(delay, self._watch_expired)
+        self._watch = self.kernel.put_off(self._watch, delay, self._watch_expired)
 
     def _watch_expired(self) -> None:
         self._watch = None
