@@ -27,8 +27,11 @@ def _kind(fn, args: tuple) -> str:
 
 def _heappop(heap: list):
     entry = heapq.heappop(heap)
-    timer = entry[-1]
-    if isinstance(timer, kernel.Timer) and timer.fn is not None:
+    if len(entry) == 5:                                     # Kernel.schedule: the callback itself
+        _COUNTS[_kind(entry[3], entry[4])] += 1
+        return entry
+    timer = entry[-1]                                       # (the metronomes' catch-up pops its own triples)
+    if isinstance(timer, kernel.Timer) and timer.fn is not None and timer.seq == entry[2]:   # not put off since
         _COUNTS[_kind(timer.fn, timer.args)] += 1
     return entry
 

@@ -517,13 +517,14 @@ def test_a_cycle_stopped_before_its_first_tick_never_ticks(k):
 
 # -- put_off: a watchdog moved, not replaced ---------------------------------------------------------
 _STEP = st.tuples(st.integers(0, 30),                                     # us to run first
-                  st.sampled_from(["call", "rearm", "cancel", "peek"]),
+                  st.sampled_from(["call", "rearm", "cancel", "peek", "schedule", "pending"]),
                   st.integers(0, 2),                                      # which watchdog
                   st.integers(0, 40),                                     # delay
                   st.sampled_from([URGENT, NORMAL, LATE]))
 
 
 def _watchdog_run(program: list, lazy: bool) -> tuple[list, list, list]:
+    """Lazy: put_off and schedule; else what they stand for, cancel-and-call_later and call_later."""
     k = Kernel()
     log: list = []
     dogs: list = [None, None, None]
@@ -556,6 +557,10 @@ def _watchdog_run(program: list, lazy: bool) -> tuple[list, list, list]:
             dogs[i] = None
         elif action == "peek":
             peeks.append(k.peek())
+        elif action == "schedule":
+            (k.schedule if lazy else k.call_later)(delay, tick, n, i, delay // 3 + 1)
+        elif action == "pending":                      # bulk.py reads the pending timers: schedule's made then
+            peeks.append(sorted((t.at, t.prio, t.seq) for t in k.pending()))
     k.run(k.now + 200)
     return log, peeks, sorted((t.at, t.prio, t.seq) for t in k.pending())
 
@@ -564,9 +569,10 @@ def _watchdog_run(program: list, lazy: bool) -> tuple[list, list, list]:
 @given(st.lists(_STEP, max_size=40))
 def test_a_timer_put_off_fires_as_a_cancelled_and_rescheduled_one_would(program):
     """put_off moves a pending watchdog instead of cancelling it and scheduling another; the kernel pops its old
-    entry and puts it back at its new time. Whatever else is due at the same instants, from whichever priority,
-    and however often it is put off, cancelled or peeked at, every callback runs when and in the order the
-    cancel-and-reschedule way runs it, and the same timers with the same keys are left pending."""
+    entry and puts it back at its new time. schedule keeps no Timer for a callback until the pending timers are
+    asked for. Whatever else is due at the same instants, from whichever priority, and however often a watchdog
+    is put off, cancelled or peeked at, or the pending timers read, every callback runs when and in the order
+    cancel-and-reschedule and call_later run it, and the same timers with the same keys are left pending."""
     assert _watchdog_run(program, lazy=True) == _watchdog_run(program, lazy=False)
 
 

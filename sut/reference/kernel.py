@@ -171,7 +171,7 @@ class Kernel:
 
     def __init__(self) -> None:
         self.now = 0
-        self._heap: list[tuple[int, int, int, Timer]] = []
+        self._heap: list[tuple] = []     # (at, prio, seq, Timer), or (at, prio, seq, fn, args): schedule()
         self._seq = 0
         self.events = 0  # callbacks run, for benchmarks
         self._cyclics: list[Cyclic] = []
@@ -199,6 +199,16 @@ class Kernel:
         timer = Timer(at, prio, self._seq, fn, args)
         heapq.heappush(self._heap, (at, prio, self._seq, timer))
         return timer
+
+    def schedule(self, delay: int, fn: Callable, *args: Any) -> None:
+        """`call_later(delay, fn, *args)` for a callback nobody cancels (a frame's arrival at the next node, a
+        bus message): its heap entry is the key, `fn` and `args`, and no Timer is made for it unless the pending
+        timers are asked for (`pending`). Thousands a simulated second."""
+        if delay < 0 or type(delay) is not int:
+            raise SimulationError(f"cannot schedule after a delay of {delay!r} us: delays are whole us, never "
+                                  "into the past")
+        self._seq += 1
+        heapq.heappush(self._heap, (self.now + delay, NORMAL, self._seq, fn, args))
 
     def put_off(self, timer: Timer | None, delay: int, fn: Callable, *args: Any) -> Timer:
         """What `timer.cancel()` and then `call_later(delay, fn, *args)` give, the same heap key and so the same
@@ -255,8 +265,11 @@ class Kernel:
         cyc.timer = timer
 
     def _metronome_tick(self, cyc: Cyclic) -> None:
+        # Its timer, just popped and run, is the next tick's (as in _cyclic_tick)
         cyc.next_at += cyc.period
-        self._schedule_metronome(cyc)
+        timer = cyc.timer
+        timer.at, timer.fn = cyc.next_at, self._metronome_tick
+        heapq.heappush(self._heap, (cyc.next_at, FREE, cyc.rank, timer))
         cyc.tick(*cyc.args)
 
     def run_metronomes(self, until: int) -> None:
@@ -302,14 +315,20 @@ class Kernel:
             self._cyclics.remove(cyc)
 
     def _cyclic_tick(self, cyc: Cyclic) -> None:
+        # The timer that just ran is the next tick's: its heap entry is gone (popped), so it is put back with
+        # the key call_at would give a new one. Only here: a timer cancelled elsewhere may still have an entry.
         cyc.next_at += cyc.period
-        cyc.timer = self.call_at(cyc.next_at, self._cyclic_tick, cyc)
+        self._seq += 1
+        timer = cyc.timer
+        timer.at, timer.seq, timer.fn = cyc.next_at, self._seq, self._cyclic_tick
+        heapq.heappush(self._heap, (cyc.next_at, NORMAL, self._seq, timer))
         cyc.tick(*cyc.args)
 
     # -- running --------------------------------------------------------------------------------
     def peek(self) -> int | None:
         """Time of the next pending callback, or None."""
         heap = self._heap
+        self._hand_out()
         while heap and (heap[0][3].fn is None or heap[0][3].seq != heap[0][2]):
             timer = heapq.heappop(heap)[3]
             if timer.fn is not None:                 # put off since its entry was made: at its new time
@@ -322,26 +341,47 @@ class Kernel:
             raise SimulationError(f"cannot run back in time to {until} us (now {self.now} us)")
         heap = self._heap
         pop = heapq.heappop
-        while heap and heap[0][0] <= until:
-            at, _prio, seq, timer = pop(heap)
-            fn = timer.fn
-            if fn is None:
-                continue
-            if timer.seq != seq:                     # put off since (put_off): back in at its new time
-                heapq.heappush(heap, (timer.at, timer.prio, timer.seq, timer))
-                continue
-            timer.fn = None
-            self.now = at
-            self.events += 1
-            fn(*timer.args)
+        ran = 0                                      # counted here, not on self: once per callback
+        try:
+            while heap and heap[0][0] <= until:
+                entry = pop(heap)
+                if len(entry) == 5:                  # schedule(): the callback itself
+                    self.now = entry[0]
+                    ran += 1
+                    entry[3](*entry[4])
+                    continue
+                at, _prio, seq, timer = entry
+                fn = timer.fn
+                if fn is None:
+                    continue
+                if timer.seq != seq:                 # put off since (put_off): back in at its new time
+                    heapq.heappush(heap, (timer.at, timer.prio, timer.seq, timer))
+                    continue
+                timer.fn = None
+                self.now = at
+                ran += 1
+                fn(*timer.args)
+        finally:
+            self.events += ran
         self.now = until
 
     def pending(self) -> Iterable[Timer]:
+        self._hand_out()
         return (entry[3] for entry in self._heap if entry[3].fn is not None)
 
     def pending_model(self) -> Iterable[Timer]:
         """The live timers of the model proper: the metronomes' own are left out (bulk.py)."""
+        self._hand_out()
         return (entry[3] for entry in self._heap if entry[3].fn is not None and entry[1] != FREE)
+
+    def _hand_out(self) -> None:
+        """Every entry of `schedule` made a Timer with its key, in place (the heap's order is the keys'), so
+        that bulk.py can read and move it like any other."""
+        heap = self._heap
+        for i, entry in enumerate(heap):
+            if len(entry) == 5:
+                at, prio, seq, fn, args = entry
+                heap[i] = (at, prio, seq, Timer(at, prio, seq, fn, args))
 
     def rebuild_heap(self) -> None:
         """After a bulk advance moved the timers' keys: the heap again, from the live timers only."""

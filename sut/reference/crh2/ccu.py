@@ -96,7 +96,7 @@ class CcuSystem(RingNode):
             # A holding brake is the CCU's function, not the driver's: the cab lamp still shows the handle,
             # and the same command that first carries a notch carries the hold off.
             fields["brake"] = hold
-        self.kernel.call_later(self.train.cfg.timing.txc_loop_us, self._mdm8_send, fields)
+        self.kernel.schedule(self.train.cfg.timing.txc_loop_us, self._mdm8_send, fields)
         self.train.selfdiag.send_command(self.txc.name, fields)
 
     def _mdm8_send(self, fields: dict) -> None:

@@ -33,8 +33,8 @@ class CommandDevice:
              brake_step: str | None, seq: int | None, direction: int | None = None) -> None:
         delay = self.train.cfg.behaviour.command_take_delay_us
         if delay:
-            self.train.kernel.call_later(delay, self._act, path, traction, brake, traction_step, brake_step, seq,
-                                         direction)
+            self.train.kernel.schedule(delay, self._act, path, traction, brake, traction_step, brake_step, seq,
+                                       direction)
         else:
             self._act(path, traction, brake, traction_step, brake_step, seq, direction)
 

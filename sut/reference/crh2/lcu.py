@@ -124,7 +124,7 @@ class Lcu(RingNode):
         if not self.cpu3.alive and not self.train.cfg.behaviour.cmd_bypass_cpu3:
             return                       # a design that routed commands through CPU3 loses them here
         self.latest, self.latest_us = fields, self.kernel.now
-        self.kernel.call_later(self.train.cfg.timing.rxc_loop_us, self.rxc.from_loop, fields, self.mdm9.alive)
+        self.kernel.schedule(self.train.cfg.timing.rxc_loop_us, self.rxc.from_loop, fields, self.mdm9.alive)
 
     def counters(self) -> dict[str, int]:
         # The LCU's clock is set by the clock correction in every ring command (PRO-01 frame, CMD-02).

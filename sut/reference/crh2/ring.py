@@ -178,7 +178,7 @@ class Ring:
                             frame=frame.name, bytes=len(frame.wire),
                             data_bytes=frame.data_bytes, start_us=now, end_us=now + duration,
                             medium=span.medium, hex=frame.wire.hex())
-        self.kernel.call_later(self.pass_through, self._arrive, link, frame, hops)
+        self.kernel.schedule(self.pass_through, self._arrive, link, frame, hops)
 
     # -- receiving ------------------------------------------------------------------------------
     def _arrive(self, link: Link, frame: Frame, hops: int) -> None:

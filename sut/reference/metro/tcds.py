@@ -197,7 +197,7 @@ class MetroTrain:
             return
         t, b = self.cfg.timing, self.cfg.behaviour
         basic, bit_ns, name = t.mvb_basic_period_us, t.mvb_bit_ns, master.name
-        call_later, message = self.kernel.call_later, self._mvb_message
+        schedule, message = self.kernel.schedule, self._mvb_message
         k = self.kernel.now // basic
         # The whole message is taken at its master frame's instant, which is what an analyser logs; the polls
         # of one period go out in this order (I/O modules, train command, one device's status), back to back.
@@ -205,12 +205,12 @@ class MetroTrain:
         if k % (t.io_period_us // basic) == 0:
             f_code = b.io_port_f_code
             for module in seg.ios:
-                call_later(offset, message, unit, name, "io", module, f_code)
+                schedule(offset, message, unit, name, "io", module, f_code)
                 offset += _message_us(f_code, bit_ns)
         if k % (t.command_period_us // basic) == 0:
-            call_later(offset, message, unit, name, "cmd", None, ports.COMMAND_F_CODE)
+            schedule(offset, message, unit, name, "cmd", None, ports.COMMAND_F_CODE)
             offset += _message_us(ports.COMMAND_F_CODE, bit_ns)
-        call_later(offset, message, unit, name, "status", seg.devices[k % len(seg.devices)], b.status_poll_f_code)
+        schedule(offset, message, unit, name, "status", seg.devices[k % len(seg.devices)], b.status_poll_f_code)
 
     def _address(self, unit: int, what: str, target: Any) -> int:
         if what == "io":
