@@ -37,7 +37,7 @@ from sut.reference import bulk
 from sut.reference.bulk import cyclic_period_us
 from sut.reference.kernel import Kernel
 from sut.eventlog import EventLog
-from sut.trace import Trace, TraceEvent
+from sut.trace import Trace, TraceEvent, new_event
 
 INPUTS = ("ATP emergency brake", "ATP isolation switch", "VDX firmware", "position", "speed", "carrier",
           "low frequency code", "amplitude", "track circuit type", "sleep", "ATO start", "cab signal mode")
@@ -89,7 +89,7 @@ class ReferenceAtp(PickledState, TrainDriver):
             self._crh2.set_input("ATP brake", brake)
 
     def _emit(self, source: str, kind: str, **fields: Any) -> None:
-        self._events.append(TraceEvent(self.kernel.now, source, kind, fields))
+        self._events.append(new_event(TraceEvent, (self.kernel.now, source, kind, fields)))
 
     # -- long runs: bulk advance (sut/reference/bulk.py) reads the rig itself as its model --------------
     BULK_SKIP = ("_events", "_view")          # the trace and the index of it a step built are history, not state

@@ -69,7 +69,7 @@ class RingNode:
 
     # -- helpers --------------------------------------------------------------------------------
     def emit(self, kind: str, /, at: str | None = None, **fields: Any) -> None:
-        self.train.emit(at or f"{self.name}.MDM8", kind, **fields)
+        self.train.emit(at or self.mdm8.name, kind, **fields)        # the board's name: f"{name}.MDM8"
 
     @property
     def optics(self) -> Board:

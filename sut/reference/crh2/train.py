@@ -22,7 +22,7 @@ from sut.reference.crh2.ring import Ring, Span
 from sut.reference.crh2.selfdiag import SelfDiagLine
 from sut.reference.crh2.vehicle import Vehicle
 from sut.eventlog import EventLog
-from sut.trace import TraceEvent
+from sut.trace import TraceEvent, new_event
 
 
 class Train:
@@ -93,11 +93,11 @@ class Train:
 
     # -- plumbing -------------------------------------------------------------------------------
     def emit(self, source: str, kind: str, /, **fields: Any) -> None:
-        self.events.append(TraceEvent(self.kernel.now, source, kind, fields))
+        self.events.append(new_event(TraceEvent, (self.kernel.now, source, kind, fields)))
 
     def emit_free(self, source: str, kind: str, /, **fields: Any) -> None:
         self.free_marks.append(len(self.events))
-        self.events.append(TraceEvent(self.kernel.now, source, kind, fields))
+        self.events.append(new_event(TraceEvent, (self.kernel.now, source, kind, fields)))
 
     def start(self) -> None:
         self.emit("train", "power.on", cars=self.cfg.cars, nodes=self.ring.size)

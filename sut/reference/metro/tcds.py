@@ -27,7 +27,7 @@ from sut.reference.metro.ports import Command, IoPort
 from sut.reference.metro.units import (CAB_CARS, CAB_DEVICES, MOTOR_DEVICES, UNIT_CARS, ControlUnit, Device,
                                        IoModule, Record)
 from sut.eventlog import EventLog
-from sut.trace import TraceEvent
+from sut.trace import TraceEvent, new_event
 
 FULL = 10_000          # 100 % in 0.01 % steps
 MASTER_BITS = 33       # start delimiter 9 + F_code/address 16 + check 8
@@ -145,7 +145,7 @@ class MetroTrain:
 
     # -- trace ------------------------------------------------------------------------------------
     def emit(self, source: str, kind: str, **fields: Any) -> None:
-        self.events.append(TraceEvent(self.kernel.now, source, kind, fields))
+        self.events.append(new_event(TraceEvent, (self.kernel.now, source, kind, fields)))
 
     # -- bulk advance (sut/reference/bulk.py) -------------------------------------------------------
     BULK_SKIP = ("events",)           # the trace is history, not state
