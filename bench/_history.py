@@ -54,7 +54,9 @@ def row(bench: str, figures: dict[str, float], *, load_before: float | None, loa
     numbers = {k: (round(v, 4) if isinstance(v, float) else v) for k, v in figures.items()
                if v is not None and not (isinstance(v, float) and not math.isfinite(v))}
     return {"when": when or now(), "bench": bench, "commit": _git("rev-parse", "--short", "HEAD") or None,
-            "dirty": bool(_git("status", "--porcelain", "--untracked-files=no")),
+            # the rows of the benches recorded before this one are not a change to what is measured
+            "dirty": bool(_git("status", "--porcelain", "--untracked-files=no", "--", ".",
+                               ":(exclude)bench/history.jsonl")),
             "load": [None if x is None else round(x, 2) for x in (load_before, load_after)],
             "args": list(args or []), "figures": numbers, "note": note,
             "machine": {"cores": os.cpu_count(), "python": platform.python_version()}}
