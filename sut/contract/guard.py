@@ -18,7 +18,7 @@ from typing import Any, Callable, Iterator, Mapping
 
 from sut.contract.catalogue import TRACE_CHECK_PER_KIND, Contract, ContractBreach, ContractGap
 from sut.driver import TrainDriver
-from sut.trace import Trace, TraceEvent
+from sut.trace import Trace, TraceEvent, new_event
 
 # Driver methods whose first argument (after a cab number where one is given) is a name from the contract.
 _NAMED = {
@@ -145,7 +145,7 @@ class ContractTrace:
             self._guard._recorder.saw(self._guard._profile, ev)
         if self._guard._contract is not None:
             self._guard._contract.check_event(ev.source, ev.kind, ev.fields, ev.t)
-        return TraceEvent(ev.t, ev.source, ev.kind, CheckedFields(ev.fields, ev, self._guard))
+        return new_event(TraceEvent, (ev.t, ev.source, ev.kind, CheckedFields(ev.fields, ev, self._guard)))
 
     def _asked(self, kind: str | None, source: str | None, where: dict) -> None:
         self._guard._kind(kind, source, where)

@@ -161,9 +161,8 @@ class Ccu:
 
     # -- RED-02: the standby watches the master -------------------------------------------------
     def _arm_watch(self) -> None:
-        if self._watch is not None:
-            self._watch.cancel()
-        self._watch = self.train.kernel.call_later(self.train.cfg.timing.takeover_us, self._takeover)
+        # put off, not replaced: every command the standby hears from the master re-arms it (Kernel.put_off)
+        self._watch = self.train.kernel.put_off(self._watch, self.train.cfg.timing.takeover_us, self._takeover)
 
     def heard_command(self, system: CcuSystem, fields: dict) -> None:
         if (self.commanding and system.index != self.master and fields["cab"] == self.car

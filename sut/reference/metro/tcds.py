@@ -75,6 +75,7 @@ class MvbSegment:
         self.master: str = ranks[0]     # the last node to master the bus: never None
         self.last_master_t = 0
         self.devices = devices
+        self.sinks = [d for d in devices if d.sink]    # VVVF and BECU: what takes the train command
         self.ios = ios
         self.io_data: dict[str, tuple[IoPort, int]] = {}
         self.io_used: str | None = None
@@ -85,10 +86,6 @@ class MvbSegment:
         self.stale = True
         self.sink_timer = None
         self.cmd_seq = 0
-
-    @property
-    def sinks(self) -> list[Device]:
-        return [d for d in self.devices if d.sink]
 
 
 class MetroTrain:
@@ -313,9 +310,9 @@ class MetroTrain:
             sent = Command.decode(data)
             cmd = Command(sent.mode, sent.direction, sent.traction, sent.brake, 0)
             seg.cmd, seg.cmd_t = cmd, now
-            if seg.sink_timer is not None:
-                seg.sink_timer.cancel()
-            seg.sink_timer = self.kernel.call_later(self.cfg.timing.sink_timeout_us, self._sink_timeout, seg.unit)
+            # put off, not replaced: every command (each 2 ms) re-arms it (Kernel.put_off)
+            seg.sink_timer = self.kernel.put_off(seg.sink_timer, self.cfg.timing.sink_timeout_us, self._sink_timeout,
+                                                 seg.unit)
             if seg.stale:
                 seg.stale = False
                 self.emit(seg.bus.name, "pd.fresh", port="train command")
@@ -675,11 +672,10 @@ class MetroTrain:
         """A timer at the moment messages to `name` stop being resent if it stays silent (the give-up itself
         is decided when the next telegram is built): it does nothing, but it tells a bulk jump that something
         will change then (bulk.fixed_timer_limit), as the comparison alone cannot."""
-        mark = self._give_up_marks.get(name)
-        if mark is not None:
-            mark.cancel()
         at = self.wtb_answered_at[name] + self.cfg.timing.message_give_up_us + 1
-        self._give_up_marks[name] = self.kernel.call_at(at, _nothing)
+        # put off, not replaced: every answer on the WTB (each 25 ms) moves it (Kernel.put_off)
+        self._give_up_marks[name] = self.kernel.put_off(self._give_up_marks.get(name), at - self.kernel.now,
+                                                        _nothing)
 
     def _diagnose_wtb_node(self, master: ControlUnit, polled: str, answered: bool) -> None:
         if answered:
