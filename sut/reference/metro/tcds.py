@@ -163,9 +163,12 @@ class MetroTrain:
     def start(self) -> None:
         t = self.cfg.timing
         self.started = True
+        # Without a task jitter (the reference) every period's task starts on time: no late start to work out.
+        on_time = not t.task_jitter_us
         for unit in self.segments:
-            self.kernel.every(t.mvb_basic_period_us, self._mvb_period, args=(unit,))
-        self.kernel.every(t.wtb_cycle_us, self._wtb_cycle)
+            self.kernel.every(t.mvb_basic_period_us, self._mvb_period_now if on_time else self._mvb_period,
+                              args=(unit,))
+        self.kernel.every(t.wtb_cycle_us, self._wtb_cycle_now if on_time else self._wtb_cycle)
         self.kernel.every(t.mvb_basic_period_us, self._watch_masters, phase=t.mvb_basic_period_us // 2)
         self.kernel.every(t.speed_tick_us, self._speed_tick)
         for name in self.nodes:
