@@ -7,7 +7,8 @@ and one place to add bulk advance. Processes that read like behaviour can still 
 `yield` a delay in microseconds or a `Signal` to wait for.
 
 Ordering: entries are (time, priority, sequence). The sequence counter makes ties deterministic, so two
-runs with the same inputs give the same trace.
+runs with the same inputs give the same trace. Two cheaper ways in keep that key exactly: `schedule` (no Timer
+for a callback nobody cancels) and `put_off` (a watchdog moved, not replaced); docs/decisions.md, "Kernel".
 
 Bulk advance (72 h runs) lives in bulk.py: it reads the whole train, timers included, and jumps whole
 steady periods; the kernel's part is that timers carry their own heap key and the heap can be rebuilt.
