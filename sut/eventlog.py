@@ -245,10 +245,24 @@ class EventLog:
 
     def pick(self, positions: Iterable[int]) -> list[TraceEvent]:
         """The events at these positions (the trace index's answer), made at C speed where no stretch is
-        held as a pattern."""
+        held as a pattern. Otherwise the positions, in rising order as the index gives them, are walked chunk by
+        chunk: a chunk is looked up when a position leaves the last one, not for every position."""
         if len(self._chunks) == 1:
             return list(map(self._tail.__getitem__, positions))
-        return [self[i] for i in positions]
+        starts, chunks, n = self._starts, self._chunks, len(self)
+        out: list = []
+        base = end = 0
+        chunk: Any = None
+        for i in positions:
+            if not base <= i < end:
+                if not 0 <= i < n:
+                    out.append(self[i])           # its error, or a position from the end: as self[i] reads it
+                    continue
+                c = bisect_right(starts, i) - 1
+                chunk, base = chunks[c], starts[c]
+                end = starts[c + 1] if c + 1 < len(starts) else n
+            out.append(chunk[i - base])
+        return out
 
     def kinds(self, start: int) -> list[str]:
         """The kind of every event from `start` on (the trace index reads these)."""

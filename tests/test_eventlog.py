@@ -6,6 +6,8 @@ from __future__ import annotations
 import copy
 import pickle
 
+import pytest
+
 from hypothesis import HealthCheck, given, settings
 from hypothesis import strategies as st
 
@@ -77,6 +79,10 @@ def test_a_held_stretch_reads_as_the_eager_one(drawn, first, reps, before, metro
     for a, b in ((0, n), (before, n - 1), (n // 3, 2 * n // 3), (n - 1, n + 5), (5, 2)):
         assert held.events[a:b] == eager.events[a:b]
     assert held.events.kinds(0) == [ev.kind for ev in eager.events]
+    picked = [i for i in range(n) if i % 3 != 1] + [n // 2, 0, -1, n - 1]    # rising, then anywhere
+    assert held.events.pick(picked) == [eager.events[i] for i in picked]
+    with pytest.raises(IndexError):
+        held.events.pick([0, n])
     for kind, source, since in asked:
         assert held_trace.select(kind=kind, source=source, since=since) == \
             eager_trace.select(kind=kind, source=source, since=since)
