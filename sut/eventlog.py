@@ -22,7 +22,7 @@ from itertools import chain
 from operator import attrgetter
 from typing import Any, Iterable, Iterator
 
-from sut.trace import TraceEvent
+from sut.trace import TraceEvent, new_event
 
 _KIND = attrgetter("kind")
 
@@ -80,7 +80,7 @@ class Repeat:
         k, r = divmod(m, len(self.rows))
         k += self.first
         row = self.rows[r]
-        return TraceEvent(row[0] + k * self.period, row[1], row[2], self._fields(row, k))
+        return new_event(TraceEvent, (row[0] + k * self.period, row[1], row[2], self._fields(row, k)))
 
     def __getitem__(self, j: int) -> TraceEvent:
         free_at = self.free_at
