@@ -217,19 +217,14 @@ class Kernel:
         frame a node hears): while it is pending and would come no later, it is moved instead of replaced, and
         its entry in the heap, popped at its old time, goes back at the new one (`run`). No cancelled entries pile
         up in the heap, and no timer is made per re-arm."""
-        if delay < 0 or type(delay) is not int:
-            raise SimulationError(f"cannot put a timer off by {delay!r} us: delays are whole us, never into "
-                                  "the past")
-        at = self.now + delay
-        self._seq += 1
         if timer is not None:
-            if timer.fn is not None and timer.at <= at and timer.prio == NORMAL:
-                timer.at, timer.seq, timer.fn, timer.args = at, self._seq, fn, args
+            # A pending timer is due now or later, so `at` no earlier than it is a delay of whole us, >= 0.
+            if timer.fn is not None and timer.prio == NORMAL and type(delay) is int and timer.at <= self.now + delay:
+                self._seq += 1
+                timer.at, timer.seq, timer.fn, timer.args = self.now + delay, self._seq, fn, args
                 return timer
             timer.fn = None
-        timer = Timer(at, NORMAL, self._seq, fn, args)
-        heapq.heappush(self._heap, (at, NORMAL, self._seq, timer))
-        return timer
+        return self.call_later(delay, fn, *args)          # which refuses a delay that is not whole us, >= 0
 
     def process(self, gen: ProcessGen, name: str = "process") -> Process:
         return Process(self, gen, name)
