@@ -13,37 +13,20 @@ how close to its floor the conformance run can come (README, "Speed").
 from __future__ import annotations
 
 import argparse
-import json
-import os
-import subprocess
 import sys
-import tempfile
-import time
 from pathlib import Path
 
 sys.path.insert(0, str(Path(__file__).resolve().parent))
 
 import _history  # noqa: E402
+from _plugin_run import run_profile  # noqa: E402
 from _table import table  # noqa: E402
 
-ROOT = Path(__file__).resolve().parents[1]
 PROFILES = ("crh2", "metro-tcn", "atp", "vdx", "atp-crh2")
 
 
-def count(profile: str, extra: list[str]) -> tuple[dict[str, int], float, str]:
-    with tempfile.TemporaryDirectory() as tmp:
-        out = Path(tmp) / "events.json"
-        env = dict(os.environ, EVENTS_PLUGIN_OUT=str(out),
-                   PYTHONPATH=os.pathsep.join([str(ROOT / "bench"), str(ROOT), os.environ.get("PYTHONPATH", "")]))
-        started = time.perf_counter()
-        run = subprocess.run([sys.executable, "-m", "pytest", "features", "-q", "-p", "no:xdist", "-p",
-                              "no:cacheprovider", "-p", "_events_plugin", "--profile", profile, *extra],
-                             cwd=ROOT, env=env, capture_output=True, text=True)
-        wall = time.perf_counter() - started
-        summary = run.stdout.strip().splitlines()[-1] if run.stdout.strip() else run.stderr[-500:]
-        if run.returncode not in (0, 5) or not out.exists():
-            raise SystemExit(f"pytest --profile {profile} failed:\n{run.stdout[-3000:]}{run.stderr[-2000:]}")
-        return json.loads(out.read_text(encoding="utf-8")), wall, summary
+def count(profile: str, extra: list[str]) -> tuple[dict, float, str]:
+    return run_profile("_events_plugin", "EVENTS_PLUGIN_OUT", profile, extra)
 
 
 def main(argv: list[str] | None = None) -> None:

@@ -115,6 +115,11 @@ def headline(row: dict) -> str:
         profiles = [k.split(".")[0] for k in f if k.endswith(".events") and not k.startswith("all.")]
         return (f"{f['all.events'] / 1e6:.2f} M kernel events: "
                 + ", ".join(f"{p} {f[p + '.events'] / 1e6:.2f} M" for p in profiles))
+    if bench == "advances_bench":
+        nothing = sum(v for k, v in f.items() if k.endswith(".1 s or more, nothing skipped.wall_s"))
+        inside = sum(v for k, v in f.items() if k.endswith(".in_advances_s"))
+        return (f"{inside:.1f} s in advances, {nothing:.1f} s of them in advances of 1 s or more that bulk advance "
+                "could not shorten")
     if bench == "kernel_bench":
         parts = []
         if "kernel-callback_events_per_s" in f:
@@ -236,6 +241,7 @@ after, the options that narrowed the run, the figures as named numbers; `--note 
 .venv/bin/python bench/make_bench.py report --record           # make report in this tree
 .venv/bin/python bench/make_bench.py mutate --clone --map-only --record   # make mutate's first map, from scratch
 .venv/bin/python bench/events_bench.py --record    # kernel events per profile and of which kind (the event budget)
+.venv/bin/python bench/advances_bench.py --record  # the advances per profile, and why bulk advance left long ones whole
 .venv/bin/python bench/kernel_bench.py --record    # SimPy vs our kernel on the ring load, then the full model
 .venv/bin/python bench/cars_bench.py --record      # one workload on 8 cars and on 16 (two sets coupled)
 .venv/bin/python bench/remote_bench.py --record    # the conformance run in process vs through python -m sut serve
@@ -265,6 +271,10 @@ back with the commit before it. `--help` lists each script's options; each print
 - `bench/events_bench.py` counts every callback `Kernel.run` makes, per profile and by kind
   (`bench/_events_plugin.py`): what the simulation must still do once snapshots and bulk advance have taken out
   all they can.
+- `bench/advances_bench.py` watches every `bulk.advance` of a run per profile (`bench/_advances_plugin.py`):
+  the wall and simulated seconds of advances shorter than a second, of longer ones bulk advance shortened and
+  of longer ones it could not, and for those what stopped it the last time it looked (where the state still
+  changed, which integer moved unevenly, which trace did not repeat): what a remodel has to make steady or cheap.
 - `bench/cars_bench.py` drives only `sut.backends.open_backend(SUT, "crh2")`: power-up as the features do, notch 7,
   then `--sim-seconds` of train time, frame by frame; wall and CPU seconds per simulated second, trace events,
   the 16/8 ratio (issue 9: <= 2.2x).
@@ -289,6 +299,31 @@ def _budget(f: dict) -> str:
                 f"{f['rest_over_floor']:.1f}x: the target needs the harness cut as well as the simulation.")
     return (f"At {FLOOR_TARGET:g}x the floor the whole run may take {budget:.1f} s: with the rest as it is, "
             f"{budget - f['rest_s']:.1f} s are left for the simulation.")
+
+
+def _advances_section(row: dict) -> list[str]:
+    """Where the simulation goes, advance by advance (bench/advances_bench.py): per profile, the wall seconds in
+    advances by kind, and what stopped bulk advance in the long ones it could not shorten."""
+    f = row["figures"]
+    profiles = [k[:-len(".wall_s")] for k in f if k.count(".") == 1 and k.endswith(".wall_s")]
+    out = [f"Where the simulation goes, advance by advance (`bench/advances_bench.py`, {_when(row)}, {row['commit']}): "
+           "per profile in one process, the wall seconds spent in advances shorter than a second (simulated as "
+           "they are), in longer ones bulk advance shortened, and in longer ones it could not; then the largest "
+           "reasons it gave up, as it last looked (the state still changing, and where).", ""]
+    table_rows = []
+    for p in profiles:
+        kinds = []
+        for kind in ("shorter than 1 s", "1 s or more, some skipped", "1 s or more, nothing skipped"):
+            wall = sum(v for k, v in f.items() if k.startswith(p + ".") and k.endswith(f".{kind}.wall_s"))
+            simulated = sum(v for k, v in f.items() if k.startswith(p + ".") and k.endswith(f".{kind}.simulated_s"))
+            kinds.append(f"{wall:.1f} s ({simulated:,.0f} s simulated)")
+        why = sorted(((k.split(".why.", 1)[1], v) for k, v in f.items() if k.startswith(p + ".why.")),
+                     key=lambda kv: -kv[1])[:3]
+        table_rows.append([p, f"{f[p + '.wall_s']:.1f} s", *kinds,
+                           "; ".join(f"{reason} {v:.1f} s" for reason, v in why) or "-"])
+    out += _table(["profile", "run", "advances < 1 s", ">= 1 s, some skipped", ">= 1 s, nothing skipped",
+                   "what stopped bulk advance (wall)"], table_rows)
+    return out + [""]
 
 
 def render_markdown(rows: list[dict]) -> str:
@@ -375,6 +410,10 @@ def render_markdown(rows: list[dict]) -> str:
                   "ring traversal, an HDLC round, an MVB basic period as one event each, their trace computed), a "
                   "trace that holds repeated stretches as patterns, and integer kinematics so that a cruising train "
                   "is steady.", ""]
+
+    advances = _latest(rows, "advances_bench", None, lambda r: not r.get("args"))
+    if advances is not None:
+        lines += _advances_section(advances)
 
     if NOTES.exists():
         lines += [NOTES.read_text(encoding="utf-8").rstrip(), ""]
