@@ -362,6 +362,70 @@ def test_an_advance_through_a_change_in_progress_gives_the_same_state_and_trace(
     assert len(jumps) >= skips, f"skipped {jumps} periods"
 
 
+@pytest.mark.parametrize(("speed", "periods"), [(36.0, 5), (27.0, 10), (300.0, 1)])
+def test_a_cruise_is_jumped_a_whole_number_of_metres_at_a_time_and_agrees_both_ways(speed: float, periods: int,
+                                                                                    jumps: list[int]) -> None:
+    """Issue 33, item 3. At a steady speed the monitor's mileage moves by whole metres (1.2 m a 120 ms token
+    period at 36 km/h): the steady period is the token periods that run a whole number of them (6 m in 5)."""
+    fast = _cruise_both_ways(speed)
+    assert len(jumps) >= 2 and jumps[0] * periods * 120 * MS >= 10 * S, jumps       # the cruise, then the stop
+    cruising = powered()
+    cruising.set_input("speed", speed)
+    assert bulk.steady_period_us(cruising.train) == periods * 120 * MS
+
+
+def test_a_slow_cruise_whose_metres_never_repeat_is_simulated_frame_by_frame(jumps: list[int]) -> None:
+    """3.6 km/h as a binary float is a little over 3.6: its metres never repeat exactly. The monitor shows the
+    same whole metre for eight token periods, then the next: three readings a period apart look like a
+    standstill, and a jump along that line left the mileage shown stale for 19 s (bulk.py before item 3).
+    The train says it is not steady (Train.bulk_steady), and the cruise is simulated."""
+    fast = _cruise_both_ways(3.6)
+    shown = [ev["value"] for ev in fast.trace.select(kind="display.change", source="car1.monitor", name="mileage")]
+    assert len(shown) >= 20 and shown == sorted(shown), shown                # a metre a second, every one shown
+    assert len(jumps) == 1, jumps                                            # the standstill only
+
+
+def test_a_displayed_reading_moves_as_whole_units_in_a_repeated_trace() -> None:
+    """The monitor's numeric points are Scaled: a float to every reader (equal, printed and written to JSON as
+    raw / scale, pickled as itself); a trace pattern moves its raw units (ScaledStep)."""
+    import json
+    import pickle
+
+    from sut.eventlog import moved
+    from sut.reference.scaled import Scaled, ScaledStep
+
+    shown = Scaled(47, 1000)
+    assert shown == 0.047 and repr(shown) == "0.047" and json.dumps({"value": shown}) == '{"value": 0.047}'
+    again = pickle.loads(pickle.dumps(shown))
+    assert type(again) is Scaled and (again.raw, again.scale) == (47, 1000)
+    later = moved({"name": "mileage", "value": shown}, (("value", ScaledStep(6, 1000)),), 3)["value"]
+    assert type(later) is Scaled and later.raw == 65 and later == 0.065
+    assert bulk._trace_pattern([_event(0, shown)], [_event(600 * MS, Scaled(53, 1000))], 600 * MS)[0][1] == \
+        (("value", ScaledStep(6, 1000)),)
+    with pytest.raises(bulk.NotSteady):                  # another scale is another reading, not a move
+        bulk._trace_pattern([_event(0, shown)], [_event(600 * MS, Scaled(53, 100))], 600 * MS)
+
+
+def _cruise_both_ways(speed: float) -> ReferenceTrain:
+    """20 s at `speed`, then 2 s standing, frame by frame and in bulk: the same state and trace; the bulk one."""
+    def script(train: ReferenceTrain, run) -> None:
+        train.set_input("speed", speed)
+        run(20 * S)
+        train.set_input("speed", 0.0)
+        run(2 * S)
+
+    exact, fast = both_ways(script, soak=False)
+    assert_same(exact, fast)
+    assert fast.trace.to_csv() == exact.trace.to_csv()
+    return fast
+
+
+def _event(t: int, value: float):
+    from sut.trace import TraceEvent
+
+    return TraceEvent(t, "car1.monitor", "display.change", {"name": "mileage", "value": value})
+
+
 def test_short_advances_are_frame_by_frame(jumps: list[int]) -> None:
     train = powered()
     train.advance(3 * bulk.steady_period_us(train.train) - 1)

@@ -7,7 +7,11 @@ period, everything else is as it was. This module reads the whole train as a fla
 int, float, string... reachable from the Train, the kernel's live timers included) and simulates two
 periods frame by frame: S0, S1, S2. If the structure is the same and every integer leaf moved by the same
 amount in both periods (d = S1 - S0 = S2 - S1), the train is on a straight line, and k periods later each
-leaf is S2 + k*d. Writing those values back is the jump.
+leaf is S2 + k*d. Writing those values back is the jump. A reading shown in whole units (sut/reference/scaled.py:
+the cab monitor's mileage in metres) is such an integer leaf, and an event field of one moves the same way.
+An integer that moves unevenly from one period to the next and evenly over three (a metre every eight
+periods) would fool this check: a model makes its period the one over which such a value moves evenly, or
+says it is not steady (the CRH2 train's bulk_period_us and bulk_steady).
 
 Nothing is assumed about what a leaf means: a new piece of state in the model is covered without being
 declared, and state that is not periodic (a ramp, a pending one-shot timer that would fire inside the
@@ -46,6 +50,7 @@ from typing import Any, Protocol
 
 from sut.eventlog import EventLog, Repeat, moved
 from sut.reference.kernel import Kernel, Timer
+from sut.reference.scaled import Scaled, ScaledStep
 
 
 class Train(Protocol):
@@ -107,6 +112,12 @@ class _Reader:
             self.shape.append(int)
             self.ints.append(value)
             self.writers.append(writer)
+            return
+        if t is Scaled:
+            # a display reading: its whole units are what moves (sut/reference/scaled.py), the scale is shape
+            self.shape.append((Scaled, value.scale))
+            self.ints.append(value.raw)
+            self.writers.append(("scaled", writer, value.scale))
             return
         if t in _PLAIN or isinstance(value, _SCALARS):
             self.shape.append(t)
@@ -289,6 +300,8 @@ def _write(writer: tuple, value: Any, dirty: set[int]) -> None:
         dirty.add(id(writer[1]))
     elif kind == "cell":
         writer[1].cell_contents = value
+    elif kind == "scaled":
+        _write(writer[1], Scaled(value, writer[2]), dirty)
     else:                                         # slope() refuses such a line before any write
         raise AssertionError(f"a moving value cannot be written back ({kind})")
 
@@ -603,8 +616,8 @@ def advance(train: "Train", until: int) -> BulkReport:
     Unlike a soak, an advance owes the full trace of the time it covers (a Then step may read any of it).
     So, at every period boundary from now on, the state is read and the trace's length noted; once three
     boundaries in a row show a steady line (slope()) and the two periods' events are one pattern (same
-    events in the same order, each exactly one period later, every field equal or an integer that moved
-    by a fixed amount), the periods up to `until` (or up to a pending one-shot timer, after which the line
+    events in the same order, each exactly one period later, every field equal or an integer, or a
+    Scaled reading's units, that moved by a fixed amount), the periods up to `until` (or up to a pending one-shot timer, after which the line
     is looked for again) are skipped: the state by jump(), the trace by repeating the second period's
     events with their times and moving fields carried on. The rest is frame by frame.
     The metronomes' ticks (Kernel.metronome: the CRH2 loop devices) are not part of the pattern: they are
@@ -713,6 +726,9 @@ def _trace_pattern(first: list, second: list, period: int) -> list[tuple[Any, tu
             if type(va) is int and type(vb) is int:
                 if vb != va:
                     moving.append((name, vb - va))
+            elif type(va) is Scaled and type(vb) is Scaled and va.scale == vb.scale:
+                if vb.raw != va.raw:
+                    moving.append((name, ScaledStep(vb.raw - va.raw, vb.scale)))
             elif type(va) is not type(vb) or va != vb:
                 raise NotSteady(f"field {name} of {b.kind} from {b.source} is not periodic")
         pattern.append((b, tuple(moving)))

@@ -8,10 +8,13 @@ way in the commanding CCU's status data and stay there until the monitor shows t
 """
 from __future__ import annotations
 
+import math
 from dataclasses import dataclass
+from fractions import Fraction
 from typing import TYPE_CHECKING, Any
 
 from sut.driver import DIRECTIONS
+from sut.reference.scaled import Scaled
 
 if TYPE_CHECKING:
     from sut.reference.crh2.node import RingNode
@@ -71,12 +74,22 @@ class DisplayTable:
                 return DIRECTIONS[latest["direction"]] if latest else "neutral"
             return latest[RUNNING[name]] if latest else 0
         vehicle = self.train.vehicle
+        if name == "mileage":
+            return vehicle.exact_mileage_km()     # rounded exactly to whole metres (Vehicle._odometer)
         return vehicle.reading(name) if name in NUMERIC else vehicle.output(name)
 
     def encode(self, point: Point, value: Any) -> int:
         if not point.values:
+            if type(value) is Fraction:
+                # the mileage, exact: to the nearest metre, a half up (docs/decisions.md, "Display"), so that a
+                # whole number of metres more run is that many more shown
+                return math.floor(value * NUMERIC[point.name][1] + Fraction(1, 2))
             return round(value * NUMERIC[point.name][1])
         return point.values.index(value)
+
+    def units_per(self, period_us: int) -> Fraction:
+        """The mileage point's units (metres) a train runs in `period_us` at its present speed."""
+        return self.train.vehicle.distance_km(period_us) * NUMERIC["mileage"][1]
 
     # -- monitor side ---------------------------------------------------------------------------
     def decode(self, raw: dict) -> tuple[str, Any] | None:
@@ -84,7 +97,7 @@ class DisplayTable:
         if point is None:
             return None
         if not point.values:
-            return point.name, raw["value"] / NUMERIC[point.name][1]
+            return point.name, Scaled(raw["value"], NUMERIC[point.name][1])
         if not 0 <= raw["value"] < len(point.values):
             return None
         return point.name, point.values[raw["value"]]

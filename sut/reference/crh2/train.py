@@ -24,6 +24,9 @@ from sut.reference.crh2.vehicle import Vehicle
 from sut.eventlog import EventLog
 from sut.trace import TraceEvent, new_event
 
+# The most token periods a steady speed's whole metres of mileage may take to repeat (bulk_period_us).
+CRUISE_PERIODS = 100
+
 
 class Train:
     BULK_READABLE = True  # pragma: no mutate  (a speed declaration: bulk.py)
@@ -110,6 +113,23 @@ class Train:
     def bulk_period_us(self) -> int:
         """The steady period (sut/reference/bulk.py): every cyclic activity and the token's round, one
         holding time per hop. A guess that is wrong only costs speed: bulk.py checks the line it finds."""
+        period = self._token_period_us()
+        # A train running at a steady speed: the cab monitor's mileage moves by whole metres, by the same
+        # number of them only every few periods (1.2 m a period at 36 km/h: 6 m every 5), and those are its
+        # steady period. A speed whose metres repeat only after more than CRUISE_PERIODS periods keeps the
+        # token's, and the train says it is not steady (bulk_steady).
+        units = self.display.units_per(period)
+        return period * units.denominator if units.denominator <= CRUISE_PERIODS else period
+
+    def bulk_steady(self) -> bool:
+        """bulk.py: a train whose whole metres of mileage repeat only over more than CRUISE_PERIODS token
+        periods (3.6 km/h as a float is a little over 3.6, and its metres never quite repeat) cannot be jumped
+        over: its monitor's mileage, and the status data that carries it, stay the same for a few periods and
+        then move by a metre, which a line through three periods does not show (three equal readings look
+        like a standstill). Such a train is simulated, every frame."""
+        return self.display.units_per(self._token_period_us()).denominator <= CRUISE_PERIODS
+
+    def _token_period_us(self) -> int:
         hold = self.cfg.timing.token_hold_us
         return cyclic_period_us(self.kernel, *(hops * hold for hops in self._token_round_hops()))
 

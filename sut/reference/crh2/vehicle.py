@@ -9,6 +9,8 @@ is what a band test reads (did the valve drop between 600 and 580 kPa?).
 """
 from __future__ import annotations
 
+from fractions import Fraction
+
 from dataclasses import dataclass
 from typing import TYPE_CHECKING, Any
 
@@ -118,7 +120,10 @@ class Vehicle:
             self.outputs_spec[f"car{car}.CI cut-out"] = ("in", "cut out")
         self.ordered: dict[str, str] = {}          # equipment states ordered from the monitor
         self.compressor = False
-        self.mileage_m = 0.0
+        # Metres run up to _odo_t, as an exact fraction (two ints: bulk.py reads ints and floats, not Fractions):
+        # the mileage the monitor shows in whole metres then moves by the same number of them every few steady
+        # periods of a cruise, which a float summed step by step does not (Train.bulk_period_us).
+        self._mileage_num, self._mileage_den = 0, 1
         self._odo_t = 0
         self._odo_v = 0.0
         self.inputs: dict[str, Any] = {k: s.initial for k, s in self.inputs_spec.items() if s.initial is not None}
@@ -223,17 +228,28 @@ class Vehicle:
     # -- mileage: speed integrated exactly over piecewise-constant and linear pieces -------------
     def _odometer(self, new_speed: float, linear: bool) -> None:
         now = self.kernel.now
-        dt_s = (now - self._odo_t) / 1e6
         start = self._odo_v
         end = new_speed if linear else start
-        self.mileage_m += (start + end) / 2 / 3.6 * dt_s
+        # (start + end) / 2 km/h for (now - _odo_t) us: km/h x us / 3.6e6 is metres
+        run = Fraction(self._mileage_num, self._mileage_den) \
+            + (Fraction(start) + Fraction(end)) * (now - self._odo_t) / 7_200_000
+        self._mileage_num, self._mileage_den = run.numerator, run.denominator
         self._odo_t, self._odo_v = now, new_speed
+
+    def exact_mileage_km(self) -> Fraction:
+        """The mileage now, exactly (the display point's whole metres are rounded from it)."""
+        run = Fraction(self._mileage_num, self._mileage_den) \
+            + Fraction(self._odo_v) * (self.kernel.now - self._odo_t) / 3_600_000
+        return run / 1000
+
+    def distance_km(self, us: int) -> Fraction:
+        """What the train runs in `us` at the speed it has now, exactly."""
+        return Fraction(self._odo_v) * us / 3_600_000_000
 
     def reading(self, name: str) -> float:
         """Numeric readings: speed (km/h), main pipe pressure (kPa), mileage (km)."""
         if name == "mileage":
-            dt_s = (self.kernel.now - self._odo_t) / 1e6
-            return (self.mileage_m + self._odo_v / 3.6 * dt_s) / 1000
+            return float(self.exact_mileage_km())
         if name in ("speed", "main pipe pressure"):
             return float(self.inputs[name])
         raise UnknownName("reading", name, ("speed", "main pipe pressure", "mileage"))
