@@ -104,6 +104,20 @@ ORDERS = {
 }
 
 
+# The odometer's unit: a speed in km/h is a binary float, an exact integer once scaled by 2**ODO_BITS (every
+# speed the steps and ramps give, whose last bit is worth at least 2**-ODO_BITS km/h), and a distance is speed
+# x time, summed as (start + end) x us for each piece: 2 x 3.6e9 x 2**ODO_BITS of them make a kilometre.
+ODO_BITS = 80
+ODO_PER_KM = 2 * 3_600_000_000 << ODO_BITS
+
+
+def _fixed(speed: float) -> int:
+    """The speed in km/h / 2**ODO_BITS: exact for every speed of that resolution, nearest otherwise."""
+    num, den = float(speed).as_integer_ratio()
+    shift = ODO_BITS - (den.bit_length() - 1)
+    return num << shift if shift >= 0 else round(Fraction(num, den) * (1 << ODO_BITS))
+
+
 class Vehicle:
     BULK_READABLE = True  # pragma: no mutate  (a speed declaration: bulk.py)
     def __init__(self, train: "TrainContext"):
@@ -120,10 +134,10 @@ class Vehicle:
             self.outputs_spec[f"car{car}.CI cut-out"] = ("in", "cut out")
         self.ordered: dict[str, str] = {}          # equipment states ordered from the monitor
         self.compressor = False
-        # Metres run up to _odo_t, as an exact fraction (two ints: bulk.py reads ints and floats, not Fractions):
-        # the mileage the monitor shows in whole metres then moves by the same number of them every few steady
-        # periods of a cruise, which a float summed step by step does not (Train.bulk_period_us).
-        self._mileage_num, self._mileage_den = 0, 1
+        # The distance run up to _odo_t, exactly, as an integer count of ODO_UNIT: the mileage the monitor shows in
+        # whole metres then moves by the same number of them every few steady periods of a cruise, which a float
+        # summed step by step does not (Train.bulk_period_us).
+        self._odo_units = 0
         self._odo_t = 0
         self._odo_v = 0.0
         self.inputs: dict[str, Any] = {k: s.initial for k, s in self.inputs_spec.items() if s.initial is not None}
@@ -230,17 +244,14 @@ class Vehicle:
         now = self.kernel.now
         start = self._odo_v
         end = new_speed if linear else start
-        # (start + end) / 2 km/h for (now - _odo_t) us: km/h x us / 3.6e6 is metres
-        run = Fraction(self._mileage_num, self._mileage_den) \
-            + (Fraction(start) + Fraction(end)) * (now - self._odo_t) / 7_200_000
-        self._mileage_num, self._mileage_den = run.numerator, run.denominator
+        # (start + end) / 2 km/h for (now - _odo_t) us, in ODO_UNIT (half a km/h x us, over 2**ODO_BITS)
+        self._odo_units += (_fixed(start) + _fixed(end)) * (now - self._odo_t)
         self._odo_t, self._odo_v = now, new_speed
 
     def exact_mileage_km(self) -> Fraction:
         """The mileage now, exactly (the display point's whole metres are rounded from it)."""
-        run = Fraction(self._mileage_num, self._mileage_den) \
-            + Fraction(self._odo_v) * (self.kernel.now - self._odo_t) / 3_600_000
-        return run / 1000
+        units = self._odo_units + 2 * _fixed(self._odo_v) * (self.kernel.now - self._odo_t)
+        return Fraction(units, ODO_PER_KM)
 
     def distance_km(self, us: int) -> Fraction:
         """What the train runs in `us` at the speed it has now, exactly."""
