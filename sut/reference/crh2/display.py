@@ -8,9 +8,7 @@ way in the commanding CCU's status data and stay there until the monitor shows t
 """
 from __future__ import annotations
 
-import math
 from dataclasses import dataclass
-from fractions import Fraction
 from typing import TYPE_CHECKING, Any
 
 from sut.driver import DIRECTIONS
@@ -74,22 +72,21 @@ class DisplayTable:
                 return DIRECTIONS[latest["direction"]] if latest else "neutral"
             return latest[RUNNING[name]] if latest else 0
         vehicle = self.train.vehicle
-        if name == "mileage":
-            return vehicle.exact_mileage_km()     # rounded exactly to whole metres (Vehicle._odometer)
         return vehicle.reading(name) if name in NUMERIC else vehicle.output(name)
 
     def encode(self, point: Point, value: Any) -> int:
         if not point.values:
-            if type(value) is Fraction:
-                # the mileage, exact: to the nearest metre, a half up (docs/decisions.md, "Display"), so that a
-                # whole number of metres more run is that many more shown
-                return math.floor(value * NUMERIC[point.name][1] + Fraction(1, 2))
+            if point.name == "mileage":
+                # from the exact distance, to the nearest metre, a half up (docs/decisions.md, "Display"): a whole
+                # number of metres more run is that many more shown
+                return self.train.vehicle.mileage_in(NUMERIC["mileage"][1])
             return round(value * NUMERIC[point.name][1])
         return point.values.index(value)
 
-    def units_per(self, period_us: int) -> Fraction:
-        """The mileage point's units (metres) a train runs in `period_us` at its present speed."""
-        return self.train.vehicle.distance_km(period_us) * NUMERIC["mileage"][1]
+    def periods_to_repeat(self, period_us: int) -> int:
+        """The fewest periods of `period_us` in which the train at its present speed runs whole metres: the
+        mileage shown moves by the same number of them every that many periods."""
+        return self.train.vehicle.periods_to_repeat(period_us, NUMERIC["mileage"][1])
 
     # -- monitor side ---------------------------------------------------------------------------
     def decode(self, raw: dict) -> tuple[str, Any] | None:

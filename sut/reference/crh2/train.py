@@ -118,8 +118,8 @@ class Train:
         # number of them only every few periods (1.2 m a period at 36 km/h: 6 m every 5), and those are its
         # steady period. A speed whose metres repeat only after more than CRUISE_PERIODS periods keeps the
         # token's, and the train says it is not steady (bulk_steady).
-        units = self.display.units_per(period)
-        return period * units.denominator if units.denominator <= CRUISE_PERIODS else period
+        periods = self.display.periods_to_repeat(period)
+        return period * periods if periods <= CRUISE_PERIODS else period
 
     def bulk_steady(self) -> bool:
         """bulk.py: a train whose whole metres of mileage repeat only over more than CRUISE_PERIODS token
@@ -127,7 +127,7 @@ class Train:
         over: its monitor's mileage, and the status data that carries it, stay the same for a few periods and
         then move by a metre, which a line through three periods does not show (three equal readings look
         like a standstill). Such a train is simulated, every frame."""
-        return self.display.units_per(self._token_period_us()).denominator <= CRUISE_PERIODS
+        return self.display.periods_to_repeat(self._token_period_us()) <= CRUISE_PERIODS
 
     def _token_period_us(self) -> int:
         hold = self.cfg.timing.token_hold_us

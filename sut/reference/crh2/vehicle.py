@@ -9,7 +9,7 @@ is what a band test reads (did the valve drop between 600 and 580 kPa?).
 """
 from __future__ import annotations
 
-from fractions import Fraction
+import math
 
 from dataclasses import dataclass
 from typing import TYPE_CHECKING, Any
@@ -115,7 +115,7 @@ def _fixed(speed: float) -> int:
     """The speed in km/h / 2**ODO_BITS: exact for every speed of that resolution, nearest otherwise."""
     num, den = float(speed).as_integer_ratio()
     shift = ODO_BITS - (den.bit_length() - 1)
-    return num << shift if shift >= 0 else round(Fraction(num, den) * (1 << ODO_BITS))
+    return num << shift if shift >= 0 else (2 * (num << ODO_BITS) + den) // (2 * den)
 
 
 class Vehicle:
@@ -248,19 +248,23 @@ class Vehicle:
         self._odo_units += (_fixed(start) + _fixed(end)) * (now - self._odo_t)
         self._odo_t, self._odo_v = now, new_speed
 
-    def exact_mileage_km(self) -> Fraction:
-        """The mileage now, exactly (the display point's whole metres are rounded from it)."""
-        units = self._odo_units + 2 * _fixed(self._odo_v) * (self.kernel.now - self._odo_t)
-        return Fraction(units, ODO_PER_KM)
+    def _units_now(self) -> int:
+        return self._odo_units + 2 * _fixed(self._odo_v) * (self.kernel.now - self._odo_t)
 
-    def distance_km(self, us: int) -> Fraction:
-        """What the train runs in `us` at the speed it has now, exactly."""
-        return Fraction(self._odo_v) * us / 3_600_000_000
+    def mileage_in(self, per_km: int) -> int:
+        """The mileage now in whole 1/per_km km, to the nearest, a half up (the display point's whole metres)."""
+        return (2 * self._units_now() * per_km + ODO_PER_KM) // (2 * ODO_PER_KM)
+
+    def periods_to_repeat(self, period_us: int, per_km: int) -> int:
+        """The fewest periods of `period_us` in which the train, at the speed it has now, runs a whole number of
+        1/per_km km."""
+        run, whole = _fixed(self._odo_v) * period_us * per_km, 3_600_000_000 << ODO_BITS
+        return whole // math.gcd(run, whole)
 
     def reading(self, name: str) -> float:
         """Numeric readings: speed (km/h), main pipe pressure (kPa), mileage (km)."""
         if name == "mileage":
-            return float(self.exact_mileage_km())
+            return self._units_now() / ODO_PER_KM          # the exact quotient, rounded once
         if name in ("speed", "main pipe pressure"):
             return float(self.inputs[name])
         raise UnknownName("reading", name, ("speed", "main pipe pressure", "mileage"))
