@@ -617,9 +617,10 @@ def advance(train: "Train", until: int) -> BulkReport:
     So, at every period boundary from now on, the state is read and the trace's length noted; once three
     boundaries in a row show a steady line (slope()) and the two periods' events are one pattern (same
     events in the same order, each exactly one period later, every field equal or an integer, or a
-    Scaled reading's units, that moved by a fixed amount), the periods up to `until` (or up to a pending one-shot timer, after which the line
-    is looked for again) are skipped: the state by jump(), the trace by repeating the second period's
-    events with their times and moving fields carried on. The rest is frame by frame.
+    Scaled reading's units, that moved by a fixed amount), the periods up to `until` (or up to a pending
+    one-shot timer, after which the line is looked for again) are skipped: the state by jump(), the trace
+    by repeating the second period's events with their times and moving fields carried on. The rest is
+    frame by frame.
     The metronomes' ticks (Kernel.metronome: the CRH2 loop devices) are not part of the pattern: they are
     run in place over the skipped stretch and merged in as the kernel orders them.
     Advances shorter than three periods or than BULK_MIN_US are simulated as they are (nothing to gain),

@@ -10,7 +10,6 @@ is what a band test reads (did the valve drop between 600 and 580 kPa?).
 from __future__ import annotations
 
 import math
-
 from dataclasses import dataclass
 from typing import TYPE_CHECKING, Any
 
@@ -134,9 +133,9 @@ class Vehicle:
             self.outputs_spec[f"car{car}.CI cut-out"] = ("in", "cut out")
         self.ordered: dict[str, str] = {}          # equipment states ordered from the monitor
         self.compressor = False
-        # The distance run up to _odo_t, exactly, as an integer count of ODO_UNIT: the mileage the monitor shows in
-        # whole metres then moves by the same number of them every few steady periods of a cruise, which a float
-        # summed step by step does not (Train.bulk_period_us).
+        # The distance run up to _odo_t, exactly, in odometer units (ODO_PER_KM to the km): the mileage the monitor
+        # shows in whole metres then moves by the same number of them every few steady periods of a cruise, which
+        # a float summed step by step does not (Train.bulk_period_us).
         self._odo_units = 0
         self._odo_t = 0
         self._odo_v = 0.0
@@ -244,7 +243,7 @@ class Vehicle:
         now = self.kernel.now
         start = self._odo_v
         end = new_speed if linear else start
-        # (start + end) / 2 km/h for (now - _odo_t) us, in ODO_UNIT (half a km/h x us, over 2**ODO_BITS)
+        # (start + end) / 2 km/h for (now - _odo_t) us, in odometer units (half a km/h x us, over 2**ODO_BITS)
         self._odo_units += (_fixed(start) + _fixed(end)) * (now - self._odo_t)
         self._odo_t, self._odo_v = now, new_speed
 
