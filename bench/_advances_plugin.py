@@ -7,9 +7,9 @@ module the simulated train comes from) and per kind of advance (shorter than bul
 skipped; longer, some skipped) the advances, their wall seconds, the simulated and the skipped time. For a long
 advance that skipped nothing, the last reason bulk advance found (what stopped the last look): a read that
 changed shape says where (the path from the train, or from its pending timers, to the first leaf that
-differs, with both values), a line that is not straight which integer moved unevenly, a trace pattern its own message, and an
-advance too short for three of its periods says its period. Writes JSON to $ADVANCES_PLUGIN_OUT at the session's
-end. Only slower than a plain run (a read that fails early is read again whole, to say where it differs); the
+differs, with both values), a line that is not straight which integer moved unevenly, a trace pattern its
+own message, and an advance too short for three of its periods says its period; with the first scenario each
+reason was seen in. Writes JSON to $ADVANCES_PLUGIN_OUT at the session's end. Only slower than a plain run (a read that fails early is read again whole, to say where it differs); the
 run's verdicts and traces are unchanged. Not a file the project's runs load.
 """
 from __future__ import annotations
@@ -26,8 +26,9 @@ from sut.reference.kernel import Timer
 
 # (model, kind) -> [advances, wall s, simulated us, skipped us]
 _KINDS: dict[tuple[str, str], list] = defaultdict(lambda: [0, 0.0, 0, 0])
-# (model, reason) -> [advances, wall s, simulated us, an example of the values where the state changed]
-_WHY: dict[tuple[str, str], list] = defaultdict(lambda: [0, 0.0, 0, ""])
+# (model, reason) -> [advances, wall s, simulated us, an example of the values where the state changed, the
+# first scenario it was seen in]
+_WHY: dict[tuple[str, str], list] = defaultdict(lambda: [0, 0.0, 0, "", ""])
 _look: dict[str, Any] = {"reason": None, "last": None, "example": "", "train": None}
 
 _snapshot, _slope, _trace_pattern, _skip, _advance = (bulk.snapshot, bulk.slope, bulk._trace_pattern, bulk._skip,
@@ -179,6 +180,7 @@ def advance(train: Any, until: int) -> Any:
         why[1] += wall
         why[2] += report.simulated_us
         why[3] = why[3] or _look["example"]
+        why[4] = why[4] or os.environ.get("PYTEST_CURRENT_TEST", "").split("::")[-1].split(" ")[0]
     row = _KINDS[(model, kind)]
     row[0] += 1
     row[1] += wall

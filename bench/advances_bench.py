@@ -64,15 +64,15 @@ def main(argv: list[str] | None = None) -> None:
         figures[f"{profile}.in_advances_s"] = in_advances
         kind_rows.append((profile, "", f"in advances {in_advances:.1f} s of the run's {wall:.1f} s", "", "", "", "",
                           summary))
-        for model, reason, n, secs, simulated, example in sorted(seen["why"], key=lambda r: -r[3])[:args.top]:
+        for model, reason, n, secs, simulated, example, scenario in sorted(seen["why"], key=lambda r: -r[3])[:args.top]:
             why_rows.append((profile, model, reason + (f" (e.g. {example})" if example else ""), str(n),
-                             f"{simulated / 1e6:,.1f} s", f"{secs:.2f} s"))
+                             f"{simulated / 1e6:,.1f} s", f"{secs:.2f} s", scenario))
             figures[f"{profile}.why.{model}: {reason}"] = secs
     table("Advances per profile and model (one process each)",
           ("profile", "model", "advances", "n", "simulated", "skipped", "wall", "wall per simulated s"),
           kind_rows, plain=args.plain)
     table("Long advances that skipped nothing: what stopped bulk advance the last time it looked",
-          ("profile", "model", "reason", "n", "simulated", "wall"), why_rows, plain=args.plain)
+          ("profile", "model", "reason", "n", "simulated", "wall", "first seen in"), why_rows, plain=args.plain)
     _history.record(args, "advances_bench", figures, load_before=load_before, load_after=_history.load(),
                     selection=None if argv is None else _history.measured_options(argv))
 
