@@ -367,7 +367,7 @@ def test_a_cruise_is_jumped_a_whole_number_of_metres_at_a_time_and_agrees_both_w
                                                                                     jumps: list[int]) -> None:
     """Issue 33, item 3. At a steady speed the monitor's mileage moves by whole metres (1.2 m a 120 ms token
     period at 36 km/h): the steady period is the token periods that run a whole number of them (6 m in 5)."""
-    fast = _cruise_both_ways(speed)
+    _cruise_both_ways(speed)
     assert len(jumps) >= 2 and jumps[0] * periods * 120 * MS >= 10 * S, jumps       # the cruise, then the stop
     cruising = powered()
     cruising.set_input("speed", speed)
