@@ -9,8 +9,9 @@ advance that skipped nothing, the last reason bulk advance found (what stopped t
 changed shape says where (the path from the train, or from its pending timers, to the first leaf that
 differs, with both values), a line that is not straight which integer moved unevenly, a trace pattern its
 own message, and an advance too short for three of its periods says its period; with the first scenario each
-reason was seen in. Writes JSON to $ADVANCES_PLUGIN_OUT at the session's end. Only slower than a plain run (a read that fails early is read again whole, to say where it differs); the
-run's verdicts and traces are unchanged. Not a file the project's runs load.
+reason was seen in. Writes JSON to $ADVANCES_PLUGIN_OUT at the session's end. Only slower than a plain run (a
+read that fails early is read again whole, to say where it differs); the run's verdicts and traces are
+unchanged. Not a file the project's runs load.
 """
 from __future__ import annotations
 

@@ -112,7 +112,10 @@ class Train:
 
     def bulk_period_us(self) -> int:
         """The steady period (sut/reference/bulk.py): every cyclic activity and the token's round, one
-        holding time per hop. A guess that is wrong only costs speed: bulk.py checks the line it finds."""
+        holding time per hop. A wrong guess of the token's part only costs speed: bulk.py checks the line it
+        finds, and traffic out of step with the guess shows in the two periods' traces. Not so the mileage
+        shown, which moves by a whole metre less often than once a period and says nothing meanwhile: its
+        part below must be exact (bulk_steady)."""
         period = self._token_period_us()
         # A train running at a steady speed: the cab monitor's mileage moves by whole metres, by the same
         # number of them only every few periods (1.2 m a period at 36 km/h: 6 m every 5), and those are its
