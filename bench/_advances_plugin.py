@@ -50,6 +50,8 @@ class _Locator(bulk._Reader):
     """A reader that also says where the leaf at shape[index] lives: the attribute and key path from the train
     (or from its pending timers) to it."""
 
+    INLINE = False            # every leaf through read(), which keeps the path
+
     def __init__(self, index: int) -> None:
         super().__init__(None)
         self.index, self.path, self.named, self.found = index, [], [], None

@@ -7,6 +7,8 @@ Prints, from one run on this machine:
     events and trace events per simulated hour;
   - bulk (sut/reference/bulk.py) for --hours with one steady sample every 1 h and every 3 h: wall time,
     how much was simulated and how much skipped, jumps, the trace it left, peak traced memory;
+  - a reading of the whole train (bulk.snapshot, the powered set): ms per read, the best of 15 batches of 20
+    (bulk advance weighs three of them against simulating; an advance shorter than BULK_MIN_US is not read);
   - with --agree-minutes N: the same N minutes both ways, and whether every leaf of the state agrees
     (tests/test_bulk.py does this for 10 min with faults on the way).
 Target (issue 5): 72 h in <= 10 s of wall time.
@@ -48,6 +50,19 @@ def frame_by_frame(minutes: float) -> tuple[float, int, int, float]:
     per_hour = HOUR / span
     return (wall * per_hour, round((train.train.kernel.events - k0) * per_hour),
             round((len(train.train.events) - t0) * per_hour), (_peak_rss_mib() - rss0) * per_hour)
+
+
+def read_ms() -> tuple[float, int]:
+    """Milliseconds per reading of the powered train, the best of 15 batches of 20 (a shared VM's noise only
+    ever adds), and the leaves a reading holds."""
+    train = powered().train
+    best = float("inf")
+    for _ in range(15):
+        wall = time.perf_counter()
+        for _ in range(20):
+            leaves = len(bulk.snapshot(train).shape)
+        best = min(best, (time.perf_counter() - wall) / 20)
+    return best * 1000, leaves
 
 
 def bulk_run(hours: float, every_h: float) -> dict:
@@ -92,6 +107,9 @@ def main() -> None:
           f"{args.hours:g} h; {events_h:,} kernel events and {trace_h:,} trace events per simulated hour; peak "
           f"resident memory grows {rss_h:,.0f} MiB per simulated hour (the model's repeated periods are held as "
           f"patterns, sut/eventlog.py; the metronomes' events still one by one)")
+    ms, leaves = read_ms()
+    figures["state_read_ms"] = ms
+    print(f"a reading of the train {ms:8.2f} ms ({leaves:,} leaves of shape)")
     for every in (1.0, 3.0):
         r = bulk_run(args.hours, every)
         rep = r["report"]

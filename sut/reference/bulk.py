@@ -95,6 +95,11 @@ class _Reader:
     # find the train still changing. Given the last read's shape, the reader compares as it goes (every
     # CHECK_EVERY leaves, at the end of an object) and stops at the first difference.
     CHECK_EVERY = 2048
+    # The leaves most of a train is made of (ints, strings, flags, None) are read in the loop over their
+    # container, not by a call each: what read() would do, and a call per leaf was most of a reading's cost
+    # (bench/bulk_bench.py, state_read_ms). A subclass that must see every leaf go through read() (the
+    # advances bench's locator) turns it off.
+    INLINE = True
 
     def __init__(self, expect: list | None = None) -> None:
         self.expect = expect
@@ -119,7 +124,10 @@ class _Reader:
             self.ints.append(value.raw)
             self.writers.append(("scaled", writer, value.scale))
             return
-        if t in _PLAIN or isinstance(value, _SCALARS):
+        scalar = _SCALAR.get(t)
+        if scalar is None:
+            scalar = _SCALAR[t] = issubclass(t, _SCALARS)        # an Enum, a range: by type, once
+        if scalar:
             self.shape.append(t)
             self.shape.append(value)
             return
@@ -139,13 +147,19 @@ class _Reader:
         self.keep.append(value)
         if t is list or t is deque:
             self.shape.append((t, len(value)))
-            for i, item in enumerate(value):
-                self.read(item, ("item", value, i))
+            if self.INLINE:
+                self._read_items(value, enumerate(value), False)
+            else:
+                for i, item in enumerate(value):
+                    self.read(item, ("item", value, i))
         elif t is dict:
             self.shape.append((dict, len(value)))
-            for key, item in value.items():
-                self.shape.append(key)            # a key that moves is a change of shape
-                self.read(item, ("item", value, key))
+            if self.INLINE:
+                self._read_items(value, value.items(), True)   # a key that moves is a change of shape
+            else:
+                for key, item in value.items():
+                    self.shape.append(key)
+                    self.read(item, ("item", value, key))
         elif t is set or t is frozenset:
             items = sorted(value) if all(type(v) is int for v in value) else sorted(value, key=repr)
             holder = [items, value]
@@ -165,6 +179,28 @@ class _Reader:
         else:
             self._read_object(value, t)
 
+    def _read_items(self, container: Any, items: Any, keyed: bool, how: str = "item",
+                    skip: frozenset = frozenset()) -> None:
+        """read() of each item of a list, deque or dict (how="item") or attribute of an object ("attr"), with
+        the common leaves inline; `keyed`: each key or name is part of the shape, and those in `skip` are left
+        out."""
+        shape, ints, writers, read = self.shape, self.ints, self.writers, self.read
+        for key, item in items:
+            if keyed:
+                if key in skip:
+                    continue
+                shape.append(key)
+            vt = type(item)
+            if vt is int:
+                shape.append(int)
+                ints.append(item)
+                writers.append((how, container, key))
+            elif vt in _PLAIN:
+                shape.append(vt)
+                shape.append(item)
+            else:
+                read(item, (how, container, key))
+
     def _read_object(self, obj: Any, t: type) -> None:
         info = _CLASSES.get(t)
         if info is None:
@@ -173,16 +209,16 @@ class _Reader:
         shape, read = self.shape, self.read
         shape.append(t)
         attrs = getattr(obj, "__dict__", None)
-        if attrs is not None:
-            for name, value in list(attrs.items()):
+        named = list(attrs.items()) if attrs is not None else []
+        if slots:
+            named += [(name, getattr(obj, name)) for name in slots if hasattr(obj, name)]
+        if self.INLINE:
+            self._read_items(obj, named, True, "attr", skip)
+        else:
+            for name, value in named:
                 if name not in skip:
                     shape.append(name)
                     read(value, ("attr", obj, name))
-        for name in slots:
-            if name in skip or not hasattr(obj, name):
-                continue
-            shape.append(name)
-            read(getattr(obj, name), ("attr", obj, name))
         if steady and not obj.bulk_steady():
             raise NotSteady(f"{t.__qualname__} {obj!r:.60} cannot be carried over a jump")
         if rebuild:
@@ -195,6 +231,7 @@ class _Reader:
 
 
 _PLAIN = frozenset((str, bytes, float, type(None), bool))
+_SCALAR: dict[type, bool] = dict.fromkeys(_PLAIN, True)
 _CLASSES: dict[type, tuple] = {}
 
 
