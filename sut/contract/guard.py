@@ -80,7 +80,11 @@ class CheckedFields(dict):
         self._ev, self._guard = ev, guard
 
     def __getitem__(self, key: str) -> Any:
-        self._guard._field(self._ev, key)
+        guard = self._guard
+        # A field already held to the contract in this scenario, with nothing to record, needs no call: a
+        # Then step over the whole trace reads one field of thousands of events.
+        if guard._recorder is not None or (self._ev.kind, key) not in guard._fields_read:
+            guard._field(self._ev, key)
         try:
             return dict.__getitem__(self, key)
         except KeyError:
@@ -153,7 +157,18 @@ class ContractTrace:
     def select(self, kind: str | None = None, source: str | None = None, since: int | None = None,
                until: int | None = None, **where: Any) -> list[TraceEvent]:
         self._asked(kind, source, where)
-        return [self._wrap(ev) for ev in self._trace.select(kind, source, since, until, **where)]
+        events = self._trace.select(kind, source, since, until, **where)
+        guard = self._guard
+        if guard._recorder is not None or guard._contract is None:
+            return [self._wrap(ev) for ev in events]
+        # _wrap, inline: a step may be handed every command frame of a run
+        check, make, guard = guard._contract.check_event, new_event, self._guard
+        out = []
+        for ev in events:
+            fields = ev.fields
+            check(ev.source, ev.kind, fields, ev.t)
+            out.append(make(TraceEvent, (ev.t, ev.source, ev.kind, CheckedFields(fields, ev, guard))))
+        return out
 
     def first(self, **criteria: Any) -> TraceEvent | None:
         self._asked(criteria.get("kind"), criteria.get("source"),
