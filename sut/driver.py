@@ -99,7 +99,8 @@ class TrainDriver(abc.ABC):
     # -- snapshots (sut/snapshot.py) -----------------------------------------------------------
     def snapshot(self) -> bytes:
         """This train's whole state, from which `from_snapshot` makes an independent train in this
-        process: the same state, none of the same objects. A backend whose state is more than its own
+        process: the same state, none of the same objects (but events of its trace, which no one changes:
+        PickledState shares the trace up to the snapshot). A backend whose state is more than its own
         objects (a rig, a remote train) raises NotSupported, and its scenarios simply simulate."""
         raise NotSupported(f"{self.backend_name} cannot snapshot its state")
 

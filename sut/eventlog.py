@@ -133,8 +133,27 @@ class Repeat:
         return model[a:b] if (a, b) != (0, self.size) else model
 
 
+class Closed(tuple):
+    """Events one by one that no one will write again: the part of a log before a powered-up snapshot
+    (`EventLog.close`). A stored state and every driver restored from it hold the same Closed stretch
+    (sut/snapshot.py), so restoring one does not make its events again; the kinds are worked out once."""
+
+    def kinds(self, a: int, b: int) -> list[str]:
+        every = self.__dict__.get("_kinds")
+        if every is None:
+            every = self._kinds = list(map(_KIND, self))
+        return every[a:b] if (a, b) != (0, len(self)) else every
+
+    def slice(self, a: int, b: int) -> list[TraceEvent]:
+        return list(self[a:b])
+
+    def __reduce__(self) -> tuple:
+        return (Closed, (tuple(self),))            # the kinds are worked out again where needed
+
+
 class EventLog:
-    """A list of trace events, in time order, whose closed stretches may be Repeats (see the module)."""
+    """A list of trace events, in time order, whose closed stretches may be Repeats or Closed (see the
+    module)."""
 
     __slots__ = ("_chunks", "_starts", "_tail", "append", "extend", "__weakref__")
 
@@ -162,6 +181,17 @@ class EventLog:
         self._chunks.append(stretch)
         self._starts.append(start)
         self._open([], start + stretch.size)
+
+    def close(self) -> list[Closed]:
+        """The events held one by one so far become Closed stretches (the same events: only who may share
+        them changes), new ones go to a fresh tail; every Closed stretch of the log."""
+        chunks = self._chunks
+        for i, chunk in enumerate(chunks):
+            if type(chunk) is list and chunk:
+                chunks[i] = Closed(chunk)
+        if type(chunks[-1]) is Closed:
+            self._open([], self._starts[-1] + len(chunks[-1]))
+        return [chunk for chunk in chunks if type(chunk) is Closed]
 
     def held_before(self, pos: int) -> Repeat | None:
         """The stretch that ends at `pos`, where every event from `pos` on is in the tail: the one a period
@@ -197,8 +227,8 @@ class EventLog:
 
     @property
     def patterned(self) -> bool:
-        """Some stretch is held as a pattern (otherwise the tail is every event)."""
-        return len(self._chunks) > 1
+        """Some stretch is held as a pattern (otherwise every event is held one by one)."""
+        return any(type(chunk) is Repeat for chunk in self._chunks)
 
     # -- reading ---------------------------------------------------------------------------------
     def __len__(self) -> int:
@@ -239,13 +269,13 @@ class EventLog:
         while c < len(self._chunks) and self._starts[c] < stop:
             chunk, base = self._chunks[c], self._starts[c]
             a, b = max(start, base) - base, min(stop, base + len(chunk)) - base
-            out.extend(chunk[a:b] if type(chunk) is list else chunk.slice(a, b))
+            out.extend(chunk[a:b] if type(chunk) is not Repeat else chunk.slice(a, b))
             c += 1
         return out
 
     def pick(self, positions: Iterable[int]) -> list[TraceEvent]:
-        """The events at these positions (the trace index's answer), made at C speed where no stretch is
-        held as a pattern. Otherwise the positions, in rising order as the index gives them, are walked chunk by
+        """The events at these positions (the trace index's answer), made at C speed where the log is one
+        list. Otherwise the positions, in rising order as the index gives them, are walked chunk by
         chunk: a chunk is looked up when a position leaves the last one, not for every position."""
         if len(self._chunks) == 1:
             return list(map(self._tail.__getitem__, positions))
@@ -300,7 +330,7 @@ class EventLog:
         self._open(events, 0)
 
     def __repr__(self) -> str:
-        held = sum(len(c) for c in self._chunks if type(c) is not list)
+        held = sum(len(c) for c in self._chunks if type(c) is Repeat)
         return f"EventLog({len(self)} events, {held} held as patterns)"
 
     def __getstate__(self) -> tuple:

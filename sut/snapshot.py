@@ -31,6 +31,7 @@ snapshots on and off for every profile.
 from __future__ import annotations
 
 import gc
+import io
 import pickle
 import time
 from collections import OrderedDict
@@ -38,6 +39,7 @@ from typing import Any, Callable
 
 from sut.driver import TrainDriver
 from sut.errors import NotSupported, SutError
+from sut.eventlog import Closed, EventLog
 from sut.trace import Trace, TraceEvent
 
 # Driver calls that only observe (besides the properties now_us, powered and trace): they never change it.
@@ -61,12 +63,51 @@ MEASUREMENTS = frozenset({"insulation_resistance", "watch_monitor"})
 DEFAULT_BUDGET = 256 * 2**20
 
 
+class State(bytes):
+    """A pickled driver and the Closed stretches of its trace (sut/eventlog.py) it refers to by number: the
+    trace up to the state, three quarters of its bytes, is shared with the driver it was taken from and with
+    every driver restored from it, not pickled into each. `nbytes`: what it holds in all (the cache's budget
+    counts that; restoring costs what len() says)."""
+
+    closed: list
+    nbytes: int
+
+
+def _closed_bytes(chunk: Closed) -> int:
+    size = chunk.__dict__.get("_nbytes")
+    if size is None:
+        size = chunk._nbytes = len(pickle.dumps(tuple(chunk), protocol=pickle.HIGHEST_PROTOCOL))
+    return size
+
+
 class PickledState:
     """`snapshot`/`from_snapshot` by pickling the whole driver: for backends that live in this process and
     hold nothing but their own state (no socket, no file, no thread)."""
 
     def snapshot(self) -> bytes:
-        return pickle.dumps(self, protocol=pickle.HIGHEST_PROTOCOL)
+        closed: list[Closed] = []
+        numbers: dict[int, int] = {}
+
+        def shared(obj: Any) -> int | None:
+            kind = type(obj)
+            if kind is EventLog:
+                obj.close()                # the events so far: no one writes them again
+            elif kind is Closed:
+                number = numbers.get(id(obj))
+                if number is None:
+                    number = numbers[id(obj)] = len(closed)
+                    closed.append(obj)
+                return number
+            return None
+
+        out = io.BytesIO()
+        pickler = pickle.Pickler(out, protocol=pickle.HIGHEST_PROTOCOL)
+        pickler.persistent_id = shared
+        pickler.dump(self)
+        state = State(out.getvalue())
+        state.closed = closed
+        state.nbytes = len(state) + sum(map(_closed_bytes, closed))
+        return state
 
     @classmethod
     def from_snapshot(cls, data: bytes) -> TrainDriver:
@@ -75,7 +116,13 @@ class PickledState:
         enabled = gc.isenabled()
         gc.disable()
         try:
-            driver = pickle.loads(data)
+            closed = getattr(data, "closed", None)
+            if closed is None:
+                driver = pickle.loads(data)
+            else:
+                unpickler = pickle.Unpickler(io.BytesIO(data))
+                unpickler.persistent_load = closed.__getitem__
+                driver = unpickler.load()
         finally:
             if enabled:
                 gc.enable()
@@ -211,7 +258,7 @@ class SnapshotCache:
 
     def _put(self, node: int, cls: type[TrainDriver], data: bytes) -> None:
         self._states[node] = (cls, data)
-        self.size += len(data)
+        self.size += getattr(data, "nbytes", len(data))
         self.stored += 1
         while self.size > self.budget and len(self._states) > 1:
             self._drop(next(iter(self._states)))
@@ -219,7 +266,7 @@ class SnapshotCache:
 
     def _drop(self, node: int) -> None:
         _, data = self._states.pop(node)
-        self.size -= len(data)
+        self.size -= getattr(data, "nbytes", len(data))
 
     # -- answers to reads ----------------------------------------------------------------------------
     def answer(self, node: int, read: Any) -> tuple[bool, Any]:

@@ -161,3 +161,35 @@ def test_a_long_frame_by_frame_advance_holds_its_trace_as_patterns() -> None:
     assert list(held.events) == eager.events and held.free_marks == eager.free_marks
     loose = len(held.events) - sum(len(c) for c in held.events._chunks if type(c) is not list)
     assert loose < len(held.events) // 50, repr(held.events)
+
+
+def test_a_closed_log_reads_as_the_list_and_goes_on_in_a_fresh_tail() -> None:
+    """EventLog.close (a snapshot's, sut/snapshot.py): the events so far become one Closed stretch, read as
+    they were; later events go to a new tail, so the stretch is never written again."""
+    toy = _Toy(True, 5000, [])
+    for i in range(4):
+        toy.events.append(TraceEvent(4000 + i, "train", KINDS[i % 2], {"i": i}))
+    bulk._repeat(toy, _pattern([(10, SOURCES[0], KINDS[0], 1, 1)], 4000), 1, 3, PERIOD)
+    toy.events.append(TraceEvent(9000, "train", "after", {}))
+    whole = list(toy.events)
+    trace = Trace(toy.events)
+    trace.select(kind=KINDS[0])
+    closed = toy.events.close()
+    assert [list(c) for c in closed] == [whole[:4], whole[-1:]]      # the tails, not the held stretch
+    assert toy.events.close() == closed                                # nothing new: nothing closed again
+    assert toy.events[0] is closed[0][0] and toy.events.patterned
+    toy.events.append(TraceEvent(9500, "train", "later", {}))
+    whole.append(toy.events[-1])
+    n = len(whole)
+    assert list(toy.events) == whole and len(toy.events) == n and list(closed[1]) == whole[-2:-1]
+    assert [toy.events[i] for i in range(-n, n)] == whole + whole
+    for a, b in ((0, n), (2, 6), (3, n - 1), (n - 2, n + 3)):
+        assert toy.events[a:b] == whole[a:b]
+    assert toy.events.kinds(0) == [ev.kind for ev in whole] and toy.events.kinds(3) == [ev.kind for ev in whole[3:]]
+    assert toy.events.pick([0, 3, 5, n - 2, n - 1]) == [whole[i] for i in (0, 3, 5, n - 2, n - 1)]
+    assert trace.select(kind=KINDS[0]) == [ev for ev in whole if ev.kind == KINDS[0]]
+    for copied in (pickle.loads(pickle.dumps(toy.events)), copy.deepcopy(toy.events)):
+        assert list(copied) == whole
+    only_closed = EventLog(whole[:3])
+    only_closed.close()
+    assert not only_closed.patterned and list(only_closed) == whole[:3]

@@ -4,6 +4,7 @@ another's state; the key holds everything that makes a state (backend class and 
 every call); a backend that cannot snapshot simulates, saying why once."""
 from __future__ import annotations
 
+import pickle
 import subprocess
 import sys
 
@@ -176,3 +177,24 @@ def test_a_backend_without_snapshots_simply_simulates() -> None:
     runs = [_scenario(cache, cls=Rig, notch=notch) for notch in (1, 2, 3)]
     assert cache.stored == 0 and cache.restored == 0 and cache.notes == []
     assert all(run.now_us == 1_100_000 for run in runs)
+
+
+def test_a_restored_train_shares_the_trace_up_to_the_snapshot_and_nothing_it_writes() -> None:
+    """PickledState keeps the trace up to the state out of the pickle (sut/eventlog.py, Closed): the stored
+    state and every train restored from it hold those very events; what any of them emits later is its own."""
+    train = Reference.open("crh2")
+    _background(train)
+    data = train.snapshot()
+    assert data.closed and len(data) < data.nbytes
+    first, second = ReferenceTrain.from_snapshot(data), ReferenceTrain.from_snapshot(data)
+    n = len(train.trace)
+    assert first.trace[n - 1] is second.trace[n - 1] is train.trace[n - 1]
+    first.set_traction(1, 3)
+    first.advance_ms(100)
+    second.advance_ms(100)
+    train.advance_ms(100)
+    assert first.trace.select(kind="desk.traction") and not second.trace.select(kind="desk.traction")
+    assert second.trace.to_csv() == train.trace.to_csv() != first.trace.to_csv()
+    plain = ReferenceTrain.from_snapshot(pickle.dumps(ReferenceTrain.from_snapshot(data),
+                                                      protocol=pickle.HIGHEST_PROTOCOL))
+    assert plain.trace.to_csv()[:1000] == train.trace.to_csv()[:1000]      # a plain pickle restores too
