@@ -17,9 +17,10 @@ slices, kinds, pickling, folding) over generated patterns. Kept eager: a model w
 """
 from __future__ import annotations
 
+from array import array
 from bisect import bisect_left, bisect_right
-from itertools import chain
-from operator import attrgetter
+from itertools import chain, repeat
+from operator import attrgetter, le, sub
 from typing import Any, Iterable, Iterator
 
 from sut.trace import TraceEvent, new_event
@@ -275,23 +276,28 @@ class EventLog:
 
     def pick(self, positions: Iterable[int]) -> list[TraceEvent]:
         """The events at these positions (the trace index's answer), made at C speed where the log is one
-        list. Otherwise the positions, in rising order as the index gives them, are walked chunk by
-        chunk: a chunk is looked up when a position leaves the last one, not for every position."""
+        list, or the positions rise and lie inside it (as the index gives them): each chunk's positions, found
+        by bisection, are looked up in it in one go. Others (from the end, out of order) are read one by one,
+        as self[i] reads them."""
         if len(self._chunks) == 1:
             return list(map(self._tail.__getitem__, positions))
-        starts, chunks, n = self._starts, self._chunks, len(self)
-        out: list = []
-        base = end = 0
-        chunk: Any = None
-        for i in positions:
-            if not base <= i < end:
-                if not 0 <= i < n:
-                    out.append(self[i])           # its error, or a position from the end: as self[i] reads it
-                    continue
-                c = bisect_right(starts, i) - 1
-                chunk, base = chunks[c], starts[c]
-                end = starts[c + 1] if c + 1 < len(starts) else n
-            out.append(chunk[i - base])
+        if type(positions) is not list and type(positions) is not array:
+            positions = list(positions)
+        n = len(self)
+        if not positions:
+            return []
+        if positions[0] < 0 or positions[-1] >= n or not all(map(le, positions, positions[1:])):
+            return [self[i] for i in positions]
+        starts, chunks, out = self._starts, self._chunks, []
+        lo = 0
+        for c in range(bisect_right(starts, positions[0]) - 1, len(chunks)):
+            end = starts[c + 1] if c + 1 < len(starts) else n
+            hi = bisect_left(positions, end, lo)
+            if hi > lo:
+                out.extend(map(chunks[c].__getitem__, map(sub, positions[lo:hi], repeat(starts[c]))))
+                lo = hi
+            if lo == len(positions):
+                break
         return out
 
     def kinds(self, start: int) -> list[str]:

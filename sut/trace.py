@@ -244,17 +244,19 @@ class Trace:
                     out[ev.kind].append(ev)
             return out
         events, kind_list = self._events, self._catch_up()
+        pick = getattr(events, "pick", None)
         out = {}
         for kind in self._kind_set.intersection(kinds):
-            taken = out[kind] = []
+            taken: list[int] = []
             i, find = 0, kind_list.index
             try:
                 while len(taken) < n:
                     i = find(kind, i)
-                    taken.append(events[i])
+                    taken.append(i)
                     i += 1
             except ValueError:
                 pass
+            out[kind] = pick(taken) if pick is not None else [events[i] for i in taken]
         return out
 
     def _since(self, since: int | None) -> Iterable[TraceEvent]:
