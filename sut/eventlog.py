@@ -11,6 +11,10 @@ A long stretch simulated frame by frame is folded the same way as it runs (bulk.
 events repeat the one before becomes the next repetition of a stretch (`hold`, `grow`), so that a run bulk
 cannot skip keeps its trace in bounded memory; the metronomes' events stay one by one inside it.
 
+A powered-up snapshot (sut/snapshot.py) closes the log first: the events held one by one so far become `Closed`
+stretches, which the stored state and every driver restored from it share instead of each unpickling its own
+copy; new events go to a fresh tail.
+
 Read through it, an EventLog is the list the stretch would have been, event for event: `Repeat` makes each
 event by the formula bulk.py's eager repeat uses, and tests/test_eventlog.py holds the two equal (items,
 slices, kinds, pickling, folding) over generated patterns. Kept eager: a model whose `events` is a plain list.
@@ -18,6 +22,7 @@ slices, kinds, pickling, folding) over generated patterns. Kept eager: a model w
 from __future__ import annotations
 
 from array import array
+import sys
 from bisect import bisect_left, bisect_right
 from itertools import chain, repeat
 from operator import attrgetter, le, sub
@@ -148,8 +153,24 @@ class Closed(tuple):
     def slice(self, a: int, b: int) -> list[TraceEvent]:
         return list(self[a:b])
 
+    def nbytes(self) -> int:
+        """The memory its events take as objects, estimated once from a sample of SAMPLE_EVENTS (each object
+        on its own: shared strings and numbers are counted again; tests/test_snapshot.py holds the estimate
+        between what tracemalloc sees and twice that). A snapshot cache's budget counts this, not the few
+        pickled bytes (~6x fewer) such events would take."""
+        size = self.__dict__.get("_nbytes")
+        if size is None:
+            size_of = sys.getsizeof
+            sample = self[::max(1, len(self) // SAMPLE_EVENTS)]
+            each = sum(size_of(ev) + size_of(ev.fields) + sum(map(size_of, ev.fields.values())) for ev in sample)
+            size = self._nbytes = size_of(self) + round(each * len(self) / max(len(sample), 1))
+        return size
+
     def __reduce__(self) -> tuple:
-        return (Closed, (tuple(self),))            # the kinds are worked out again where needed
+        return (Closed, (tuple(self),))            # the kinds and the size are worked out again where needed
+
+
+SAMPLE_EVENTS = 256
 
 
 class EventLog:

@@ -15,11 +15,13 @@ snapshots on and off for every profile.
   errors surface in the step that made it.
 - Reads (`now_us`, `output`, `trace.first(...)`, ...) are answered from what the same read returned at the
   same key before (a copy), else from the driver brought up to date: from a stored state on the journal
-  (a fresh copy: a scenario never sees another's objects) plus the calls after it, or by simulating the
-  deferred calls, whichever the measured costs say is cheaper.
+  (a fresh copy: a scenario never sees another's objects, but for the trace's events up to the state, which
+  no one writes: `State`) plus the calls after it, or by simulating the deferred calls, whichever the
+  measured costs say is cheaper.
 - A state is copied into the cache where journals branch (a key with two different next calls: the end
   of a shared Background, or of shared When steps), when a scenario passes it with the train up to date, if
-  simulating to it costs more than restoring it; within a byte budget, least recently used dropped first.
+  simulating to it costs more than restoring it; within a budget of the memory held (`State.nbytes`), least
+  recently used dropped first.
 - Only a backend that declares itself `DETERMINISTIC` is journaled (the `sut` fixture drives any other,
   a rig or a remote train, call by call). It offers snapshots by implementing `TrainDriver.snapshot` /
   `from_snapshot` (the references pickle themselves: `PickledState`); one that raises `NotSupported`
@@ -33,7 +35,6 @@ from __future__ import annotations
 import gc
 import io
 import pickle
-import sys
 import time
 from collections import OrderedDict
 from typing import Any, Callable
@@ -75,22 +76,6 @@ class State(bytes):
     nbytes: int
 
 
-# Events held as objects take ~6x their pickled bytes; the budget counts them as objects, estimated from a
-# sample (each object on its own, shared strings and numbers counted again: tests/test_snapshot.py holds the
-# estimate between what tracemalloc sees and twice that).
-SAMPLE_EVENTS = 256
-
-
-def _closed_bytes(chunk: Closed) -> int:
-    size = chunk.__dict__.get("_nbytes")
-    if size is None:
-        size_of = sys.getsizeof
-        sample = chunk[::max(1, len(chunk) // SAMPLE_EVENTS)]
-        each = sum(size_of(ev) + size_of(ev.fields) + sum(map(size_of, ev.fields.values())) for ev in sample)
-        size = chunk._nbytes = size_of(chunk) + round(each * len(chunk) / max(len(sample), 1))
-    return size
-
-
 class PickledState:
     """`snapshot`/`from_snapshot` by pickling the whole driver: for backends that live in this process and
     hold nothing but their own state (no socket, no file, no thread)."""
@@ -117,7 +102,7 @@ class PickledState:
         pickler.dump(self)
         state = State(out.getvalue())
         state.closed = closed
-        state.nbytes = len(state) + sum(map(_closed_bytes, closed))
+        state.nbytes = len(state) + sum(chunk.nbytes() for chunk in closed)
         return state
 
     @classmethod
