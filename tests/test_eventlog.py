@@ -164,8 +164,8 @@ def test_a_long_frame_by_frame_advance_holds_its_trace_as_patterns() -> None:
 
 
 def test_a_closed_log_reads_as_the_list_and_goes_on_in_a_fresh_tail() -> None:
-    """EventLog.close (a snapshot's, sut/snapshot.py): the events so far become one Closed stretch, read as
-    they were; later events go to a new tail, so the stretch is never written again."""
+    """EventLog.close (a snapshot's, sut/snapshot.py): the events held one by one so far become Closed
+    stretches, read as they were; later events go to a new tail, so a stretch is never written again."""
     toy = _Toy(True, 5000, [])
     for i in range(4):
         toy.events.append(TraceEvent(4000 + i, "train", KINDS[i % 2], {"i": i}))

@@ -162,7 +162,7 @@ class ContractTrace:
         if guard._recorder is not None or guard._contract is None:
             return [self._wrap(ev) for ev in events]
         # _wrap, inline: a step may be handed every command frame of a run
-        check, make, guard = guard._contract.check_event, new_event, self._guard
+        check, make = guard._contract.check_event, new_event
         out = []
         for ev in events:
             fields = ev.fields
