@@ -21,8 +21,8 @@ slices, kinds, pickling, folding) over generated patterns. Kept eager: a model w
 """
 from __future__ import annotations
 
-from array import array
 import sys
+from array import array
 from bisect import bisect_left, bisect_right
 from itertools import chain, repeat
 from operator import attrgetter, le, sub
@@ -149,9 +149,6 @@ class Closed(tuple):
         if every is None:
             every = self._kinds = list(map(_KIND, self))
         return every[a:b] if (a, b) != (0, len(self)) else every
-
-    def slice(self, a: int, b: int) -> list[TraceEvent]:
-        return list(self[a:b])
 
     def nbytes(self) -> int:
         """The memory its events take as objects, estimated once from a sample of SAMPLE_EVENTS (each object

@@ -118,6 +118,11 @@ class EventKind:
         # A run hands steps ~1.8 M events from a few hundred sources: a source's verdict is worked out once.
         self._source_ok: dict[str, bool] = {}
 
+    def holds(self, fields: Mapping) -> bool:
+        """Every required field there, every typed and every listed field as the entry says (check_event
+        says which is not, slowly, when this is False)."""
+        return self.required_set <= fields.keys() and self.conforms(fields)
+
     def names_source(self, source: str) -> bool:
         ok = self._source_ok.get(source)
         if ok is None:
@@ -194,7 +199,7 @@ class Contract:
         ev = self.events.get(kind)
         if ev is None:
             return                      # a kind no step asked for cannot come back; check_kind owns the gap
-        if ev.names_source(source) and ev.required_set <= fields.keys() and ev.conforms(fields):
+        if ev.names_source(source) and ev.holds(fields):
             return
         # Something is outside the entry: the checks again, one by one, to say which.
         if not ev.names_source(source):

@@ -147,19 +147,10 @@ class _Reader:
         self.keep.append(value)
         if t is list or t is deque:
             self.shape.append((t, len(value)))
-            if self.INLINE:
-                self._read_items(value, enumerate(value), False)
-            else:
-                for i, item in enumerate(value):
-                    self.read(item, ("item", value, i))
+            self._read_items(value, enumerate(value), False)
         elif t is dict:
             self.shape.append((dict, len(value)))
-            if self.INLINE:
-                self._read_items(value, value.items(), True)   # a key that moves is a change of shape
-            else:
-                for key, item in value.items():
-                    self.shape.append(key)
-                    self.read(item, ("item", value, key))
+            self._read_items(value, value.items(), True)   # a key that moves is a change of shape
         elif t is set or t is frozenset:
             items = sorted(value) if all(type(v) is int for v in value) else sorted(value, key=repr)
             holder = [items, value]
@@ -182,16 +173,18 @@ class _Reader:
     def _read_items(self, container: Any, items: Any, keyed: bool, how: str = "item",
                     skip: frozenset = frozenset()) -> None:
         """read() of each item of a list, deque or dict (how="item") or attribute of an object ("attr"), with
-        the common leaves inline; `keyed`: each key or name is part of the shape, and those in `skip` are left
-        out."""
-        shape, ints, writers, read = self.shape, self.ints, self.writers, self.read
+        the common leaves inline (INLINE); `keyed`: each key or name is part of the shape, and those in `skip`
+        are left out."""
+        shape, ints, writers, read, inline = self.shape, self.ints, self.writers, self.read, self.INLINE
         for key, item in items:
             if keyed:
                 if key in skip:
                     continue
                 shape.append(key)
             vt = type(item)
-            if vt is int:
+            if not inline:
+                read(item, (how, container, key))
+            elif vt is int:
                 shape.append(int)
                 ints.append(item)
                 writers.append((how, container, key))
@@ -206,19 +199,13 @@ class _Reader:
         if info is None:
             info = _CLASSES[t] = _class_info(t)
         skip, slots, steady, rebuild = info
-        shape, read = self.shape, self.read
+        shape = self.shape
         shape.append(t)
         attrs = getattr(obj, "__dict__", None)
         named = list(attrs.items()) if attrs is not None else []
         if slots:
             named += [(name, getattr(obj, name)) for name in slots if hasattr(obj, name)]
-        if self.INLINE:
-            self._read_items(obj, named, True, "attr", skip)
-        else:
-            for name, value in named:
-                if name not in skip:
-                    shape.append(name)
-                    read(value, ("attr", obj, name))
+        self._read_items(obj, named, True, "attr", skip)
         if steady and not obj.bulk_steady():
             raise NotSteady(f"{t.__qualname__} {obj!r:.60} cannot be carried over a jump")
         if rebuild:
